@@ -1,0 +1,246 @@
+//! The articulated-body algorithm for forward dynamics (Featherstone Table 7.1).
+//!
+//! | symbol   | field       | meaning                                            |
+//! |----------|-------------|----------------------------------------------------|
+//! | `Iᴬᵢ`    | `ia`        | articulated-body inertia of the subtree at i       |
+//! | `pᴬᵢ`    | `pa`        | its bias force                                     |
+//! | `U`      | `u_cols`    | `Iᴬᵢ S`                                            |
+//! | `D`      | `d_inv`     | `Sᵀ U` (stored inverted)                           |
+//! | `u`      | `u`         | `τᵢ - Sᵀ pᴬᵢ`                                      |
+//! | `a'`     |             | `ⁱX_λ a_λ + cᵢ`                                    |
+//!
+//! Pass 1 (root to leaves): velocities, `cᵢ`, `Iᴬᵢ = Iᵢ`,
+//! `pᴬᵢ = vᵢ ×* Iᵢ vᵢ - fᵉˣᵗᵢ`. Pass 2 (leaves to root): `U`, `D`, `u`, and
+//! `Iᵃ = Iᴬ - U D⁻¹ Uᵀ`, `pᵃ = pᴬ + Iᵃ c + U D⁻¹ u` carried to the parent.
+//! Pass 3 (root to leaves): `q̈ᵢ = D⁻¹ (u - Uᵀ a')`, `aᵢ = a' + S q̈ᵢ`, with
+//! `a₀ = -g`.
+
+use crate::algorithm::kinematics::{check_state, velocity_pass};
+use crate::algorithm::rnea::check_external;
+use crate::data::Data;
+use crate::error::{Error, Quantity, Result};
+use crate::joint::{JointModel, MAX_JOINT_NV};
+use crate::model::{check_finite, Model};
+use crate::space::{ArticulatedInertia, BodyInertia, MotionVector, RigidTransform, Space};
+use crate::Scalar;
+
+/// `D` below this fraction of `trace(Iᴬ)`, in units of the scalar's epsilon,
+/// is treated as singular: the subtree is (nearly) massless along the joint.
+pub const SINGULAR_PIVOT_EPS: f64 = 64.0;
+
+/// Joint accelerations `q̈ = M⁻¹ (τ - h)` in O(n).
+///
+/// Inputs: `q` (NQ), `v` and `tau` (NV), optional external forces per body
+/// (body frame). Returns `data.ddq`. Leaves valid: `li_m_i`, `o_m_i`, `v`,
+/// `c`, `ia` and `pa` (the articulated quantities carried to the parent,
+/// before projection), `u_cols`, `d_inv`, `u`, `a_gf` (acceleration minus
+/// gravity), `ddq`.
+///
+/// # Errors
+/// Non-finite inputs, invalid configurations, and
+/// [`Error::SingularArticulatedInertia`] for a joint that moves a (nearly)
+/// massless subtree.
+pub fn aba<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &'d mut Data<S, NB, NV, G>,
+    q: &[S; NQ],
+    v: &[S; NV],
+    tau: &[S; NV],
+    f_ext: Option<&[G::Force<S>; NB]>,
+) -> Result<&'d [S; NV]> {
+    check_state(model, q, Some(v))?;
+    check_finite(tau, Quantity::Torque)?;
+    check_external(f_ext.map(|f| &f[..]))?;
+    velocity_pass(model, data, q, v);
+    for i in 0..NB {
+        let inertia = model.inertia(i);
+        data.ia[i] = G::Articulated::<S>::from_rigid(inertia);
+        let mut p_a = data.v[i].cross_force(&inertia.mul_motion(&data.v[i]));
+        if let Some(f_ext) = f_ext {
+            p_a -= f_ext[i];
+        }
+        data.pa[i] = p_a;
+    }
+    backward_pass(model, data, tau)?;
+    forward_acceleration_pass(model, data);
+    Ok(&data.ddq)
+}
+
+/// Pass 2: articulated inertias and bias forces, leaves to root.
+pub(crate) fn backward_pass<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    tau: &[S; NV],
+) -> Result<()> {
+    let t = model.topology();
+    let mut st_pa = [S::ZERO; MAX_JOINT_NV];
+    for i in (0..NB).rev() {
+        let (iv, nv) = (t.idx_v[i], t.nv[i]);
+        let joint = model.joint(i);
+        joint.articulated_columns(&data.ia[i], &mut data.u_cols[iv..iv + nv]);
+        joint.project_force(&data.pa[i], &mut st_pa[..nv]);
+        for k in 0..nv {
+            data.u[iv + k] = tau[iv + k] - st_pa[k];
+        }
+        if nv == 1 {
+            let d = {
+                let mut d = [S::ZERO];
+                joint.project_force(&data.u_cols[iv], &mut d);
+                d[0]
+            };
+            check_pivot(i, d, data.ia[i].trace())?;
+            data.d_inv[iv][0] = S::ONE / d;
+        } else if nv > 1 {
+            invert_joint_d(
+                i,
+                joint,
+                &data.u_cols[iv..iv + nv],
+                data.ia[i].trace(),
+                &mut data.d_inv[iv..iv + nv],
+            )?;
+        }
+        if let Some(p) = t.parents[i] {
+            let mut i_a = data.ia[i];
+            // p^a = p^A + I^a c + U D⁻¹ u, with I^a = I^A - U D⁻¹ Uᵀ.
+            let mut p_a = data.pa[i];
+            for k in 0..nv {
+                let mut dinv_u = S::ZERO;
+                for l in 0..nv {
+                    dinv_u += data.d_inv[iv + k][l] * data.u[iv + l];
+                }
+                p_a += data.u_cols[iv + k] * dinv_u;
+                i_a.sub_outer(&data.u_cols[iv + k], data.d_inv[iv + k][k]);
+                for l in 0..k {
+                    i_a.sub_outer_sym(
+                        &data.u_cols[iv + k],
+                        &data.u_cols[iv + l],
+                        data.d_inv[iv + k][l],
+                    );
+                }
+            }
+            p_a += i_a.mul_motion(&data.c[i]);
+            let li_m_i = data.li_m_i[i];
+            let ia_parent = i_a.act(&li_m_i);
+            data.ia[p].add_assign(&ia_parent);
+            data.pa[p] += li_m_i.act_force(&p_a);
+        }
+    }
+    Ok(())
+}
+
+/// Pass 3: joint and body accelerations, root to leaves.
+pub(crate) fn forward_acceleration_pass<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+) {
+    let t = model.topology();
+    let minus_g = -*model.gravity();
+    let mut ut_a = [S::ZERO; MAX_JOINT_NV];
+    for i in 0..NB {
+        let (iv, nv) = (t.idx_v[i], t.nv[i]);
+        let a_parent = match t.parents[i] {
+            Some(p) => data.a_gf[p],
+            None => minus_g,
+        };
+        let a_prime = data.li_m_i[i].act_inv_motion(&a_parent) + data.c[i];
+        for k in 0..nv {
+            ut_a[k] = data.u[iv + k] - a_prime.dot(&data.u_cols[iv + k]);
+        }
+        for k in 0..nv {
+            let mut ddq = S::ZERO;
+            for l in 0..nv {
+                ddq += data.d_inv[iv + k][l] * ut_a[l];
+            }
+            data.ddq[iv + k] = ddq;
+        }
+        let joint = model.joint(i);
+        data.a_gf[i] = a_prime + joint.motion(&data.ddq[iv..iv + nv]);
+    }
+}
+
+/// Rejects a pivot that is not safely positive relative to `scale`.
+#[inline]
+fn check_pivot<S: Scalar>(joint: usize, d: S, scale: S) -> Result<()> {
+    let (d, scale) = (d.to_f64(), scale.to_f64());
+    let relative = if scale > 0.0 { d / scale } else { 0.0 };
+    if d.is_finite() && scale.is_finite() && relative > SINGULAR_PIVOT_EPS * S::EPSILON {
+        Ok(())
+    } else {
+        Err(Error::SingularArticulatedInertia {
+            joint,
+            relative_pivot: relative,
+        })
+    }
+}
+
+/// `D = Sᵀ U` of a multi-degree-of-freedom joint, inverted through its
+/// Cholesky factor, with every pivot checked.
+fn invert_joint_d<S: Scalar, G: Space, J: JointModel<S, G>>(
+    i: usize,
+    joint: &J,
+    u_cols: &[G::Force<S>],
+    scale: S,
+    d_inv: &mut [[S; MAX_JOINT_NV]],
+) -> Result<()> {
+    let n = u_cols.len();
+    let mut l = [[S::ZERO; MAX_JOINT_NV]; MAX_JOINT_NV];
+    let mut column = [S::ZERO; MAX_JOINT_NV];
+    for (k, u) in u_cols.iter().enumerate() {
+        joint.project_force(u, &mut column[..n]);
+        for r in 0..n {
+            l[r][k] = column[r];
+        }
+    }
+    // In-place Cholesky: lower triangle of l becomes L with D = L Lᵀ.
+    for k in 0..n {
+        let mut d = l[k][k];
+        for m in 0..k {
+            d -= l[k][m] * l[k][m];
+        }
+        check_pivot(i, d, scale)?;
+        let root = d.sqrt();
+        l[k][k] = root;
+        for r in k + 1..n {
+            let mut s = l[r][k];
+            for m in 0..k {
+                s -= l[r][m] * l[k][m];
+            }
+            l[r][k] = s / root;
+        }
+    }
+    // D⁻¹ column by column: solve L Lᵀ x = e_c.
+    for c in 0..n {
+        let mut x = [S::ZERO; MAX_JOINT_NV];
+        x[c] = S::ONE;
+        for r in 0..n {
+            let mut s = x[r];
+            for m in 0..r {
+                s -= l[r][m] * x[m];
+            }
+            x[r] = s / l[r][r];
+        }
+        for r in (0..n).rev() {
+            let mut s = x[r];
+            for m in r + 1..n {
+                s -= l[m][r] * x[m];
+            }
+            x[r] = s / l[r][r];
+        }
+        for r in 0..n {
+            d_inv[r][c] = x[r];
+        }
+    }
+    Ok(())
+}

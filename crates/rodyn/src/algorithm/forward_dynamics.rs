@@ -1,0 +1,165 @@
+//! Forward dynamics behind one interface: ABA or CRBA, chosen by a type.
+//!
+//! ```
+//! use rodyn::algorithm::forward_dynamics::{Aba, Crba, ForwardDynamics};
+//! # use rodyn::{Data, Model, joint::{Axis, Joint}, spatial::*};
+//! # const M: Model<f64, 1, 1, 1> = Model::new([None], [Joint::revolute(Axis::Z)],
+//! #     [Transform::IDENTITY], [Inertia::point_mass(1.0, Vec3::new(0.5, 0.0, 0.0))],
+//! #     Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)));
+//! let mut data = Data::new();
+//! let (q, v, tau) = ([0.3], [0.0], [0.0]);
+//! let by_aba = Aba::forward_dynamics(&M, &mut data, &q, &v, &tau, None)?[0];
+//! let by_crba = Crba::forward_dynamics(&M, &mut data, &q, &v, &tau, None)?[0];
+//! assert!((by_aba - by_crba).abs() < 1e-12);
+//! # Ok::<(), rodyn::Error>(())
+//! ```
+//!
+//! CRBA forms `M` (O(n·depth)), factors it sparsely (`Lᵀ D L`) and solves;
+//! ABA is O(n). Which is faster depends on the model and the scalar type:
+//! the workspace README charts the crossover.
+
+use crate::algorithm::{aba::aba, crba::crba, ltdl, rnea::nonlinear_effects};
+use crate::data::Data;
+use crate::error::{Quantity, Result};
+use crate::model::{check_finite, Model};
+use crate::space::Space;
+use crate::Scalar;
+
+/// A forward-dynamics method: `q̈ = M(q)⁻¹ (τ - h(q, v) + Jᵀ f_ext)`.
+pub trait ForwardDynamics {
+    /// A short name for reports ("ABA", "CRBA").
+    const NAME: &'static str;
+
+    /// Joint accelerations for torques `tau` (NV) at state `(q, v)`, with
+    /// optional external forces per body (body frames). Returns `data.ddq`.
+    ///
+    /// # Errors
+    /// Non-finite inputs, invalid configurations, and the method's own
+    /// breakdown: a singular articulated inertia (ABA) or a mass matrix that
+    /// is not positive definite (CRBA).
+    fn forward_dynamics<
+        'd,
+        S: Scalar,
+        const NB: usize,
+        const NQ: usize,
+        const NV: usize,
+        G: Space,
+    >(
+        model: &Model<S, NB, NQ, NV, G>,
+        data: &'d mut Data<S, NB, NV, G>,
+        q: &[S; NQ],
+        v: &[S; NV],
+        tau: &[S; NV],
+        f_ext: Option<&[G::Force<S>; NB]>,
+    ) -> Result<&'d [S; NV]>;
+}
+
+/// Forward dynamics by the articulated-body algorithm, O(n).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Aba;
+
+/// Forward dynamics by the composite-rigid-body algorithm and a sparse
+/// `Lᵀ D L` solve.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Crba;
+
+impl ForwardDynamics for Aba {
+    const NAME: &'static str = "ABA";
+    #[inline]
+    fn forward_dynamics<
+        'd,
+        S: Scalar,
+        const NB: usize,
+        const NQ: usize,
+        const NV: usize,
+        G: Space,
+    >(
+        model: &Model<S, NB, NQ, NV, G>,
+        data: &'d mut Data<S, NB, NV, G>,
+        q: &[S; NQ],
+        v: &[S; NV],
+        tau: &[S; NV],
+        f_ext: Option<&[G::Force<S>; NB]>,
+    ) -> Result<&'d [S; NV]> {
+        aba(model, data, q, v, tau, f_ext)
+    }
+}
+
+impl ForwardDynamics for Crba {
+    const NAME: &'static str = "CRBA";
+    /// Leaves valid: everything [`rnea`](crate::algorithm::rnea::rnea) and
+    /// [`crba`] leave, `h` (bias forces), `ltdl`, `ddq`.
+    fn forward_dynamics<
+        'd,
+        S: Scalar,
+        const NB: usize,
+        const NQ: usize,
+        const NV: usize,
+        G: Space,
+    >(
+        model: &Model<S, NB, NQ, NV, G>,
+        data: &'d mut Data<S, NB, NV, G>,
+        q: &[S; NQ],
+        v: &[S; NV],
+        tau: &[S; NV],
+        f_ext: Option<&[G::Force<S>; NB]>,
+    ) -> Result<&'d [S; NV]> {
+        check_finite(tau, Quantity::Torque)?;
+        data.h = *nonlinear_effects(model, data, q, v, f_ext)?;
+        crba(model, data, q)?;
+        ltdl::ltdl_factor(model, data)?;
+        let mut rhs = [S::ZERO; NV];
+        for (k, r) in rhs.iter_mut().enumerate() {
+            *r = tau[k] - data.h[k];
+        }
+        ltdl::ltdl_solve(model, data, &mut rhs);
+        data.ddq = rhs;
+        Ok(&data.ddq)
+    }
+}
+
+/// The method as a run-time value, for callers that switch while running.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Method {
+    /// [`Aba`].
+    #[default]
+    Aba,
+    /// [`Crba`].
+    Crba,
+}
+
+impl Method {
+    /// Dispatches to [`Aba`] or [`Crba`].
+    ///
+    /// # Errors
+    /// As [`ForwardDynamics::forward_dynamics`].
+    pub fn forward_dynamics<
+        'd,
+        S: Scalar,
+        const NB: usize,
+        const NQ: usize,
+        const NV: usize,
+        G: Space,
+    >(
+        self,
+        model: &Model<S, NB, NQ, NV, G>,
+        data: &'d mut Data<S, NB, NV, G>,
+        q: &[S; NQ],
+        v: &[S; NV],
+        tau: &[S; NV],
+        f_ext: Option<&[G::Force<S>; NB]>,
+    ) -> Result<&'d [S; NV]> {
+        match self {
+            Self::Aba => Aba::forward_dynamics(model, data, q, v, tau, f_ext),
+            Self::Crba => Crba::forward_dynamics(model, data, q, v, tau, f_ext),
+        }
+    }
+    /// The method's short name.
+    #[must_use]
+    pub const fn name(self) -> &'static str {
+        match self {
+            Self::Aba => Aba::NAME,
+            Self::Crba => Crba::NAME,
+        }
+    }
+}

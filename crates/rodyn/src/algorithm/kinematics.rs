@@ -1,0 +1,188 @@
+//! Forward kinematics: body poses, velocities and accelerations.
+//!
+//! One forward pass over the bodies (Featherstone §3.4 / Table 5.1, first
+//! loop). Symbols: `ˡⁱMᵢ` (`li_m_i`) is the parent frame from body i at `q`,
+//! `ᵒMᵢ` (`o_m_i`) the world frame from body i, `v_J = S qd` the joint
+//! velocity and `c = v × v_J` the velocity-product acceleration.
+
+use crate::data::Data;
+use crate::error::{Quantity, Result};
+use crate::joint::JointModel;
+use crate::model::{check_finite, Model};
+use crate::space::{MotionVector, RigidTransform, Space, VectorOps};
+use crate::Scalar;
+
+/// Joint transform and placement of body `i`: `ˡⁱMᵢ = placement · jMi(q)`.
+#[inline]
+pub(crate) fn body_transform<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    i: usize,
+    q: &[S; NQ],
+) -> G::Transform<S> {
+    let t = model.topology();
+    let iq = t.idx_q[i];
+    let j_m_i = model.joint(i).transform(&q[iq..iq + t.nq[i]]);
+    model.placement(i).compose(&j_m_i)
+}
+
+/// The joint velocity `v_J = S qd` of body `i`.
+#[inline]
+pub(crate) fn joint_velocity<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    i: usize,
+    v: &[S; NV],
+) -> G::Motion<S> {
+    let t = model.topology();
+    let iv = t.idx_v[i];
+    model.joint(i).motion(&v[iv..iv + t.nv[i]])
+}
+
+/// Checks `q` (finite, unit quaternions) and `v` (finite).
+pub(crate) fn check_state<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    q: &[S; NQ],
+    v: Option<&[S; NV]>,
+) -> Result<()> {
+    model.check_configuration(q)?;
+    if let Some(v) = v {
+        check_finite(v, Quantity::Velocity)?;
+    }
+    Ok(())
+}
+
+/// Body poses at configuration `q`.
+///
+/// Inputs: `q` (NQ). Leaves valid: `data.li_m_i`, `data.o_m_i`.
+///
+/// # Errors
+/// [`Error::InvalidConfiguration`](crate::Error::InvalidConfiguration) for a
+/// non-finite `q` or a quaternion that is not of unit length.
+pub fn forward_kinematics<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    q: &[S; NQ],
+) -> Result<()> {
+    check_state(model, q, None)?;
+    for i in 0..NB {
+        let li_m_i = body_transform(model, i, q);
+        data.o_m_i[i] = match model.parent(i) {
+            Some(p) => data.o_m_i[p].compose(&li_m_i),
+            None => li_m_i,
+        };
+        data.li_m_i[i] = li_m_i;
+    }
+    Ok(())
+}
+
+/// Body poses and velocities at `(q, v)`.
+///
+/// Inputs: `q` (NQ), `v` (NV). Leaves valid: `li_m_i`, `o_m_i`, `v` (body
+/// frames), `c`.
+///
+/// # Errors
+/// As [`forward_kinematics`], and [`Error::NonFinite`](crate::Error::NonFinite) for `v`.
+pub fn forward_kinematics_velocity<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    q: &[S; NQ],
+    v: &[S; NV],
+) -> Result<()> {
+    check_state(model, q, Some(v))?;
+    velocity_pass(model, data, q, v);
+    Ok(())
+}
+
+/// Body poses, velocities and accelerations at `(q, v, a)` (gravity excluded).
+///
+/// Inputs: `q` (NQ), `v` (NV), `a` (NV). Leaves valid: `li_m_i`, `o_m_i`,
+/// `v`, `c`, `a` (body frames).
+///
+/// # Errors
+/// As [`forward_kinematics_velocity`], and for a non-finite `a`.
+pub fn forward_kinematics_acceleration<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    q: &[S; NQ],
+    v: &[S; NV],
+    a: &[S; NV],
+) -> Result<()> {
+    check_state(model, q, Some(v))?;
+    check_finite(a, Quantity::Acceleration)?;
+    velocity_pass(model, data, q, v);
+    for i in 0..NB {
+        let a_parent = match model.parent(i) {
+            Some(p) => data.li_m_i[i].act_inv_motion(&data.a[p]),
+            None => G::Motion::<S>::ZERO,
+        };
+        data.a[i] = a_parent + joint_velocity(model, i, a) + data.c[i];
+    }
+    Ok(())
+}
+
+/// The forward pass shared by the dynamics algorithms: `ˡⁱMᵢ`, `ᵒMᵢ`,
+/// `vᵢ = ⁱX_λ v_λ + v_J` and `cᵢ = vᵢ × v_J`. Inputs must already be checked.
+#[inline]
+pub(crate) fn velocity_pass<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    q: &[S; NQ],
+    v: &[S; NV],
+) {
+    for i in 0..NB {
+        let li_m_i = body_transform(model, i, q);
+        let v_j = joint_velocity(model, i, v);
+        let (o_m_i, v_i) = match model.parent(i) {
+            Some(p) => (
+                data.o_m_i[p].compose(&li_m_i),
+                li_m_i.act_inv_motion(&data.v[p]) + v_j,
+            ),
+            None => (li_m_i, v_j),
+        };
+        data.c[i] = v_i.cross_motion(&v_j);
+        data.v[i] = v_i;
+        data.o_m_i[i] = o_m_i;
+        data.li_m_i[i] = li_m_i;
+    }
+}

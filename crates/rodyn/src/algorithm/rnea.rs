@@ -1,0 +1,158 @@
+//! Recursive Newton-Euler inverse dynamics (Featherstone Table 5.1).
+//!
+//! Forward pass: `vᵢ = ⁱX_λ v_λ + S q̇ᵢ`, `aᵢ = ⁱX_λ a_λ + S q̈ᵢ + cᵢ`
+//! with `a₀ = -g` (gravity as a fictitious base acceleration), and the body
+//! force `fᵢ = Iᵢ aᵢ + vᵢ ×* Iᵢ vᵢ - fᵢᵉˣᵗ`. Backward pass: `τᵢ = Sᵀ fᵢ`,
+//! `f_λ += ᵏX_ᵢ* fᵢ`.
+
+use crate::algorithm::kinematics::{check_state, joint_velocity, velocity_pass};
+use crate::data::Data;
+use crate::error::{Quantity, Result};
+use crate::joint::JointModel;
+use crate::model::{check_finite, Model};
+use crate::space::{BodyInertia, MotionVector, RigidTransform, Space, VectorOps};
+use crate::Scalar;
+
+/// Checks that external forces are finite.
+pub(crate) fn check_external<S: Scalar, F: VectorOps<S>>(f_ext: Option<&[F]>) -> Result<()> {
+    if let Some(f) = f_ext {
+        if let Some(index) = f.iter().position(|f| !f.is_finite()) {
+            return Err(crate::Error::NonFinite {
+                quantity: Quantity::ExternalForce,
+                index,
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Joint forces `τ = M(q) a + h(q, v) - Σ Jᵀ f_ext` that produce the
+/// acceleration `a`.
+///
+/// Inputs: `q` (NQ), `v` and `a` (NV), and optionally one external force per
+/// body, acting on that body and expressed in its own frame (Pinocchio's
+/// `fext` convention). Returns `data.tau`. Leaves valid: `li_m_i`, `o_m_i`,
+/// `v`, `c`, `a_gf` (acceleration minus gravity), `f`, `tau`.
+///
+/// # Errors
+/// Non-finite inputs and invalid configurations, naming the entry.
+pub fn rnea<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &'d mut Data<S, NB, NV, G>,
+    q: &[S; NQ],
+    v: &[S; NV],
+    a: &[S; NV],
+    f_ext: Option<&[G::Force<S>; NB]>,
+) -> Result<&'d [S; NV]> {
+    check_state(model, q, Some(v))?;
+    check_finite(a, Quantity::Acceleration)?;
+    check_external(f_ext.map(|f| &f[..]))?;
+    velocity_pass(model, data, q, v);
+    forward_force_pass(model, data, a, f_ext);
+    backward_force_pass(model, data);
+    Ok(&data.tau)
+}
+
+/// `aᵢ - g` and `fᵢ` for every body, after [`velocity_pass`].
+#[inline]
+pub(crate) fn forward_force_pass<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    a: &[S; NV],
+    f_ext: Option<&[G::Force<S>; NB]>,
+) {
+    let minus_g = -*model.gravity();
+    for i in 0..NB {
+        let a_parent = match model.parent(i) {
+            Some(p) => data.a_gf[p],
+            None => minus_g,
+        };
+        let a_i =
+            data.li_m_i[i].act_inv_motion(&a_parent) + joint_velocity(model, i, a) + data.c[i];
+        let inertia = model.inertia(i);
+        let mut f_i =
+            inertia.mul_motion(&a_i) + data.v[i].cross_force(&inertia.mul_motion(&data.v[i]));
+        if let Some(f_ext) = f_ext {
+            f_i -= f_ext[i];
+        }
+        data.a_gf[i] = a_i;
+        data.f[i] = f_i;
+    }
+}
+
+/// `τᵢ = Sᵀ fᵢ` and `f_λ += ˡⁱXᵢ* fᵢ`, leaves to root.
+#[inline]
+pub(crate) fn backward_force_pass<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+) {
+    let t = model.topology();
+    for i in (0..NB).rev() {
+        let iv = t.idx_v[i];
+        model
+            .joint(i)
+            .project_force(&data.f[i], &mut data.tau[iv..iv + t.nv[i]]);
+        if let Some(p) = model.parent(i) {
+            let f_p = data.li_m_i[i].act_force(&data.f[i]);
+            data.f[p] += f_p;
+        }
+    }
+}
+
+/// Bias forces `h(q, v) = C(q, v) q̇ + g(q)` (minus external forces): RNEA
+/// with zero acceleration.
+///
+/// Returns `data.tau`; leaves valid the same fields as [`rnea`].
+///
+/// # Errors
+/// As [`rnea`].
+pub fn nonlinear_effects<
+    'd,
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &'d mut Data<S, NB, NV, G>,
+    q: &[S; NQ],
+    v: &[S; NV],
+    f_ext: Option<&[G::Force<S>; NB]>,
+) -> Result<&'d [S; NV]> {
+    rnea(model, data, q, v, &[S::ZERO; NV], f_ext)
+}
+
+/// Gravity torques `g(q)`: RNEA with zero velocity and acceleration.
+///
+/// Returns `data.tau`; leaves valid the same fields as [`rnea`].
+///
+/// # Errors
+/// As [`rnea`].
+pub fn gravity_torques<
+    'd,
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &'d mut Data<S, NB, NV, G>,
+    q: &[S; NQ],
+) -> Result<&'d [S; NV]> {
+    let zero = [S::ZERO; NV];
+    rnea(model, data, q, &zero, &zero, None)
+}

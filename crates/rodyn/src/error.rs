@@ -1,0 +1,173 @@
+//! Errors: what failed and where, never a silent NaN.
+
+use crate::joint::ConfigurationError;
+use core::fmt;
+
+/// Which input or result a non-finite value was found in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum Quantity {
+    /// Joint configuration `q`.
+    Configuration,
+    /// Joint velocity `v`.
+    Velocity,
+    /// Joint acceleration `a`.
+    Acceleration,
+    /// Joint torque `tau`.
+    Torque,
+    /// An external force on a body.
+    ExternalForce,
+    /// A model parameter (inertia, placement, gravity).
+    ModelParameter,
+}
+
+/// What is wrong with a model parameter.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum ModelProblem {
+    /// Negative or non-finite mass.
+    InvalidMass,
+    /// Rotational inertia not symmetric positive semi-definite, or breaking
+    /// the triangle inequality of principal moments.
+    InvalidInertia,
+    /// A joint axis that is not of unit length.
+    AxisNotUnit,
+    /// A placement whose rotation is not orthonormal.
+    RotationNotOrthonormal,
+}
+
+/// The error type of every fallible rodyn function.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum Error {
+    /// An input contained NaN or infinity; `index` is the coordinate (or body) index.
+    NonFinite {
+        /// Which input.
+        quantity: Quantity,
+        /// Index of the first offending entry.
+        index: usize,
+    },
+    /// A joint configuration that is not on the joint's manifold.
+    InvalidConfiguration {
+        /// Body (joint) index.
+        joint: usize,
+        /// The problem.
+        reason: ConfigurationError,
+    },
+    /// ABA met a joint whose `D = Sᵀ I^A S` is not safely positive definite:
+    /// the subtree it moves is (nearly) massless in the joint's direction.
+    SingularArticulatedInertia {
+        /// Body (joint) index.
+        joint: usize,
+        /// The pivot found, relative to the articulated inertia's scale.
+        relative_pivot: f64,
+    },
+    /// The mass matrix is not (numerically) positive definite.
+    MassMatrixNotPositiveDefinite {
+        /// Velocity coordinate at which the factorisation broke down.
+        dof: usize,
+        /// The pivot found, relative to the largest diagonal entry.
+        relative_pivot: f64,
+    },
+    /// A model parameter is physically impossible.
+    InvalidModel {
+        /// Body index.
+        body: usize,
+        /// The problem.
+        problem: ModelProblem,
+    },
+    /// A scalar type conversion that the model does not support (custom joints).
+    UnsupportedCast {
+        /// Body index of the custom joint.
+        body: usize,
+    },
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::NonFinite { quantity, index } => {
+                write!(f, "non-finite {quantity:?} at index {index}")
+            }
+            Self::InvalidConfiguration { joint, reason } => match reason {
+                ConfigurationError::NonFinite => {
+                    write!(f, "joint {joint}: non-finite configuration")
+                }
+                ConfigurationError::QuaternionNotUnit { norm } => write!(
+                    f,
+                    "joint {joint}: quaternion norm {norm} is not 1 (normalise q first)"
+                ),
+            },
+            Self::SingularArticulatedInertia {
+                joint,
+                relative_pivot,
+            } => write!(
+                f,
+                "joint {joint}: articulated inertia is singular along the joint \
+                 (D / trace(I^A) = {relative_pivot:e}); the subtree is nearly massless"
+            ),
+            Self::MassMatrixNotPositiveDefinite {
+                dof,
+                relative_pivot,
+            } => write!(
+                f,
+                "mass matrix is not positive definite at dof {dof} \
+                 (pivot / max diagonal = {relative_pivot:e})"
+            ),
+            Self::InvalidModel { body, problem } => {
+                write!(f, "body {body}: invalid model parameter: {problem:?}")
+            }
+            Self::UnsupportedCast { body } => write!(
+                f,
+                "body {body}: custom joints cannot be converted to another scalar type"
+            ),
+        }
+    }
+}
+
+#[cfg(feature = "std")]
+extern crate std;
+
+#[cfg(feature = "std")]
+impl std::error::Error for Error {}
+
+#[cfg(feature = "defmt")]
+impl defmt::Format for Error {
+    fn format(&self, f: defmt::Formatter<'_>) {
+        match self {
+            Self::NonFinite { quantity, index } => {
+                defmt::write!(f, "non-finite {} at index {}", quantity, index)
+            }
+            Self::InvalidConfiguration { joint, .. } => {
+                defmt::write!(f, "joint {}: invalid configuration", joint)
+            }
+            Self::SingularArticulatedInertia {
+                joint,
+                relative_pivot,
+            } => defmt::write!(
+                f,
+                "joint {}: singular articulated inertia ({})",
+                joint,
+                relative_pivot
+            ),
+            Self::MassMatrixNotPositiveDefinite {
+                dof,
+                relative_pivot,
+            } => defmt::write!(
+                f,
+                "mass matrix not positive definite at dof {} ({})",
+                dof,
+                relative_pivot
+            ),
+            Self::InvalidModel { body, problem } => {
+                defmt::write!(f, "body {}: invalid model parameter {}", body, problem)
+            }
+            Self::UnsupportedCast { body } => {
+                defmt::write!(f, "body {}: custom joint cannot be cast", body)
+            }
+        }
+    }
+}
+
+/// Shorthand for `core::result::Result<T, rodyn::Error>`.
+pub type Result<T> = core::result::Result<T, Error>;

@@ -1,0 +1,137 @@
+//! The free-floating base: six degrees of freedom. nq = 7, nv = 6.
+//!
+//! Pinocchio's convention: `q = [x y z qx qy qz qw]` (position of the body
+//! frame in the parent frame, then the unit quaternion of its orientation),
+//! `v = [vx vy vz ωx ωy ωz]` in the body frame, linear part first.
+//! `S` is the identity in that order.
+
+use super::ConfigurationError;
+use crate::spatial::{ArticulatedInertia6, Force, Mat3, Motion, Transform, Vec3};
+use crate::Scalar;
+
+/// A free-floating joint.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct FreeFlyer;
+
+/// How far a quaternion's norm may stray from one, in units of the scalar's
+/// epsilon, before the configuration is rejected.
+const QUATERNION_TOLERANCE_EPS: f64 = 1.0e3;
+
+/// Hamilton product of quaternions stored `[x y z w]`.
+fn quat_mul<S: Scalar>(a: &[S; 4], b: &[S; 4]) -> [S; 4] {
+    let [ax, ay, az, aw] = *a;
+    let [bx, by, bz, bw] = *b;
+    [
+        aw * bx + ax * bw + ay * bz - az * by,
+        aw * by - ax * bz + ay * bw + az * bx,
+        aw * bz + ax * by - ay * bx + az * bw,
+        aw * bw - ax * bx - ay * by - az * bz,
+    ]
+}
+
+impl FreeFlyer {
+    /// `jMi(q)`.
+    #[inline]
+    #[must_use]
+    pub fn transform<S: Scalar>(&self, q: &[S]) -> Transform<S> {
+        Transform::new(
+            Mat3::from_quaternion(q[3], q[4], q[5], q[6]),
+            Vec3::new(q[0], q[1], q[2]),
+        )
+    }
+    /// `S qd`.
+    #[inline]
+    #[must_use]
+    pub fn motion<S: Scalar>(&self, qd: &[S]) -> Motion<S> {
+        Motion::new(
+            Vec3::new(qd[3], qd[4], qd[5]),
+            Vec3::new(qd[0], qd[1], qd[2]),
+        )
+    }
+    /// Column `k` of `S`: linear axes first.
+    #[inline]
+    #[must_use]
+    pub fn subspace_column<S: Scalar>(&self, k: usize) -> Motion<S> {
+        if k < 3 {
+            Motion::new(Vec3::ZERO, Vec3::unit(k))
+        } else {
+            Motion::new(Vec3::unit(k - 3), Vec3::ZERO)
+        }
+    }
+    /// `Sᵀ f` into `out[..6]`.
+    #[inline]
+    pub fn project_force<S: Scalar>(&self, f: &Force<S>, out: &mut [S]) {
+        out[..3].copy_from_slice(&f.lin.to_array());
+        out[3..6].copy_from_slice(&f.ang.to_array());
+    }
+    /// `U = I^A S` into `u[..6]`: the columns of `I^A`, reordered.
+    #[inline]
+    pub fn articulated_columns<S: Scalar>(&self, ia: &ArticulatedInertia6<S>, u: &mut [Force<S>]) {
+        for k in 0..3 {
+            u[k] = Force::new(ia.b.column(k), ia.c.column(k));
+            u[k + 3] = Force::new(ia.a.column(k), ia.b.row(k));
+        }
+    }
+    /// The identity placement.
+    pub fn neutral<S: Scalar>(&self, q: &mut [S]) {
+        q[..6].fill(S::ZERO);
+        q[6] = S::ONE;
+    }
+    /// `q ⊕ v dt` through the exponential map of SE(3); the quaternion is
+    /// renormalised.
+    pub fn integrate<S: Scalar>(&self, q: &[S], v: &[S], dt: S, out: &mut [S]) {
+        let rho = Vec3::new(v[0], v[1], v[2]) * dt;
+        let omega = Vec3::new(v[3], v[4], v[5]) * dt;
+        let theta2 = omega.norm_squared();
+        let theta = theta2.sqrt();
+        // Coefficients of V = 1 + b [ω×] + c [ω×]², Taylor-expanded near zero.
+        let small = theta2 < S::from_f64(1e-8);
+        let (half_s, half_c) = (theta * S::from_f64(0.5)).sin_cos();
+        let (b, c, k) = if small {
+            (
+                S::from_f64(0.5) - theta2 / S::from_f64(24.0),
+                S::from_f64(1.0 / 6.0) - theta2 / S::from_f64(120.0),
+                S::from_f64(0.5) - theta2 / S::from_f64(48.0),
+            )
+        } else {
+            let (s, co) = theta.sin_cos();
+            (
+                (S::ONE - co) / theta2,
+                (theta - s) / (theta2 * theta),
+                half_s / theta,
+            )
+        };
+        let w_rho = omega.cross(&rho);
+        let delta_p = rho + w_rho * b + omega.cross(&w_rho) * c;
+        let rot = Mat3::from_quaternion(q[3], q[4], q[5], q[6]);
+        let p = Vec3::new(q[0], q[1], q[2]) + rot.mul_vec(&delta_p);
+        let dq = [omega.x * k, omega.y * k, omega.z * k, half_c];
+        let quat = quat_mul(&[q[3], q[4], q[5], q[6]], &dq);
+        out[..3].copy_from_slice(&p.to_array());
+        out[3..7].copy_from_slice(&quat);
+        self.normalize(out);
+    }
+    /// Finite coordinates and a quaternion of unit norm.
+    pub fn check_configuration<S: Scalar>(&self, q: &[S]) -> Result<(), ConfigurationError> {
+        if !q[..7].iter().all(|x| x.is_finite()) {
+            return Err(ConfigurationError::NonFinite);
+        }
+        let norm = (q[3] * q[3] + q[4] * q[4] + q[5] * q[5] + q[6] * q[6])
+            .sqrt()
+            .to_f64();
+        if (norm - 1.0).abs() > QUATERNION_TOLERANCE_EPS * S::EPSILON {
+            return Err(ConfigurationError::QuaternionNotUnit { norm });
+        }
+        Ok(())
+    }
+    /// Rescales the quaternion to unit norm.
+    pub fn normalize<S: Scalar>(&self, q: &mut [S]) {
+        let n = (q[3] * q[3] + q[4] * q[4] + q[5] * q[5] + q[6] * q[6]).sqrt();
+        if n > S::ZERO {
+            let inv = S::ONE / n;
+            for x in &mut q[3..7] {
+                *x *= inv;
+            }
+        }
+    }
+}

@@ -1,0 +1,255 @@
+//! Joints: how a body moves relative to its parent.
+//!
+//! Every algorithm talks to a joint only through [`JointModel`], so a new joint
+//! type never edits an algorithm. The built-in 3-D joints are the closed set
+//! [`Joint`]; a user-defined joint enters through [`Joint::Custom`]. Planar
+//! models use [`PlanarJoint`](crate::planar::PlanarJoint).
+//!
+//! Conventions (Pinocchio's, so reference data compares directly): a joint's
+//! transform `jMi(q)` maps the moving frame i into the joint's parent-side
+//! frame; its motion subspace `S` is expressed in frame i; joint velocities
+//! are body-fixed. Angles in radians, lengths in metres.
+//!
+//! | joint                 | nq | nv | q                         | v                  |
+//! |-----------------------|----|----|---------------------------|--------------------|
+//! | [`Revolute`]          | 1  | 1  | angle                     | angular rate       |
+//! | [`Prismatic`]         | 1  | 1  | displacement              | rate               |
+//! | [`Joint::Fixed`]      | 0  | 0  |                           |                    |
+//! | [`FreeFlyer`]         | 7  | 6  | `[x y z qx qy qz qw]`     | `[vx vy vz ωx ωy ωz]` in the body frame |
+
+mod axis;
+mod custom;
+mod free_flyer;
+mod prismatic;
+mod revolute;
+
+pub use axis::Axis;
+pub use custom::{CustomJoint, JointBehaviour};
+pub use free_flyer::FreeFlyer;
+pub use prismatic::Prismatic;
+pub use revolute::Revolute;
+
+use crate::space::Space;
+use crate::spatial::{ArticulatedInertia6, Force, Motion, Spatial, Transform};
+use crate::Scalar;
+use core::fmt::Debug;
+
+/// Largest number of velocity coordinates of one joint.
+pub const MAX_JOINT_NV: usize = 6;
+
+/// What is wrong with a joint's configuration.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ConfigurationError {
+    /// A non-finite coordinate.
+    NonFinite,
+    /// A unit quaternion whose norm is too far from one.
+    QuaternionNotUnit {
+        /// The norm found.
+        norm: f64,
+    },
+}
+
+/// The behaviour of one joint type in a geometry `G`.
+///
+/// Sizes: `q` has [`nq`](Self::nq) entries, `v`, `qd`, `out` have
+/// [`nv`](Self::nv). Vectors are in the joint's moving frame.
+pub trait JointModel<S: Scalar, G: Space>: Copy + Debug {
+    /// Number of configuration coordinates.
+    fn nq(&self) -> usize;
+    /// Number of velocity coordinates (degrees of freedom).
+    fn nv(&self) -> usize;
+    /// The joint transform `jMi(q)` (the book's `X_J`, as a transform).
+    fn transform(&self, q: &[S]) -> G::Transform<S>;
+    /// The joint velocity `S qd`.
+    fn motion(&self, qd: &[S]) -> G::Motion<S>;
+    /// Column `k` of the motion subspace `S`.
+    fn subspace_column(&self, k: usize) -> G::Motion<S>;
+    /// The generalised force `Sᵀ f`, written to `out[..nv]`.
+    fn project_force(&self, f: &G::Force<S>, out: &mut [S]);
+    /// The columns of `U = I^A S`, written to `u[..nv]`.
+    fn articulated_columns(&self, ia: &G::Articulated<S>, u: &mut [G::Force<S>]) {
+        use crate::space::ArticulatedInertia;
+        for (k, uk) in u.iter_mut().enumerate().take(self.nv()) {
+            *uk = ia.mul_motion(&self.subspace_column(k));
+        }
+    }
+    /// The neutral configuration (zero angles, identity quaternion).
+    fn neutral(&self, q: &mut [S]);
+    /// `out = q ⊕ v dt`: the configuration reached moving at `v` for `dt`.
+    fn integrate(&self, q: &[S], v: &[S], dt: S, out: &mut [S]);
+    /// Checks that `q` is a valid configuration (finite, unit quaternion).
+    fn check_configuration(&self, q: &[S]) -> Result<(), ConfigurationError>;
+    /// Projects `q` back onto the configuration manifold (renormalises quaternions).
+    fn normalize(&self, q: &mut [S]);
+}
+
+/// The built-in joints of 3-D models.
+#[derive(Clone, Copy, Debug)]
+pub enum Joint<S: 'static> {
+    /// One rotational degree of freedom about an axis.
+    Revolute(Revolute<S>),
+    /// One translational degree of freedom along an axis.
+    Prismatic(Prismatic<S>),
+    /// No degree of freedom: a rigid attachment.
+    Fixed,
+    /// A free-floating base: position and unit quaternion.
+    FreeFlyer(FreeFlyer),
+    /// A user-defined joint.
+    Custom(CustomJoint<S>),
+}
+
+impl<S: Scalar> Joint<S> {
+    /// A revolute joint about `axis`.
+    #[must_use]
+    pub const fn revolute(axis: Axis<S>) -> Self {
+        Self::Revolute(Revolute { axis })
+    }
+    /// A prismatic joint along `axis`.
+    #[must_use]
+    pub const fn prismatic(axis: Axis<S>) -> Self {
+        Self::Prismatic(Prismatic { axis })
+    }
+    /// A free-floating base.
+    #[must_use]
+    pub const fn free_flyer() -> Self {
+        Self::FreeFlyer(FreeFlyer)
+    }
+    /// Number of configuration coordinates, usable in `const` context.
+    #[must_use]
+    pub const fn const_nq(&self) -> usize {
+        match self {
+            Self::Revolute(_) | Self::Prismatic(_) => 1,
+            Self::Fixed => 0,
+            Self::FreeFlyer(_) => 7,
+            Self::Custom(c) => c.nq,
+        }
+    }
+    /// Number of velocity coordinates, usable in `const` context.
+    #[must_use]
+    pub const fn const_nv(&self) -> usize {
+        match self {
+            Self::Revolute(_) | Self::Prismatic(_) => 1,
+            Self::Fixed => 0,
+            Self::FreeFlyer(_) => 6,
+            Self::Custom(c) => c.nv,
+        }
+    }
+    /// Converts the scalar type; `None` for a custom joint, whose behaviour
+    /// is tied to one scalar type.
+    #[must_use]
+    pub fn cast<T: Scalar>(&self) -> Option<Joint<T>> {
+        Some(match self {
+            Self::Revolute(r) => Joint::Revolute(Revolute {
+                axis: r.axis.cast(),
+            }),
+            Self::Prismatic(p) => Joint::Prismatic(Prismatic {
+                axis: p.axis.cast(),
+            }),
+            Self::Fixed => Joint::Fixed,
+            Self::FreeFlyer(f) => Joint::FreeFlyer(*f),
+            Self::Custom(_) => return None,
+        })
+    }
+}
+
+impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
+    #[inline]
+    fn nq(&self) -> usize {
+        self.const_nq()
+    }
+    #[inline]
+    fn nv(&self) -> usize {
+        self.const_nv()
+    }
+    #[inline]
+    fn transform(&self, q: &[S]) -> Transform<S> {
+        match self {
+            Self::Revolute(j) => j.transform(q[0]),
+            Self::Prismatic(j) => j.transform(q[0]),
+            Self::Fixed => Transform::from_translation(crate::spatial::Vec3::ZERO),
+            Self::FreeFlyer(j) => j.transform(q),
+            Self::Custom(c) => c.behaviour.transform(q),
+        }
+    }
+    #[inline]
+    fn motion(&self, qd: &[S]) -> Motion<S> {
+        match self {
+            Self::Revolute(j) => j.motion(qd[0]),
+            Self::Prismatic(j) => j.motion(qd[0]),
+            Self::Fixed => crate::space::VectorOps::ZERO,
+            Self::FreeFlyer(j) => j.motion(qd),
+            Self::Custom(c) => c.behaviour.motion(qd),
+        }
+    }
+    #[inline]
+    fn subspace_column(&self, k: usize) -> Motion<S> {
+        match self {
+            Self::Revolute(j) => j.motion(S::ONE),
+            Self::Prismatic(j) => j.motion(S::ONE),
+            Self::Fixed => crate::space::VectorOps::ZERO,
+            Self::FreeFlyer(j) => j.subspace_column(k),
+            Self::Custom(c) => c.behaviour.subspace_column(k),
+        }
+    }
+    #[inline]
+    fn project_force(&self, f: &Force<S>, out: &mut [S]) {
+        match self {
+            Self::Revolute(j) => out[0] = j.project_force(f),
+            Self::Prismatic(j) => out[0] = j.project_force(f),
+            Self::Fixed => {}
+            Self::FreeFlyer(j) => j.project_force(f, out),
+            Self::Custom(c) => c.behaviour.project_force(f, out),
+        }
+    }
+    #[inline]
+    fn articulated_columns(&self, ia: &ArticulatedInertia6<S>, u: &mut [Force<S>]) {
+        match self {
+            Self::Revolute(j) => u[0] = j.articulated_column(ia),
+            Self::Prismatic(j) => u[0] = j.articulated_column(ia),
+            Self::Fixed => {}
+            Self::FreeFlyer(j) => j.articulated_columns(ia, u),
+            Self::Custom(c) => {
+                use crate::space::ArticulatedInertia;
+                for (k, uk) in u.iter_mut().enumerate().take(c.nv) {
+                    *uk = ia.mul_motion(&c.behaviour.subspace_column(k));
+                }
+            }
+        }
+    }
+    fn neutral(&self, q: &mut [S]) {
+        match self {
+            Self::Revolute(_) | Self::Prismatic(_) => q[0] = S::ZERO,
+            Self::Fixed => {}
+            Self::FreeFlyer(j) => j.neutral(q),
+            Self::Custom(c) => c.behaviour.neutral(q),
+        }
+    }
+    fn integrate(&self, q: &[S], v: &[S], dt: S, out: &mut [S]) {
+        match self {
+            Self::Revolute(_) | Self::Prismatic(_) => out[0] = q[0] + v[0] * dt,
+            Self::Fixed => {}
+            Self::FreeFlyer(j) => j.integrate(q, v, dt, out),
+            Self::Custom(c) => c.behaviour.integrate(q, v, dt, out),
+        }
+    }
+    fn check_configuration(&self, q: &[S]) -> Result<(), ConfigurationError> {
+        match self {
+            Self::FreeFlyer(j) => j.check_configuration(q),
+            Self::Custom(c) => c.behaviour.check_configuration(q),
+            _ => {
+                if q.iter().take(self.nq()).all(|x| x.is_finite()) {
+                    Ok(())
+                } else {
+                    Err(ConfigurationError::NonFinite)
+                }
+            }
+        }
+    }
+    fn normalize(&self, q: &mut [S]) {
+        match self {
+            Self::FreeFlyer(j) => j.normalize(q),
+            Self::Custom(c) => c.behaviour.normalize(q),
+            _ => {}
+        }
+    }
+}

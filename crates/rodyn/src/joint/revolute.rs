@@ -1,0 +1,52 @@
+//! The revolute joint: one rotation about a fixed axis. nq = nv = 1.
+//!
+//! `jMi(q)` is a rotation by `q` about the axis; `S = [axis; 0]`.
+
+use super::Axis;
+use crate::spatial::{ArticulatedInertia6, Force, Mat3, Motion, Transform, Vec3};
+use crate::Scalar;
+
+/// A revolute joint about [`axis`](Self::axis).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Revolute<S> {
+    /// The rotation axis in the joint frame.
+    pub axis: Axis<S>,
+}
+
+impl<S: Scalar> Revolute<S> {
+    /// `jMi(q)`.
+    #[inline]
+    #[must_use]
+    pub fn transform(&self, q: S) -> Transform<S> {
+        let (s, c) = q.sin_cos();
+        let rot = match self.axis.index() {
+            Some(k) => Mat3::from_axis_index(k, s, c),
+            None => Mat3::from_axis_sin_cos(&self.axis.vector(), s, c),
+        };
+        Transform::from_rotation(rot)
+    }
+    /// `S qd`.
+    #[inline]
+    #[must_use]
+    pub fn motion(&self, qd: S) -> Motion<S> {
+        Motion::new(self.axis.vector() * qd, Vec3::ZERO)
+    }
+    /// `Sᵀ f`: the moment about the axis.
+    #[inline]
+    #[must_use]
+    pub fn project_force(&self, f: &Force<S>) -> S {
+        self.axis.dot(&f.ang)
+    }
+    /// `U = I^A S`: for a coordinate axis, one column of the blocks.
+    #[inline]
+    #[must_use]
+    pub fn articulated_column(&self, ia: &ArticulatedInertia6<S>) -> Force<S> {
+        match self.axis.index() {
+            Some(k) => Force::new(ia.a.column(k), ia.b.row(k)),
+            None => {
+                let a = self.axis.vector();
+                Force::new(ia.a.mul_vec(&a), ia.b.tr_mul_vec(&a))
+            }
+        }
+    }
+}

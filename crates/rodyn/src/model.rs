@@ -1,0 +1,330 @@
+//! The model: the constant description of a multibody tree.
+//!
+//! A [`Model`] holds the topology (fixed at compile time through its const
+//! parameters) and the physical parameters (changeable at run time through
+//! the `set_*` methods). Algorithms read it and never change it, so one model
+//! can serve many [`Data`](crate::Data) workspaces and can be a `const` or a
+//! `static`.
+//!
+//! Frames: body i's frame is its joint's moving frame. `placement(i)` is the
+//! joint frame at `q = 0` seen from the parent body's frame (Pinocchio's
+//! `jointPlacements`), `inertia(i)` is expressed in body i's frame, and
+//! `gravity()` is a motion in the world frame whose linear part is the
+//! gravitational acceleration (m/s²).
+
+use crate::error::{Error, ModelProblem, Quantity, Result};
+use crate::joint::{Joint, JointModel};
+use crate::space::{BodyInertia, RigidTransform, Space, VectorOps};
+use crate::spatial::{Inertia, Motion, Spatial, Transform};
+use crate::topology::Topology;
+use crate::Scalar;
+
+/// A multibody tree with `NB` bodies, `NQ` configuration and `NV` velocity
+/// coordinates, in geometry `G` ([`Spatial`] or [`Planar`](crate::planar::Planar)).
+#[derive(Clone, Copy, Debug)]
+pub struct Model<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space = Spatial> {
+    topology: Topology<NB, NV>,
+    joints: [G::Joint<S>; NB],
+    placements: [G::Transform<S>; NB],
+    inertias: [G::Inertia<S>; NB],
+    gravity: G::Motion<S>,
+}
+
+/// Standard gravity, 9.80665 m/s².
+pub const STANDARD_GRAVITY: f64 = 9.806_65;
+
+impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, NQ, NV, Spatial> {
+    /// A 3-D model, checked at compile time when evaluated in a `const`.
+    ///
+    /// `parents[i]` is body i's parent (`None`: attached to the world),
+    /// `joints[i]` the joint that moves body i, `placements[i]` that joint's
+    /// frame in the parent's frame, `inertias[i]` body i's inertia in its own
+    /// frame, `gravity` the world's gravity as a motion (linear part, m/s²).
+    ///
+    /// # Panics
+    /// When the topology is inconsistent (see [`Topology::new`]); in a `const`
+    /// this is a compile error.
+    ///
+    /// ```
+    /// use rodyn::{Model, joint::{Axis, Joint}, spatial::*};
+    /// // A one-link pendulum about z, 1 kg at 0.5 m along x.
+    /// const PENDULUM: Model<f64, 1, 1, 1> = Model::new(
+    ///     [None],
+    ///     [Joint::revolute(Axis::Z)],
+    ///     [Transform::IDENTITY],
+    ///     [Inertia::point_mass(1.0, Vec3::new(0.5, 0.0, 0.0))],
+    ///     Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
+    /// );
+    /// assert_eq!(PENDULUM.topology().idx_v, [0]);
+    /// ```
+    #[must_use]
+    pub const fn new(
+        parents: [Option<usize>; NB],
+        joints: [Joint<S>; NB],
+        placements: [Transform<S>; NB],
+        inertias: [Inertia<S>; NB],
+        gravity: Motion<S>,
+    ) -> Self {
+        let mut nq = [0; NB];
+        let mut nv = [0; NB];
+        let mut i = 0;
+        while i < NB {
+            nq[i] = joints[i].const_nq();
+            nv[i] = joints[i].const_nv();
+            i += 1;
+        }
+        Self {
+            topology: Topology::new(parents, nq, nv, NQ),
+            joints,
+            placements,
+            inertias,
+            gravity,
+        }
+    }
+}
+
+impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
+    Model<S, NB, NQ, NV, G>
+{
+    /// Assembles a model from a checked topology (used by the per-geometry
+    /// `const` constructors).
+    #[must_use]
+    pub const fn from_parts(
+        topology: Topology<NB, NV>,
+        joints: [G::Joint<S>; NB],
+        placements: [G::Transform<S>; NB],
+        inertias: [G::Inertia<S>; NB],
+        gravity: G::Motion<S>,
+    ) -> Self {
+        Self {
+            topology,
+            joints,
+            placements,
+            inertias,
+            gravity,
+        }
+    }
+
+    /// Number of bodies.
+    pub const NB: usize = NB;
+    /// Number of configuration coordinates.
+    pub const NQ: usize = NQ;
+    /// Number of velocity coordinates.
+    pub const NV: usize = NV;
+
+    /// The tree and its coordinate layout.
+    #[must_use]
+    pub const fn topology(&self) -> &Topology<NB, NV> {
+        &self.topology
+    }
+    /// Parent of body `i` (`None`: the world).
+    #[must_use]
+    pub const fn parent(&self, i: usize) -> Option<usize> {
+        self.topology.parents[i]
+    }
+    /// The joint that moves body `i`.
+    #[must_use]
+    pub const fn joint(&self, i: usize) -> &G::Joint<S> {
+        &self.joints[i]
+    }
+    /// Joint `i`'s frame at `q = 0` in its parent's frame.
+    #[must_use]
+    pub const fn placement(&self, i: usize) -> &G::Transform<S> {
+        &self.placements[i]
+    }
+    /// Body `i`'s inertia in its own frame.
+    #[must_use]
+    pub const fn inertia(&self, i: usize) -> &G::Inertia<S> {
+        &self.inertias[i]
+    }
+    /// Gravity in the world frame, as a motion (linear part in m/s²).
+    #[must_use]
+    pub const fn gravity(&self) -> &G::Motion<S> {
+        &self.gravity
+    }
+    /// Total mass (kg).
+    #[must_use]
+    pub fn total_mass(&self) -> S {
+        self.inertias.iter().fold(S::ZERO, |m, i| m + i.mass())
+    }
+
+    /// Changes body `i`'s inertia (a payload, an identified parameter).
+    ///
+    /// # Errors
+    /// [`Error::InvalidModel`] when the inertia is not physical; the model is
+    /// then unchanged.
+    pub fn set_inertia(&mut self, i: usize, inertia: G::Inertia<S>) -> Result<()> {
+        G::validate_inertia(&inertia)
+            .map_err(|problem| Error::InvalidModel { body: i, problem })?;
+        self.inertias[i] = inertia;
+        Ok(())
+    }
+    /// Changes joint `i`'s placement in its parent (a link length).
+    ///
+    /// # Errors
+    /// [`Error::InvalidModel`] for a non-finite or non-orthonormal placement.
+    pub fn set_placement(&mut self, i: usize, placement: G::Transform<S>) -> Result<()> {
+        G::validate_transform(&placement)
+            .map_err(|problem| Error::InvalidModel { body: i, problem })?;
+        self.placements[i] = placement;
+        Ok(())
+    }
+    /// Changes gravity (world frame).
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`] for a non-finite vector.
+    pub fn set_gravity(&mut self, gravity: G::Motion<S>) -> Result<()> {
+        if !gravity.is_finite() {
+            return Err(Error::NonFinite {
+                quantity: Quantity::ModelParameter,
+                index: 0,
+            });
+        }
+        self.gravity = gravity;
+        Ok(())
+    }
+
+    /// Checks every physical parameter: masses, inertias (positive
+    /// semi-definite, triangle inequality), axes of unit length, orthonormal
+    /// rotations. `const` construction checks only the topology.
+    ///
+    /// # Errors
+    /// The first [`Error::InvalidModel`] found.
+    pub fn validate(&self) -> Result<()> {
+        for i in 0..NB {
+            let err = |problem| Error::InvalidModel { body: i, problem };
+            G::validate_inertia(&self.inertias[i]).map_err(err)?;
+            G::validate_transform(&self.placements[i]).map_err(err)?;
+            G::validate_joint(&self.joints[i]).map_err(err)?;
+        }
+        if !self.gravity.is_finite() {
+            return Err(Error::NonFinite {
+                quantity: Quantity::ModelParameter,
+                index: 0,
+            });
+        }
+        Ok(())
+    }
+
+    /// The same model in another scalar type (e.g. `f64` to `f32` or to
+    /// [`Dual`](crate::Dual)).
+    ///
+    /// # Errors
+    /// [`Error::UnsupportedCast`] for a model with a custom joint.
+    pub fn cast<T: Scalar>(&self) -> Result<Model<T, NB, NQ, NV, G>> {
+        let mut joints = [G::default_joint::<T>(); NB];
+        for (i, j) in joints.iter_mut().enumerate() {
+            *j = G::cast_joint(&self.joints[i]).ok_or(Error::UnsupportedCast { body: i })?;
+        }
+        Ok(Model {
+            topology: self.topology,
+            joints,
+            placements: core::array::from_fn(|i| G::cast_transform(&self.placements[i])),
+            inertias: core::array::from_fn(|i| G::cast_inertia(&self.inertias[i])),
+            gravity: G::cast_motion(&self.gravity),
+        })
+    }
+
+    /// Checks a configuration: length, finiteness, unit quaternions.
+    ///
+    /// # Errors
+    /// [`Error::InvalidConfiguration`] naming the first bad joint.
+    pub fn check_configuration(&self, q: &[S; NQ]) -> Result<()> {
+        for i in 0..NB {
+            let iq = self.topology.idx_q[i];
+            self.joints[i]
+                .check_configuration(&q[iq..iq + self.topology.nq[i]])
+                .map_err(|reason| Error::InvalidConfiguration { joint: i, reason })?;
+        }
+        Ok(())
+    }
+
+    /// The neutral configuration (zero angles, identity quaternions).
+    #[must_use]
+    pub fn neutral_configuration(&self) -> [S; NQ] {
+        let mut q = [S::ZERO; NQ];
+        for i in 0..NB {
+            let iq = self.topology.idx_q[i];
+            self.joints[i].neutral(&mut q[iq..iq + self.topology.nq[i]]);
+        }
+        q
+    }
+
+    /// `q ⊕ v dt` for every joint (quaternions through the exponential map).
+    #[must_use]
+    pub fn integrate(&self, q: &[S; NQ], v: &[S; NV], dt: S) -> [S; NQ] {
+        let mut out = *q;
+        for i in 0..NB {
+            let (iq, iv) = (self.topology.idx_q[i], self.topology.idx_v[i]);
+            let (nq, nv) = (self.topology.nq[i], self.topology.nv[i]);
+            self.joints[i].integrate(&q[iq..iq + nq], &v[iv..iv + nv], dt, &mut out[iq..iq + nq]);
+        }
+        out
+    }
+
+    /// Renormalises every quaternion in `q` in place.
+    pub fn normalize(&self, q: &mut [S; NQ]) {
+        for i in 0..NB {
+            let iq = self.topology.idx_q[i];
+            self.joints[i].normalize(&mut q[iq..iq + self.topology.nq[i]]);
+        }
+    }
+}
+
+/// Returns an error naming the first non-finite entry of `x`.
+pub(crate) fn check_finite<S: Scalar>(x: &[S], quantity: Quantity) -> Result<()> {
+    match x.iter().position(|v| !v.is_finite()) {
+        Some(index) => Err(Error::NonFinite { quantity, index }),
+        None => Ok(()),
+    }
+}
+
+/// The physical checks of one geometry, used by [`Model::validate`].
+pub(crate) fn validate_inertia_3d<S: Scalar>(
+    i: &Inertia<S>,
+) -> core::result::Result<(), ModelProblem> {
+    let m = i.mass.to_f64();
+    if !(m >= 0.0) || !i.is_finite() {
+        return Err(ModelProblem::InvalidMass);
+    }
+    let r = &i.rot_inertia;
+    let (xx, yy, zz) = (r.xx.to_f64(), r.yy.to_f64(), r.zz.to_f64());
+    let (xy, xz, yz) = (r.xy.to_f64(), r.xz.to_f64(), r.yz.to_f64());
+    // Positive semi-definite through the leading minors, with a small slack
+    // for rounding, and the triangle inequality of the diagonal.
+    let scale = (xx.abs() + yy.abs() + zz.abs()).max(f64::MIN_POSITIVE);
+    let tol = 1e-9 * scale;
+    let minor2 = xx * yy - xy * xy;
+    let det = xx * (yy * zz - yz * yz) - xy * (xy * zz - yz * xz) + xz * (xy * yz - yy * xz);
+    let psd = xx >= -tol
+        && yy >= -tol
+        && zz >= -tol
+        && minor2 >= -tol * scale
+        && det >= -tol * scale * scale;
+    let triangle = xx + yy + tol >= zz && xx + zz + tol >= yy && yy + zz + tol >= xx;
+    if psd && triangle {
+        Ok(())
+    } else {
+        Err(ModelProblem::InvalidInertia)
+    }
+}
+
+/// Checks a 3-D placement: finite and orthonormal rotation.
+pub(crate) fn validate_transform_3d<S: Scalar>(
+    x: &Transform<S>,
+) -> core::result::Result<(), ModelProblem> {
+    if !x.is_finite() {
+        return Err(ModelProblem::RotationNotOrthonormal);
+    }
+    let rtr = x.rot.tr_mul_mat(&x.rot);
+    let tol = 1e3 * S::EPSILON;
+    for a in 0..3 {
+        for b in 0..3 {
+            let expect = if a == b { 1.0 } else { 0.0 };
+            if (rtr.m[a][b].to_f64() - expect).abs() > tol {
+                return Err(ModelProblem::RotationNotOrthonormal);
+            }
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,122 @@
+//! Planar rigid transforms: a rotation about z and a translation in the plane.
+//!
+//! [`PlanarTransform`] `aMb` stores the cosine and sine of the angle of b's
+//! x axis in a, and the origin of b in a; the method table of
+//! [`Transform`](crate::spatial::Transform) applies unchanged.
+
+use super::{PlanarForce, PlanarMotion, Vec2};
+use crate::space::RigidTransform;
+use crate::Scalar;
+
+/// A planar rigid transform `aMb`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PlanarTransform<S> {
+    /// Cosine of the rotation angle.
+    pub cos: S,
+    /// Sine of the rotation angle.
+    pub sin: S,
+    /// Origin of b in a (m).
+    pub trans: Vec2<S>,
+}
+
+impl<S: Scalar> PlanarTransform<S> {
+    /// From the cosine and sine of the angle and the translation (usable in `const`).
+    #[must_use]
+    pub const fn from_cos_sin(cos: S, sin: S, trans: Vec2<S>) -> Self {
+        Self { cos, sin, trans }
+    }
+    /// A pure translation.
+    #[must_use]
+    pub const fn from_translation(trans: Vec2<S>) -> Self {
+        Self::from_cos_sin(S::ONE, S::ZERO, trans)
+    }
+    /// A rotation by `angle` (rad) followed by the translation.
+    #[must_use]
+    pub fn from_angle(angle: S, trans: Vec2<S>) -> Self {
+        let (sin, cos) = angle.sin_cos();
+        Self::from_cos_sin(cos, sin, trans)
+    }
+    /// The rotation angle (rad).
+    #[must_use]
+    pub fn angle(&self) -> S {
+        self.sin.atan2(self.cos)
+    }
+    /// `R v`.
+    #[inline]
+    #[must_use]
+    pub fn rotate(&self, v: &Vec2<S>) -> Vec2<S> {
+        Vec2::new(
+            self.cos * v.x - self.sin * v.y,
+            self.sin * v.x + self.cos * v.y,
+        )
+    }
+    /// `Rᵀ v`.
+    #[inline]
+    #[must_use]
+    pub fn rotate_inv(&self, v: &Vec2<S>) -> Vec2<S> {
+        Vec2::new(
+            self.cos * v.x + self.sin * v.y,
+            -self.sin * v.x + self.cos * v.y,
+        )
+    }
+    /// Converts the scalar type.
+    #[must_use]
+    pub fn cast<T: Scalar>(&self) -> PlanarTransform<T> {
+        PlanarTransform::from_cos_sin(
+            T::from_f64(self.cos.to_f64()),
+            T::from_f64(self.sin.to_f64()),
+            self.trans.cast(),
+        )
+    }
+}
+
+impl<S: Scalar> RigidTransform<S> for PlanarTransform<S> {
+    type Motion = PlanarMotion<S>;
+    type Force = PlanarForce<S>;
+    type Point = Vec2<S>;
+    const IDENTITY: Self = Self::from_cos_sin(S::ONE, S::ZERO, Vec2::ZERO);
+
+    #[inline]
+    fn compose(&self, o: &Self) -> Self {
+        Self::from_cos_sin(
+            self.cos * o.cos - self.sin * o.sin,
+            self.sin * o.cos + self.cos * o.sin,
+            self.rotate(&o.trans) + self.trans,
+        )
+    }
+    #[inline]
+    fn inverse(&self) -> Self {
+        Self::from_cos_sin(self.cos, -self.sin, -self.rotate_inv(&self.trans))
+    }
+    #[inline]
+    fn act_motion(&self, m: &PlanarMotion<S>) -> PlanarMotion<S> {
+        PlanarMotion::new(m.ang, self.rotate(&m.lin) - self.trans.perp_scaled(m.ang))
+    }
+    #[inline]
+    fn act_inv_motion(&self, m: &PlanarMotion<S>) -> PlanarMotion<S> {
+        PlanarMotion::new(
+            m.ang,
+            self.rotate_inv(&(m.lin + self.trans.perp_scaled(m.ang))),
+        )
+    }
+    #[inline]
+    fn act_force(&self, f: &PlanarForce<S>) -> PlanarForce<S> {
+        let lin = self.rotate(&f.lin);
+        PlanarForce::new(f.ang + self.trans.cross(&lin), lin)
+    }
+    #[inline]
+    fn act_inv_force(&self, f: &PlanarForce<S>) -> PlanarForce<S> {
+        PlanarForce::new(f.ang - self.trans.cross(&f.lin), self.rotate_inv(&f.lin))
+    }
+    #[inline]
+    fn act_point(&self, p: &Vec2<S>) -> Vec2<S> {
+        self.rotate(p) + self.trans
+    }
+    #[inline]
+    fn translation(&self) -> Vec2<S> {
+        self.trans
+    }
+    fn is_finite(&self) -> bool {
+        self.cos.is_finite() && self.sin.is_finite() && self.trans.is_finite()
+    }
+}

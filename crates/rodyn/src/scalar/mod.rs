@@ -1,0 +1,103 @@
+//! The scalar type every algorithm is generic over.
+//!
+//! [`Scalar`] is implemented for `f32` (the microcontroller scalar), `f64`
+//! (the host scalar) and [`Dual`] (a forward-mode dual number that carries a
+//! derivative along with each value, for parameter sensitivities).
+//!
+//! Float functions come from `std` on a host and from `libm` on a bare-metal
+//! target. On `thumbv7em-none-eabihf` the `f32` square root uses the FPU's
+//! `VSQRT.F32` instead of libm's software routine, and no algorithm calls a
+//! fused multiply-add (libm's `fmaf` emulates it in software doubles).
+
+mod dual;
+mod float;
+
+pub use dual::Dual;
+
+use core::fmt::Debug;
+use core::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
+
+/// A real number as the dynamics algorithms need it.
+///
+/// Only plain arithmetic and a handful of elementary functions are required,
+/// so that a dual number or an interval type can implement it too.
+pub trait Scalar:
+    Copy
+    + Debug
+    + PartialEq
+    + PartialOrd
+    + Default
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+    + AddAssign
+    + SubAssign
+    + MulAssign
+    + DivAssign
+    + 'static
+{
+    /// Additive identity.
+    const ZERO: Self;
+    /// Multiplicative identity.
+    const ONE: Self;
+    /// Machine epsilon of the underlying floating-point type.
+    const EPSILON: f64;
+
+    /// Converts a constant; used for literals in generic code.
+    fn from_f64(value: f64) -> Self;
+    /// The real value, dropping any derivative part (used for checks and reports).
+    fn to_f64(self) -> f64;
+    /// Square root.
+    fn sqrt(self) -> Self;
+    /// Sine and cosine of an angle in radians.
+    fn sin_cos(self) -> (Self, Self);
+    /// Four-quadrant arctangent of `self / x`.
+    fn atan2(self, x: Self) -> Self;
+    /// Exponential function.
+    fn exp(self) -> Self;
+    /// Natural logarithm.
+    fn ln(self) -> Self;
+    /// Hyperbolic tangent.
+    fn tanh(self) -> Self;
+    /// Absolute value.
+    fn abs(self) -> Self;
+
+    /// `true` unless the value (or any derivative part) is NaN or infinite.
+    fn is_finite(self) -> bool;
+
+    /// Sine of an angle in radians.
+    #[inline]
+    fn sin(self) -> Self {
+        self.sin_cos().0
+    }
+    /// Cosine of an angle in radians.
+    #[inline]
+    fn cos(self) -> Self {
+        self.sin_cos().1
+    }
+    /// The larger of two values (`self` when they compare unordered).
+    #[inline]
+    fn max(self, other: Self) -> Self {
+        if other > self {
+            other
+        } else {
+            self
+        }
+    }
+    /// The smaller of two values (`self` when they compare unordered).
+    #[inline]
+    fn min(self, other: Self) -> Self {
+        if other < self {
+            other
+        } else {
+            self
+        }
+    }
+    /// `self * self`.
+    #[inline]
+    fn squared(self) -> Self {
+        self * self
+    }
+}

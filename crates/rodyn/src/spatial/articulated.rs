@@ -1,0 +1,125 @@
+//! Articulated-body inertia (Featherstone §7.2): a symmetric 6x6 matrix.
+//!
+//! Stored as three 3x3 blocks so that `f = I^A m` reads
+//! `n = A ω + B v`, `f = Bᵀ ω + C v`, with `A` and `C` symmetric.
+
+use super::{Force, Inertia, Mat3, Motion, Sym3, Transform, Vec3};
+use crate::space::ArticulatedInertia;
+use crate::Scalar;
+
+/// A symmetric 6x6 articulated-body inertia in block form.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ArticulatedInertia6<S> {
+    /// Angular-angular block (kg m²).
+    pub a: Sym3<S>,
+    /// Angular-linear block (kg m).
+    pub b: Mat3<S>,
+    /// Linear-linear block (kg).
+    pub c: Sym3<S>,
+}
+
+/// `[p×] m`: each column of `m` crossed with `p` from the left.
+fn cross_mul<S: Scalar>(p: &Vec3<S>, m: &Mat3<S>) -> Mat3<S> {
+    let mut r = Mat3::ZERO;
+    for j in 0..3 {
+        let col = p.cross(&m.column(j));
+        r.m[0][j] = col.x;
+        r.m[1][j] = col.y;
+        r.m[2][j] = col.z;
+    }
+    r
+}
+
+/// `[p×]` as a matrix.
+fn cross_matrix<S: Scalar>(p: &Vec3<S>) -> Mat3<S> {
+    let z = S::ZERO;
+    Mat3::from_rows([[z, -p.z, p.y], [p.z, z, -p.x], [-p.y, p.x, z]])
+}
+
+/// The outer product `s a bᵀ`.
+fn outer<S: Scalar>(a: &Vec3<S>, b: &Vec3<S>, s: S) -> Mat3<S> {
+    let a = a.scale(s);
+    Mat3::from_rows([
+        [a.x * b.x, a.x * b.y, a.x * b.z],
+        [a.y * b.x, a.y * b.y, a.y * b.z],
+        [a.z * b.x, a.z * b.y, a.z * b.z],
+    ])
+}
+
+impl<S: Scalar> ArticulatedInertia6<S> {
+    /// Entry (i, j) of the 6x6 matrix, angular rows and columns first.
+    #[must_use]
+    pub fn get(&self, i: usize, j: usize) -> S {
+        match (i < 3, j < 3) {
+            (true, true) => self.a.get(i, j),
+            (true, false) => self.b.m[i][j - 3],
+            (false, true) => self.b.m[j][i - 3],
+            (false, false) => self.c.get(i - 3, j - 3),
+        }
+    }
+}
+
+impl<S: Scalar> ArticulatedInertia<S> for ArticulatedInertia6<S> {
+    type Motion = Motion<S>;
+    type Force = Force<S>;
+    type Transform = Transform<S>;
+    type Inertia = Inertia<S>;
+    const ZERO: Self = Self {
+        a: Sym3::ZERO,
+        b: Mat3::ZERO,
+        c: Sym3::ZERO,
+    };
+
+    fn from_rigid(i: &Inertia<S>) -> Self {
+        Self {
+            a: i.rot_inertia_at_origin(),
+            b: cross_matrix(&i.com.scale(i.mass)),
+            c: Sym3::identity_scaled(i.mass),
+        }
+    }
+    #[inline]
+    fn mul_motion(&self, m: &Motion<S>) -> Force<S> {
+        Force::new(
+            self.a.mul_vec(&m.ang) + self.b.mul_vec(&m.lin),
+            self.b.tr_mul_vec(&m.ang) + self.c.mul_vec(&m.lin),
+        )
+    }
+    #[inline]
+    fn add_assign(&mut self, o: &Self) {
+        self.a += o.a;
+        self.b = self.b + o.b;
+        self.c += o.c;
+    }
+    #[inline]
+    fn sub_outer(&mut self, u: &Force<S>, s: S) {
+        self.a -= Sym3::outer(&u.ang, s);
+        self.b = self.b - outer(&u.ang, &u.lin, s);
+        self.c -= Sym3::outer(&u.lin, s);
+    }
+    fn sub_outer_sym(&mut self, u: &Force<S>, w: &Force<S>, s: S) {
+        self.a -= Sym3::outer_sym(&u.ang, &w.ang, s);
+        self.b = self.b - outer(&u.ang, &w.lin, s) - outer(&w.ang, &u.lin, s);
+        self.c -= Sym3::outer_sym(&u.lin, &w.lin, s);
+    }
+    fn act(&self, x: &Transform<S>) -> Self {
+        // Rotate every block into a, then shift by p = x.trans:
+        // A_a = A' - (B'P) - (B'P)ᵀ - P C' P, B_a = B' + P C', C_a = C'.
+        let r = &x.rot;
+        let p = &x.trans;
+        let a = self.a.rotate(r);
+        let b = r.mul_mat(&self.b).mul_mat(&r.transpose());
+        let c = self.c.rotate(r);
+        let pc = cross_mul(p, &c.to_mat3());
+        let bp = b.mul_cross(p);
+        let pcp = pc.mul_cross(p);
+        Self {
+            a: a - bp.sym_sum() - Sym3::from_upper(&pcp),
+            b: b + pc,
+            c,
+        }
+    }
+    #[inline]
+    fn trace(&self) -> S {
+        self.a.trace() + self.c.trace()
+    }
+}

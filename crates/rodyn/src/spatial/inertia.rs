@@ -1,0 +1,100 @@
+//! Rigid-body spatial inertia (Featherstone §2.13), stored compactly.
+//!
+//! Stored as Pinocchio does: mass `m` (kg), centre of mass `c` (m) and the
+//! rotational inertia `I_c` about the centre of mass (kg m²), all in the
+//! body's frame. Ten numbers, and transforming it is a rotation and a shift.
+
+use super::{Force, Motion, Sym3, Transform, Vec3};
+use crate::space::{BodyInertia, RigidTransform};
+use crate::Scalar;
+
+/// Mass, centre of mass and rotational inertia about the centre of mass.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Inertia<S> {
+    /// Mass m (kg).
+    pub mass: S,
+    /// Centre of mass c in the body frame (m).
+    pub com: Vec3<S>,
+    /// Rotational inertia about the centre of mass, I_c (kg m²).
+    pub rot_inertia: Sym3<S>,
+}
+
+impl<S: Scalar> Inertia<S> {
+    /// An inertia from mass, centre of mass and rotational inertia about the centre of mass.
+    #[must_use]
+    pub const fn new(mass: S, com: Vec3<S>, rot_inertia: Sym3<S>) -> Self {
+        Self {
+            mass,
+            com,
+            rot_inertia,
+        }
+    }
+    /// A point mass at `com`.
+    #[must_use]
+    pub const fn point_mass(mass: S, com: Vec3<S>) -> Self {
+        Self::new(mass, com, Sym3::ZERO)
+    }
+    /// The rotational inertia about the frame origin: `I_c + m [c×][c×]ᵀ`.
+    #[must_use]
+    pub fn rot_inertia_at_origin(&self) -> Sym3<S> {
+        self.rot_inertia + Sym3::parallel_axis(&self.com).scale(self.mass)
+    }
+    /// Converts the scalar type.
+    #[must_use]
+    pub fn cast<T: Scalar>(&self) -> Inertia<T> {
+        Inertia::new(
+            T::from_f64(self.mass.to_f64()),
+            self.com.cast(),
+            self.rot_inertia.cast(),
+        )
+    }
+}
+
+impl<S: Scalar> BodyInertia<S> for Inertia<S> {
+    type Motion = Motion<S>;
+    type Force = Force<S>;
+    type Transform = Transform<S>;
+    const ZERO: Self = Self::new(S::ZERO, Vec3::ZERO, Sym3::ZERO);
+
+    #[inline]
+    fn mass(&self) -> S {
+        self.mass
+    }
+    #[inline]
+    fn com(&self) -> Vec3<S> {
+        self.com
+    }
+    #[inline]
+    fn mul_motion(&self, v: &Motion<S>) -> Force<S> {
+        // Momentum of the centre of mass, then its moment about the origin.
+        let lin = (v.lin - self.com.cross(&v.ang)) * self.mass;
+        let ang = self.rot_inertia.mul_vec(&v.ang) + self.com.cross(&lin);
+        Force::new(ang, lin)
+    }
+    #[inline]
+    fn act(&self, x: &Transform<S>) -> Self {
+        Self::new(
+            self.mass,
+            x.act_point(&self.com),
+            self.rot_inertia.rotate(&x.rot),
+        )
+    }
+    fn combine(&self, o: &Self) -> Self {
+        let mass = self.mass + o.mass;
+        // A massless pair keeps a zero inertia rather than dividing by zero.
+        let eps = S::from_f64(S::EPSILON);
+        let inv = S::ONE / mass.max(eps);
+        let com = (self.com * self.mass + o.com * o.mass) * inv;
+        let d = self.com - o.com;
+        let reduced = self.mass * o.mass * inv;
+        let rot_inertia = self.rot_inertia + o.rot_inertia + Sym3::parallel_axis(&d).scale(reduced);
+        Self::new(mass, com, rot_inertia)
+    }
+    #[inline]
+    fn potential_energy(&self, gravity: &Motion<S>) -> S {
+        -(self.mass * gravity.lin.dot(&self.com))
+    }
+    fn is_finite(&self) -> bool {
+        self.mass.is_finite() && self.com.is_finite() && self.rot_inertia.is_finite()
+    }
+}

@@ -1,0 +1,194 @@
+//! 3x3 matrices: rotations and general blocks.
+
+use super::{Sym3, Vec3};
+use crate::Scalar;
+
+/// A general 3x3 matrix, row-major: `m[row][col]`.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Mat3<S> {
+    /// Rows of the matrix.
+    pub m: [[S; 3]; 3],
+}
+
+impl<S: Scalar> Mat3<S> {
+    /// The identity matrix.
+    pub const IDENTITY: Self = Self::from_rows([
+        [S::ONE, S::ZERO, S::ZERO],
+        [S::ZERO, S::ONE, S::ZERO],
+        [S::ZERO, S::ZERO, S::ONE],
+    ]);
+    /// The zero matrix.
+    pub const ZERO: Self = Self::from_rows([[S::ZERO; 3]; 3]);
+
+    /// A matrix from its rows.
+    #[must_use]
+    pub const fn from_rows(m: [[S; 3]; 3]) -> Self {
+        Self { m }
+    }
+
+    /// Rotation by `angle` (radians) about the unit axis `axis` (Rodrigues).
+    #[must_use]
+    pub fn from_axis_angle(axis: &Vec3<S>, angle: S) -> Self {
+        let (s, c) = angle.sin_cos();
+        Self::from_axis_sin_cos(axis, s, c)
+    }
+
+    /// Rotation about the unit axis `a` given the sine and cosine of the angle.
+    #[must_use]
+    pub fn from_axis_sin_cos(a: &Vec3<S>, s: S, c: S) -> Self {
+        let t = S::ONE - c;
+        let (x, y, z) = (a.x, a.y, a.z);
+        Self::from_rows([
+            [t * x * x + c, t * x * y - s * z, t * x * z + s * y],
+            [t * x * y + s * z, t * y * y + c, t * y * z - s * x],
+            [t * x * z - s * y, t * y * z + s * x, t * z * z + c],
+        ])
+    }
+
+    /// Rotation about coordinate axis `k` (0 = x, 1 = y, 2 = z).
+    #[must_use]
+    pub fn from_axis_index(k: usize, s: S, c: S) -> Self {
+        let (o, z) = (S::ONE, S::ZERO);
+        match k {
+            0 => Self::from_rows([[o, z, z], [z, c, -s], [z, s, c]]),
+            1 => Self::from_rows([[c, z, s], [z, o, z], [-s, z, c]]),
+            _ => Self::from_rows([[c, -s, z], [s, c, z], [z, z, o]]),
+        }
+    }
+
+    /// Rotation matrix of the unit quaternion `(x, y, z, w)`.
+    #[must_use]
+    pub fn from_quaternion(x: S, y: S, z: S, w: S) -> Self {
+        let two = S::from_f64(2.0);
+        let (xx, yy, zz) = (x * x, y * y, z * z);
+        let (xy, xz, yz) = (x * y, x * z, y * z);
+        let (wx, wy, wz) = (w * x, w * y, w * z);
+        Self::from_rows([
+            [S::ONE - two * (yy + zz), two * (xy - wz), two * (xz + wy)],
+            [two * (xy + wz), S::ONE - two * (xx + zz), two * (yz - wx)],
+            [two * (xz - wy), two * (yz + wx), S::ONE - two * (xx + yy)],
+        ])
+    }
+
+    /// Column `k`.
+    #[inline]
+    #[must_use]
+    pub fn column(&self, k: usize) -> Vec3<S> {
+        Vec3::new(self.m[0][k], self.m[1][k], self.m[2][k])
+    }
+    /// Row `k`.
+    #[inline]
+    #[must_use]
+    pub fn row(&self, k: usize) -> Vec3<S> {
+        Vec3::from_array(self.m[k])
+    }
+
+    /// `self * v`.
+    #[inline]
+    #[must_use]
+    pub fn mul_vec(&self, v: &Vec3<S>) -> Vec3<S> {
+        let m = &self.m;
+        Vec3::new(
+            m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z,
+            m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z,
+            m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z,
+        )
+    }
+    /// `selfᵀ * v`.
+    #[inline]
+    #[must_use]
+    pub fn tr_mul_vec(&self, v: &Vec3<S>) -> Vec3<S> {
+        let m = &self.m;
+        Vec3::new(
+            m[0][0] * v.x + m[1][0] * v.y + m[2][0] * v.z,
+            m[0][1] * v.x + m[1][1] * v.y + m[2][1] * v.z,
+            m[0][2] * v.x + m[1][2] * v.y + m[2][2] * v.z,
+        )
+    }
+    /// `self * o`.
+    #[must_use]
+    pub fn mul_mat(&self, o: &Self) -> Self {
+        let mut r = Self::ZERO;
+        for i in 0..3 {
+            for j in 0..3 {
+                r.m[i][j] =
+                    self.m[i][0] * o.m[0][j] + self.m[i][1] * o.m[1][j] + self.m[i][2] * o.m[2][j];
+            }
+        }
+        r
+    }
+    /// `selfᵀ * o`.
+    #[must_use]
+    pub fn tr_mul_mat(&self, o: &Self) -> Self {
+        self.transpose().mul_mat(o)
+    }
+    /// The transpose.
+    #[must_use]
+    pub fn transpose(&self) -> Self {
+        let m = &self.m;
+        Self::from_rows([
+            [m[0][0], m[1][0], m[2][0]],
+            [m[0][1], m[1][1], m[2][1]],
+            [m[0][2], m[1][2], m[2][2]],
+        ])
+    }
+    /// `self * [p×]`, the product with the cross-product matrix of `p`.
+    #[must_use]
+    pub fn mul_cross(&self, p: &Vec3<S>) -> Self {
+        // Row i of M [p×] is M_iᵀ [p×] = (M_i × p)ᵀ.
+        let mut r = Self::ZERO;
+        for i in 0..3 {
+            r.m[i] = self.row(i).cross(p).to_array();
+        }
+        r
+    }
+    /// The symmetric part `(self + selfᵀ)`: twice the symmetric part.
+    #[must_use]
+    pub fn sym_sum(&self) -> Sym3<S> {
+        let m = &self.m;
+        Sym3::new(
+            m[0][0] + m[0][0],
+            m[0][1] + m[1][0],
+            m[0][2] + m[2][0],
+            m[1][1] + m[1][1],
+            m[1][2] + m[2][1],
+            m[2][2] + m[2][2],
+        )
+    }
+    /// Converts the scalar type.
+    #[must_use]
+    pub fn cast<T: Scalar>(&self) -> Mat3<T> {
+        let mut r = Mat3::<T>::ZERO;
+        for i in 0..3 {
+            for j in 0..3 {
+                r.m[i][j] = T::from_f64(self.m[i][j].to_f64());
+            }
+        }
+        r
+    }
+}
+
+impl<S: Scalar> core::ops::Add for Mat3<S> {
+    type Output = Self;
+    fn add(self, o: Self) -> Self {
+        let mut r = self;
+        for i in 0..3 {
+            for j in 0..3 {
+                r.m[i][j] += o.m[i][j];
+            }
+        }
+        r
+    }
+}
+impl<S: Scalar> core::ops::Sub for Mat3<S> {
+    type Output = Self;
+    fn sub(self, o: Self) -> Self {
+        let mut r = self;
+        for i in 0..3 {
+            for j in 0..3 {
+                r.m[i][j] -= o.m[i][j];
+            }
+        }
+        r
+    }
+}

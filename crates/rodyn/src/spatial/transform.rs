@@ -1,0 +1,111 @@
+//! Rigid transforms (Featherstone §2.8, Pinocchio's `SE3`).
+//!
+//! A [`Transform`] `aMb` holds the rotation `rot` whose columns are b's axes
+//! in a, and `trans`, the origin of b in a. A point maps as
+//! `p_a = rot p_b + trans`. Its Plücker form is `ᵃX_b = [E 0; -E r× E]ᵀ`-style:
+//! the book's `E = rotᵀ` and `r = trans`.
+//!
+//! | method             | maps            | book            |
+//! |--------------------|-----------------|-----------------|
+//! | `act_motion`       | motion b → a    | `ᵃX_b m`        |
+//! | `act_inv_motion`   | motion a → b    | `ᵇX_a m`        |
+//! | `act_force`        | force b → a     | `ᵃX_b* f`       |
+//! | `act_inv_force`    | force a → b     | `ᵇX_a* f`       |
+
+use super::{Force, Mat3, Motion, Vec3};
+use crate::space::RigidTransform;
+use crate::Scalar;
+
+/// A rigid transform `aMb` (rotation, then translation).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Transform<S> {
+    /// Rotation from b coordinates to a coordinates.
+    pub rot: Mat3<S>,
+    /// Origin of b expressed in a (m).
+    pub trans: Vec3<S>,
+}
+
+impl<S: Scalar> Transform<S> {
+    /// The identity transform.
+    pub const IDENTITY: Self = Self::new(Mat3::IDENTITY, Vec3::ZERO);
+    /// A transform from rotation and translation.
+    #[must_use]
+    pub const fn new(rot: Mat3<S>, trans: Vec3<S>) -> Self {
+        Self { rot, trans }
+    }
+    /// A pure translation.
+    #[must_use]
+    pub const fn from_translation(trans: Vec3<S>) -> Self {
+        Self::new(Mat3::IDENTITY, trans)
+    }
+    /// A pure rotation.
+    #[must_use]
+    pub const fn from_rotation(rot: Mat3<S>) -> Self {
+        Self::new(rot, Vec3::ZERO)
+    }
+    /// Converts the scalar type.
+    #[must_use]
+    pub fn cast<T: Scalar>(&self) -> Transform<T> {
+        Transform::new(self.rot.cast(), self.trans.cast())
+    }
+}
+
+impl<S: Scalar> Default for Transform<S> {
+    fn default() -> Self {
+        Self::IDENTITY
+    }
+}
+
+impl<S: Scalar> RigidTransform<S> for Transform<S> {
+    type Motion = Motion<S>;
+    type Force = Force<S>;
+    type Point = Vec3<S>;
+    const IDENTITY: Self = Transform::IDENTITY;
+
+    #[inline]
+    fn compose(&self, o: &Self) -> Self {
+        Self::new(
+            self.rot.mul_mat(&o.rot),
+            self.rot.mul_vec(&o.trans) + self.trans,
+        )
+    }
+    #[inline]
+    fn inverse(&self) -> Self {
+        Self::new(self.rot.transpose(), -self.rot.tr_mul_vec(&self.trans))
+    }
+    #[inline]
+    fn act_motion(&self, m: &Motion<S>) -> Motion<S> {
+        let ang = self.rot.mul_vec(&m.ang);
+        let lin = self.rot.mul_vec(&m.lin) + self.trans.cross(&ang);
+        Motion::new(ang, lin)
+    }
+    #[inline]
+    fn act_inv_motion(&self, m: &Motion<S>) -> Motion<S> {
+        let ang = self.rot.tr_mul_vec(&m.ang);
+        let lin = self.rot.tr_mul_vec(&(m.lin - self.trans.cross(&m.ang)));
+        Motion::new(ang, lin)
+    }
+    #[inline]
+    fn act_force(&self, f: &Force<S>) -> Force<S> {
+        let lin = self.rot.mul_vec(&f.lin);
+        let ang = self.rot.mul_vec(&f.ang) + self.trans.cross(&lin);
+        Force::new(ang, lin)
+    }
+    #[inline]
+    fn act_inv_force(&self, f: &Force<S>) -> Force<S> {
+        let lin = self.rot.tr_mul_vec(&f.lin);
+        let ang = self.rot.tr_mul_vec(&(f.ang - self.trans.cross(&f.lin)));
+        Force::new(ang, lin)
+    }
+    #[inline]
+    fn act_point(&self, p: &Vec3<S>) -> Vec3<S> {
+        self.rot.mul_vec(p) + self.trans
+    }
+    #[inline]
+    fn translation(&self) -> Vec3<S> {
+        self.trans
+    }
+    fn is_finite(&self) -> bool {
+        self.trans.is_finite() && self.rot.m.iter().flatten().all(|v| v.is_finite())
+    }
+}

@@ -1,0 +1,1 @@
+//! Shared helpers for rodyn's host tests: random states and sample models.
