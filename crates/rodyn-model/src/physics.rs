@@ -1,0 +1,96 @@
+//! Physical plausibility of the numbers in a model file, checked where they
+//! are written so the error can point at them.
+
+use crate::description::ModelDescription;
+use crate::diagnostic::{Diagnostic, Location, Result};
+use crate::geometry::{symmetric_eigenvalues, Mat3};
+
+/// Relative tolerance of the inertia checks: rounding in a file written with
+/// six significant digits must not fail a physical body.
+const RELATIVE_TOLERANCE: f64 = 1e-6;
+
+/// Checks a link's mass (kg): finite and positive.
+///
+/// # Errors
+/// A diagnostic at `location` naming `what`.
+pub fn check_mass(mass: f64, what: &str, location: &Location) -> Result<()> {
+    if mass.is_finite() && mass > 0.0 {
+        Ok(())
+    } else {
+        Err(Diagnostic::error(
+            location.clone(),
+            format!("{what} has mass {mass}; a mass must be a positive number of kilograms"),
+        ))
+    }
+}
+
+/// Checks a rotational inertia about the centre of mass (kg m²): finite,
+/// symmetric, positive semi-definite (a point mass has zero inertia), and its
+/// principal moments obey the triangle inequality `I1 + I2 >= I3`, which
+/// every real mass distribution satisfies.
+///
+/// # Errors
+/// A diagnostic at `location` naming `what` and the violated property.
+pub fn check_rotational_inertia(inertia: &Mat3, what: &str, location: &Location) -> Result<()> {
+    let fail = |why: String| Err(Diagnostic::error(location.clone(), format!("{what} {why}")));
+    if inertia.iter().flatten().any(|x| !x.is_finite()) {
+        return fail("has a non-finite inertia entry".into());
+    }
+    let scale = inertia
+        .iter()
+        .flatten()
+        .fold(0.0_f64, |m, x| m.max(x.abs()));
+    let tol = RELATIVE_TOLERANCE * scale;
+    for (i, j) in [(0, 1), (0, 2), (1, 2)] {
+        if (inertia[i][j] - inertia[j][i]).abs() > tol {
+            return fail(format!(
+                "has an inertia matrix that is not symmetric: entry ({i}, {j}) is {} but ({j}, {i}) is {}",
+                inertia[i][j], inertia[j][i]
+            ));
+        }
+    }
+    let e = symmetric_eigenvalues(inertia);
+    if e[0] < -tol {
+        return fail(format!(
+            "has an inertia matrix that is not positive semi-definite (principal moments {:.6e}, {:.6e}, {:.6e} kg m²)",
+            e[0], e[1], e[2]
+        ));
+    }
+    if e[0] + e[1] < e[2] - tol {
+        return fail(format!(
+            "has principal moments of inertia {:.6e}, {:.6e}, {:.6e} kg m² that break the triangle inequality (the two smaller must add up to at least the largest)",
+            e[0], e[1], e[2]
+        ));
+    }
+    Ok(())
+}
+
+/// Checks that every moving joint moves something: a joint whose whole
+/// subtree has no mass makes the mass matrix singular.
+///
+/// # Errors
+/// A diagnostic at the offending joint.
+pub fn check_subtrees_have_mass(model: &ModelDescription) -> Result<()> {
+    let mut subtree = model
+        .bodies
+        .iter()
+        .map(|b| b.inertia.mass)
+        .collect::<Vec<_>>();
+    for i in (0..model.bodies.len()).rev() {
+        if let Some(p) = model.bodies[i].parent {
+            subtree[p] += subtree[i];
+        }
+    }
+    for (body, mass) in model.bodies.iter().zip(subtree) {
+        if mass <= 0.0 {
+            return Err(Diagnostic::error(
+                body.location.clone(),
+                format!(
+                    "joint `{}` moves only massless links (`{}` and everything below it); its row of the mass matrix would be zero",
+                    body.joint_name, body.name
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
