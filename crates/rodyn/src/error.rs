@@ -36,6 +36,27 @@ pub enum ModelProblem {
     RotationNotOrthonormal,
 }
 
+/// What is wrong with a drive element (see [`crate::drive`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum DriveProblem {
+    /// An endpoint names a body the model does not have.
+    BodyOutOfRange {
+        /// The body index given.
+        body: usize,
+    },
+    /// A joint drive names a velocity coordinate the model does not have.
+    DofOutOfRange {
+        /// The velocity coordinate given.
+        dof: usize,
+    },
+    /// An element reads an entry past the end of the drive-input vector.
+    InputOutOfRange {
+        /// The input index given.
+        input: usize,
+    },
+}
+
 /// The error type of every fallible rodyn function.
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[non_exhaustive]
@@ -81,6 +102,11 @@ pub enum Error {
         /// Body index of the custom joint.
         body: usize,
     },
+    /// A drive element that does not fit the model or the input vector.
+    InvalidDrive {
+        /// The problem.
+        problem: DriveProblem,
+    },
 }
 
 impl fmt::Display for Error {
@@ -121,6 +147,7 @@ impl fmt::Display for Error {
                 f,
                 "body {body}: custom joints cannot be converted to another scalar type"
             ),
+            Self::InvalidDrive { problem } => write!(f, "invalid drive element: {problem:?}"),
         }
     }
 }
@@ -164,6 +191,9 @@ impl defmt::Format for Error {
             }
             Self::UnsupportedCast { body } => {
                 defmt::write!(f, "body {}: custom joint cannot be cast", body)
+            }
+            Self::InvalidDrive { problem } => {
+                defmt::write!(f, "invalid drive element: {}", problem)
             }
         }
     }

@@ -47,12 +47,14 @@
 
 pub mod algorithm;
 pub mod data;
+pub mod drive;
 pub mod endpoint;
 pub mod error;
 pub mod joint;
 pub mod model;
 pub mod planar;
 pub mod scalar;
+pub mod sensitivity;
 pub mod space;
 pub mod spatial;
 pub mod topology;

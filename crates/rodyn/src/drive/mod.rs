@@ -1,0 +1,319 @@
+//! Drives: forces and torques from controls and state, fed to the
+//! algorithms as inputs.
+//!
+//! A drive never changes an algorithm. Every force element adds to a
+//! [`DriveForces`]: one spatial force per body (body frame, the `f_ext`
+//! convention of [`aba`](crate::algorithm::aba::aba) and
+//! [`rnea`](crate::algorithm::rnea::rnea)) and one generalised force per
+//! velocity coordinate (added to `tau`). [`forward_dynamics_with_drives`]
+//! evaluates a set of elements and runs either forward-dynamics method on
+//! the result.
+//!
+//! | element                     | acts on        | force                                  | reads input |
+//! |-----------------------------|----------------|----------------------------------------|-------------|
+//! | [`LinearSpring`]            | a [`Path`]     | `T = k (L - L₀)`                       | no          |
+//! | [`NonlinearSpring`]         | a [`Path`]     | `T = k (L - L₀) + k₃ (L - L₀)³`        | no          |
+//! | [`LinearDamper`]            | a [`Path`]     | `T = c L̇`                              | no          |
+//! | [`ThelenMuscle`]            | a [`Path`]     | Hill-type, Thelen (2003), rigid tendon | activation  |
+//! | [`JointMotor`]              | a joint        | `τ = N k_t i`                          | current     |
+//!
+//! **Drive inputs `w`.** Elements read their inputs from one vector `w`.
+//! Each element names its entry: a motor reads its current command, a
+//! muscle its *activation* `a` (not its excitation: excitation `u` drives
+//! activation through first-order dynamics, [`ThelenMuscle::activation_rate`],
+//! so activation is a state of the simulation and enters the dynamics at an
+//! instant). [`crate::sensitivity`] differentiates the joint accelerations
+//! with respect to `w`.
+//!
+//! **A new element** is a type that implements [`ForceElement`]; it lives in
+//! the user's crate. Arrays and tuples of elements are elements themselves,
+//! so a whole drive set is one value.
+
+mod damper;
+pub mod geometry;
+mod motor;
+mod muscle;
+pub mod muscle_robot;
+mod path;
+mod spring;
+
+pub use damper::LinearDamper;
+pub use geometry::PointGeometry;
+pub use motor::JointMotor;
+pub use muscle::{ThelenMuscle, ThelenParameters};
+pub use path::{Path, PathKinematics, MIN_SEGMENT_LENGTH};
+pub use spring::{LinearSpring, NonlinearSpring};
+
+use crate::algorithm::forward_dynamics::ForwardDynamics;
+use crate::algorithm::kinematics::forward_kinematics_velocity;
+use crate::error::{DriveProblem, Error, Result};
+use crate::space::{Space, VectorOps};
+use crate::{Data, Model, Scalar};
+
+/// The forces a set of drives applies: external forces per body and
+/// generalised forces per joint coordinate.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DriveForces<S: Scalar, G: Space, const NB: usize, const NV: usize> {
+    /// Spatial force on each body, in that body's frame (N m, N).
+    pub f_ext: [G::Force<S>; NB],
+    /// Generalised force on each velocity coordinate (N m or N).
+    pub tau: [S; NV],
+}
+
+impl<S: Scalar, G: Space, const NB: usize, const NV: usize> DriveForces<S, G, NB, NV> {
+    /// No force anywhere; `const`, so it can initialise a `static`.
+    #[must_use]
+    pub const fn new() -> Self {
+        Self {
+            f_ext: [<G::Force<S> as VectorOps<S>>::ZERO; NB],
+            tau: [S::ZERO; NV],
+        }
+    }
+    /// Resets every force to zero.
+    pub fn clear(&mut self) {
+        *self = Self::new();
+    }
+}
+
+impl<S: Scalar, G: Space, const NB: usize, const NV: usize> Default for DriveForces<S, G, NB, NV> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// The state a force element sees: body poses and velocities in `data`
+/// (`o_m_i`, `v`, as forward kinematics with velocities leaves them) and the
+/// joint coordinates.
+#[derive(Clone, Copy, Debug)]
+pub struct DriveState<'a, S: Scalar, G: Space, const NB: usize, const NV: usize> {
+    /// Kinematics at the state (reads `o_m_i`, `v`).
+    pub data: &'a Data<S, NB, NV, G>,
+    /// Joint configuration (NQ entries).
+    pub q: &'a [S],
+    /// Joint velocity.
+    pub v: &'a [S; NV],
+}
+
+/// A force element: anything that turns state and drive inputs into forces.
+///
+/// Implement it in your own crate to add an element without editing rodyn.
+/// Both methods *add* to `out`, so elements compose by calling them in turn.
+pub trait ForceElement<S: Scalar, G: Space, const NB: usize, const NV: usize> {
+    /// Adds the element's forces at drive inputs `w`.
+    ///
+    /// # Errors
+    /// [`Error::InvalidDrive`] when the element does not fit the model or `w`.
+    fn add_forces(
+        &self,
+        state: &DriveState<'_, S, G, NB, NV>,
+        w: &[S],
+        out: &mut DriveForces<S, G, NB, NV>,
+    ) -> Result<()>;
+
+    /// Adds the partial derivative of the element's forces with respect to
+    /// input `w[input]` at fixed state; adds nothing when the element does
+    /// not read that input.
+    ///
+    /// # Errors
+    /// As [`add_forces`](Self::add_forces).
+    fn add_input_derivative(
+        &self,
+        state: &DriveState<'_, S, G, NB, NV>,
+        w: &[S],
+        input: usize,
+        out: &mut DriveForces<S, G, NB, NV>,
+    ) -> Result<()>;
+}
+
+/// Reads `w[input]` or says which input is missing.
+#[inline]
+pub(crate) fn read_input<S: Scalar>(w: &[S], input: usize) -> Result<S> {
+    w.get(input).copied().ok_or(Error::InvalidDrive {
+        problem: DriveProblem::InputOutOfRange { input },
+    })
+}
+
+impl<S, G, E, const NB: usize, const NV: usize> ForceElement<S, G, NB, NV> for &E
+where
+    S: Scalar,
+    G: Space,
+    E: ForceElement<S, G, NB, NV> + ?Sized,
+{
+    fn add_forces(
+        &self,
+        state: &DriveState<'_, S, G, NB, NV>,
+        w: &[S],
+        out: &mut DriveForces<S, G, NB, NV>,
+    ) -> Result<()> {
+        (**self).add_forces(state, w, out)
+    }
+    fn add_input_derivative(
+        &self,
+        state: &DriveState<'_, S, G, NB, NV>,
+        w: &[S],
+        input: usize,
+        out: &mut DriveForces<S, G, NB, NV>,
+    ) -> Result<()> {
+        (**self).add_input_derivative(state, w, input, out)
+    }
+}
+
+impl<S, G, E, const N: usize, const NB: usize, const NV: usize> ForceElement<S, G, NB, NV>
+    for [E; N]
+where
+    S: Scalar,
+    G: Space,
+    E: ForceElement<S, G, NB, NV>,
+{
+    fn add_forces(
+        &self,
+        state: &DriveState<'_, S, G, NB, NV>,
+        w: &[S],
+        out: &mut DriveForces<S, G, NB, NV>,
+    ) -> Result<()> {
+        self.iter().try_for_each(|e| e.add_forces(state, w, out))
+    }
+    fn add_input_derivative(
+        &self,
+        state: &DriveState<'_, S, G, NB, NV>,
+        w: &[S],
+        input: usize,
+        out: &mut DriveForces<S, G, NB, NV>,
+    ) -> Result<()> {
+        self.iter()
+            .try_for_each(|e| e.add_input_derivative(state, w, input, out))
+    }
+}
+
+impl<S, G, E, const NB: usize, const NV: usize> ForceElement<S, G, NB, NV> for [E]
+where
+    S: Scalar,
+    G: Space,
+    E: ForceElement<S, G, NB, NV>,
+{
+    fn add_forces(
+        &self,
+        state: &DriveState<'_, S, G, NB, NV>,
+        w: &[S],
+        out: &mut DriveForces<S, G, NB, NV>,
+    ) -> Result<()> {
+        self.iter().try_for_each(|e| e.add_forces(state, w, out))
+    }
+    fn add_input_derivative(
+        &self,
+        state: &DriveState<'_, S, G, NB, NV>,
+        w: &[S],
+        input: usize,
+        out: &mut DriveForces<S, G, NB, NV>,
+    ) -> Result<()> {
+        self.iter()
+            .try_for_each(|e| e.add_input_derivative(state, w, input, out))
+    }
+}
+
+/// Tuples of elements (of different types) are elements.
+macro_rules! tuple_element {
+    ($($name:ident : $idx:tt),+) => {
+        impl<S, G, $($name,)+ const NB: usize, const NV: usize> ForceElement<S, G, NB, NV>
+            for ($($name,)+)
+        where
+            S: Scalar,
+            G: Space,
+            $($name: ForceElement<S, G, NB, NV>,)+
+        {
+            fn add_forces(
+                &self,
+                state: &DriveState<'_, S, G, NB, NV>,
+                w: &[S],
+                out: &mut DriveForces<S, G, NB, NV>,
+            ) -> Result<()> {
+                $(self.$idx.add_forces(state, w, out)?;)+
+                Ok(())
+            }
+            fn add_input_derivative(
+                &self,
+                state: &DriveState<'_, S, G, NB, NV>,
+                w: &[S],
+                input: usize,
+                out: &mut DriveForces<S, G, NB, NV>,
+            ) -> Result<()> {
+                $(self.$idx.add_input_derivative(state, w, input, out)?;)+
+                Ok(())
+            }
+        }
+    };
+}
+tuple_element!(A: 0);
+tuple_element!(A: 0, B: 1);
+tuple_element!(A: 0, B: 1, C: 2);
+tuple_element!(A: 0, B: 1, C: 2, D: 3);
+tuple_element!(A: 0, B: 1, C: 2, D: 3, E: 4);
+tuple_element!(A: 0, B: 1, C: 2, D: 3, E: 4, F: 5);
+
+/// The forces of `elements` at state `(q, v)` and drive inputs `w`.
+///
+/// Runs forward kinematics with velocities, then clears `out` and lets each
+/// element add its forces. Leaves valid: `li_m_i`, `o_m_i`, `v`, `c` in
+/// `data`; `out` holds the total drive forces.
+///
+/// # Errors
+/// Invalid or non-finite state, and [`Error::InvalidDrive`] for an element
+/// that does not fit the model or `w`.
+pub fn drive_forces<S, G, E, const NB: usize, const NQ: usize, const NV: usize>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    q: &[S; NQ],
+    v: &[S; NV],
+    elements: &E,
+    w: &[S],
+    out: &mut DriveForces<S, G, NB, NV>,
+) -> Result<()>
+where
+    S: Scalar,
+    G: Space,
+    E: ForceElement<S, G, NB, NV> + ?Sized,
+{
+    forward_kinematics_velocity(model, data, q, v)?;
+    out.clear();
+    let state = DriveState {
+        data,
+        q: &q[..],
+        v,
+    };
+    elements.add_forces(&state, w, out)
+}
+
+/// Joint accelerations `q̈ = M⁻¹ (τ + τ_drive - h + Jᵀ f_drive)` under the
+/// drive `elements` at inputs `w`, with any further joint forces `tau`, by
+/// the forward-dynamics method `M` ([`Aba`](crate::algorithm::forward_dynamics::Aba)
+/// or [`Crba`](crate::algorithm::forward_dynamics::Crba)).
+///
+/// `forces` receives the drive forces (its `tau` excludes the caller's
+/// `tau`). Returns `data.ddq`; leaves valid what the method leaves.
+///
+/// # Errors
+/// As [`drive_forces`] and the method's own errors.
+#[allow(clippy::too_many_arguments)]
+pub fn forward_dynamics_with_drives<'d, M, S, G, E, const NB: usize, const NQ: usize, const NV: usize>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &'d mut Data<S, NB, NV, G>,
+    q: &[S; NQ],
+    v: &[S; NV],
+    tau: &[S; NV],
+    elements: &E,
+    w: &[S],
+    forces: &mut DriveForces<S, G, NB, NV>,
+) -> Result<&'d [S; NV]>
+where
+    M: ForwardDynamics,
+    S: Scalar,
+    G: Space,
+    E: ForceElement<S, G, NB, NV> + ?Sized,
+{
+    drive_forces(model, data, q, v, elements, w, forces)?;
+    let mut total = forces.tau;
+    for (t, extra) in total.iter_mut().zip(tau) {
+        *t += *extra;
+    }
+    M::forward_dynamics(model, data, q, v, &total, Some(&forces.f_ext))
+}

@@ -1,0 +1,101 @@
+//! Joint motors: an electric motor driving one joint coordinate through a
+//! gearbox.
+//!
+//! The motor's current `i` (A, the drive input) makes the rotor torque
+//! `k_t i`; the gearbox of ratio `N` (rotor turns per joint turn) multiplies
+//! it, so the joint receives `τ = N k_t i`. The rotor spins `N` times as
+//! fast as the joint, so its inertia `J_r` appears at the joint as the
+//! reflected inertia `N² J_r`. That inertia is not a force: it belongs on the
+//! diagonal of the mass matrix, where the model's per-coordinate armature
+//! puts it ([`JointMotor::reflected_inertia`], added with
+//! [`Model::set_armature`](crate::Model::set_armature)). The rotor's
+//! gyroscopic coupling with the link it rides on is neglected, as in
+//! Pinocchio's and MuJoCo's armature.
+
+use crate::drive::{read_input, DriveForces, DriveState, ForceElement};
+use crate::error::{DriveProblem, Error, Result};
+use crate::space::Space;
+use crate::Scalar;
+
+/// A geared motor on velocity coordinate `dof`, commanded by its current.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct JointMotor<S> {
+    /// The velocity coordinate it drives (index into `v` and `tau`).
+    pub dof: usize,
+    /// The entry of the drive-input vector `w` holding the current (A).
+    pub input: usize,
+    /// Gear ratio `N`: rotor angle per joint angle (dimensionless).
+    pub gear_ratio: S,
+    /// Torque constant `k_t` (N m/A).
+    pub torque_constant: S,
+    /// Rotor inertia `J_r` about its axis (kg m²).
+    pub rotor_inertia: S,
+}
+
+impl<S: Scalar> JointMotor<S> {
+    /// A motor with gear ratio `N`, torque constant `k_t` (N m/A) and rotor
+    /// inertia `J_r` (kg m²) on coordinate `dof`, reading current `w[input]`.
+    #[must_use]
+    pub const fn new(
+        dof: usize,
+        input: usize,
+        gear_ratio: S,
+        torque_constant: S,
+        rotor_inertia: S,
+    ) -> Self {
+        Self {
+            dof,
+            input,
+            gear_ratio,
+            torque_constant,
+            rotor_inertia,
+        }
+    }
+    /// Joint torque per ampere, `N k_t` (N m/A).
+    #[must_use]
+    pub fn torque_per_current(&self) -> S {
+        self.gear_ratio * self.torque_constant
+    }
+    /// The rotor inertia seen at the joint, `N² J_r` (kg m²).
+    #[must_use]
+    pub fn reflected_inertia(&self) -> S {
+        self.gear_ratio * self.gear_ratio * self.rotor_inertia
+    }
+    fn check_dof<const NV: usize>(&self) -> Result<()> {
+        if self.dof < NV {
+            Ok(())
+        } else {
+            Err(Error::InvalidDrive {
+                problem: DriveProblem::DofOutOfRange { dof: self.dof },
+            })
+        }
+    }
+}
+
+impl<S: Scalar, G: Space, const NB: usize, const NV: usize> ForceElement<S, G, NB, NV>
+    for JointMotor<S>
+{
+    fn add_forces(
+        &self,
+        _state: &DriveState<'_, S, G, NB, NV>,
+        w: &[S],
+        out: &mut DriveForces<S, G, NB, NV>,
+    ) -> Result<()> {
+        self.check_dof::<NV>()?;
+        out.tau[self.dof] += self.torque_per_current() * read_input(w, self.input)?;
+        Ok(())
+    }
+    fn add_input_derivative(
+        &self,
+        _state: &DriveState<'_, S, G, NB, NV>,
+        _w: &[S],
+        input: usize,
+        out: &mut DriveForces<S, G, NB, NV>,
+    ) -> Result<()> {
+        self.check_dof::<NV>()?;
+        if input == self.input {
+            out.tau[self.dof] += self.torque_per_current();
+        }
+        Ok(())
+    }
+}

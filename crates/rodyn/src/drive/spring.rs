@@ -1,0 +1,131 @@
+//! Springs along paths: a linear spring and a hardening (cubic) spring.
+//!
+//! Both are bilateral: stretched beyond the rest length `L₀` they pull
+//! (tension `T > 0`), compressed below it they push. Both are conservative,
+//! with the potential energies documented on each, so a model driven only by
+//! springs conserves `kinetic + gravitational + spring` energy.
+
+use crate::drive::geometry::PointGeometry;
+use crate::drive::{DriveForces, DriveState, ForceElement, Path};
+use crate::error::Result;
+use crate::Scalar;
+
+/// A linear spring along a path: `T = k (L - L₀)`, energy `½ k (L - L₀)²`.
+#[derive(Clone, Copy, Debug)]
+pub struct LinearSpring<S: Scalar, G: PointGeometry, const K: usize> {
+    /// The path the spring follows.
+    pub path: Path<S, G, K>,
+    /// Stiffness `k` (N/m).
+    pub stiffness: S,
+    /// Rest length `L₀` (m).
+    pub rest_length: S,
+}
+
+impl<S: Scalar, G: PointGeometry, const K: usize> LinearSpring<S, G, K> {
+    /// A spring of stiffness `k` (N/m) and rest length `L₀` (m) along `path`.
+    #[must_use]
+    pub const fn new(path: Path<S, G, K>, stiffness: S, rest_length: S) -> Self {
+        Self {
+            path,
+            stiffness,
+            rest_length,
+        }
+    }
+    /// Tension (N) at path length `length` (m).
+    #[must_use]
+    pub fn tension(&self, length: S) -> S {
+        self.stiffness * (length - self.rest_length)
+    }
+    /// Stored energy (J) at path length `length` (m).
+    #[must_use]
+    pub fn potential_energy(&self, length: S) -> S {
+        S::from_f64(0.5) * self.stiffness * (length - self.rest_length).squared()
+    }
+}
+
+impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usize>
+    ForceElement<S, G, NB, NV> for LinearSpring<S, G, K>
+{
+    fn add_forces(
+        &self,
+        state: &DriveState<'_, S, G, NB, NV>,
+        _w: &[S],
+        out: &mut DriveForces<S, G, NB, NV>,
+    ) -> Result<()> {
+        let kin = self.path.kinematics(state.data)?;
+        self.path
+            .add_tension(&kin, self.tension(kin.length), state.data, &mut out.f_ext)
+    }
+    fn add_input_derivative(
+        &self,
+        _state: &DriveState<'_, S, G, NB, NV>,
+        _w: &[S],
+        _input: usize,
+        _out: &mut DriveForces<S, G, NB, NV>,
+    ) -> Result<()> {
+        Ok(())
+    }
+}
+
+/// A hardening spring along a path: `T = k δ + k₃ δ³` with `δ = L - L₀`,
+/// energy `½ k δ² + ¼ k₃ δ⁴`.
+#[derive(Clone, Copy, Debug)]
+pub struct NonlinearSpring<S: Scalar, G: PointGeometry, const K: usize> {
+    /// The path the spring follows.
+    pub path: Path<S, G, K>,
+    /// Linear stiffness `k` (N/m).
+    pub stiffness: S,
+    /// Cubic stiffness `k₃` (N/m³).
+    pub cubic_stiffness: S,
+    /// Rest length `L₀` (m).
+    pub rest_length: S,
+}
+
+impl<S: Scalar, G: PointGeometry, const K: usize> NonlinearSpring<S, G, K> {
+    /// A spring with linear and cubic stiffness along `path`.
+    #[must_use]
+    pub const fn new(path: Path<S, G, K>, stiffness: S, cubic_stiffness: S, rest_length: S) -> Self {
+        Self {
+            path,
+            stiffness,
+            cubic_stiffness,
+            rest_length,
+        }
+    }
+    /// Tension (N) at path length `length` (m).
+    #[must_use]
+    pub fn tension(&self, length: S) -> S {
+        let delta = length - self.rest_length;
+        delta * (self.stiffness + self.cubic_stiffness * delta * delta)
+    }
+    /// Stored energy (J) at path length `length` (m).
+    #[must_use]
+    pub fn potential_energy(&self, length: S) -> S {
+        let d2 = (length - self.rest_length).squared();
+        d2 * (S::from_f64(0.5) * self.stiffness + S::from_f64(0.25) * self.cubic_stiffness * d2)
+    }
+}
+
+impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usize>
+    ForceElement<S, G, NB, NV> for NonlinearSpring<S, G, K>
+{
+    fn add_forces(
+        &self,
+        state: &DriveState<'_, S, G, NB, NV>,
+        _w: &[S],
+        out: &mut DriveForces<S, G, NB, NV>,
+    ) -> Result<()> {
+        let kin = self.path.kinematics(state.data)?;
+        self.path
+            .add_tension(&kin, self.tension(kin.length), state.data, &mut out.f_ext)
+    }
+    fn add_input_derivative(
+        &self,
+        _state: &DriveState<'_, S, G, NB, NV>,
+        _w: &[S],
+        _input: usize,
+        _out: &mut DriveForces<S, G, NB, NV>,
+    ) -> Result<()> {
+        Ok(())
+    }
+}
