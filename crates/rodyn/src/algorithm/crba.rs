@@ -40,8 +40,10 @@ pub fn crba<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
         for k in 0..nv {
             let mut f = data.ic[i].mul_motion(&joint.subspace_column(k));
             joint.project_force(&f, &mut column[..nv]);
-            for (r, value) in column[..nv].iter().enumerate() {
+            // The joint's own block: lower triangle computed, mirrored exactly.
+            for (r, value) in column[..nv].iter().enumerate().skip(k) {
                 data.mass_matrix[iv + r][iv + k] = *value;
+                data.mass_matrix[iv + k][iv + r] = *value;
             }
             let mut j = i;
             while let Some(p) = t.parents[j] {
