@@ -24,6 +24,25 @@ pub fn check_mass(mass: f64, what: &str, location: &Location) -> Result<()> {
     }
 }
 
+/// Checks a URDF link's mass (kg): positive, or zero together with a zero
+/// inertia tensor (URDFs mark pure frames, such as tool flanges, that way;
+/// Pinocchio accepts them).
+///
+/// # Errors
+/// A diagnostic at `location` naming `what`.
+pub fn check_link_mass(mass: f64, inertia: &Mat3, what: &str, location: &Location) -> Result<()> {
+    if mass == 0.0 && inertia.iter().flatten().all(|x| *x == 0.0) {
+        return Ok(());
+    }
+    check_mass(mass, what, location).map_err(|mut d| {
+        if mass == 0.0 {
+            d.message
+                .push_str(" (a massless frame must also have a zero inertia tensor)");
+        }
+        d
+    })
+}
+
 /// Checks a rotational inertia about the centre of mass (kg m²): finite,
 /// symmetric, positive semi-definite (a point mass has zero inertia), and its
 /// principal moments obey the triangle inequality `I1 + I2 >= I3`, which

@@ -21,13 +21,13 @@
 use crate::description::{Body, EndpointDef, Frame, JointType, ModelDescription};
 use crate::diagnostic::{Diagnostic, Location, Result};
 use crate::geometry::{norm, scale, Pose, RigidInertia, Vec3};
-use crate::physics::{check_mass, check_rotational_inertia, check_subtrees_have_mass};
+use crate::physics::{check_link_mass, check_rotational_inertia, check_subtrees_have_mass};
 use roxmltree::{Document, Node};
 use std::collections::{BTreeMap, HashMap};
 use std::path::Path;
 
-/// Standard gravity along -z, URDF's convention for "up".
-pub const URDF_GRAVITY: Vec3 = [0.0, 0.0, -9.806_65];
+/// Gravity along -z (URDF's "up" is +z), 9.81 m/s² as in Pinocchio's URDF models.
+pub const URDF_GRAVITY: Vec3 = [0.0, 0.0, -9.81];
 
 /// How to read a URDF.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -276,7 +276,6 @@ impl<'a> Reader<'a> {
             return self.error(inertial, format!("{what} has an <inertial> without <mass>"));
         };
         let mass = self.scalar_attribute(mass_node, "value")?;
-        check_mass(mass, &what, &self.at_attribute(mass_node, "value"))?;
         let Some(i) = child(inertial, "inertia") else {
             return self.error(
                 inertial,
@@ -293,6 +292,12 @@ impl<'a> Reader<'a> {
             get("izz")?,
         );
         let inertia = [[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]];
+        check_link_mass(
+            mass,
+            &inertia,
+            &what,
+            &self.at_attribute(mass_node, "value"),
+        )?;
         check_rotational_inertia(&inertia, &what, &self.at_node(i))?;
         // The tensor is given in the inertial frame; rodyn wants it in the link frame.
         let local = RigidInertia {

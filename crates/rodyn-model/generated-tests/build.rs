@@ -1,0 +1,31 @@
+//! Compiles every shipped model into `$OUT_DIR/models.rs` exactly as a
+//! firmware build script would, so the tests exercise the generated code.
+
+use rodyn_model::{build::compile_with, LoadOptions};
+use std::fmt::Write;
+use std::path::Path;
+
+/// `(file under models/, module name, floating base)`: the URDFs with the
+/// root joints of the Pinocchio fixtures in `host-tests/fixtures/`.
+const MODELS: &[(&str, &str, bool)] = &[
+    ("urdf/panda.urdf", "panda", false),
+    ("urdf/ur5.urdf", "ur5", false),
+    ("urdf/solo12.urdf", "solo12", true),
+    ("urdf/branched_tree.urdf", "branched_tree", false),
+    ("urdf/planar_chain_5.urdf", "planar_chain_5", false),
+    ("urdf/spatial_chain_12.urdf", "spatial_chain_12", false),
+];
+
+fn main() {
+    let models = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../models");
+    let mut all = String::new();
+    for (file, module, floating_base) in MODELS {
+        let options = LoadOptions {
+            floating_base: *floating_base,
+        };
+        let out = compile_with(models.join(file), module, options);
+        writeln!(all, "include!({:?});", out.display().to_string()).unwrap();
+    }
+    let out_dir = std::env::var("OUT_DIR").unwrap();
+    std::fs::write(Path::new(&out_dir).join("models.rs"), all).unwrap();
+}
