@@ -19,7 +19,9 @@
 //! [`sensitivity`].
 
 use crate::algorithm::forward_dynamics::Aba;
-use crate::drive::{forward_dynamics_with_drives, DriveForces, Path, ThelenMuscle, ThelenParameters};
+use crate::drive::{
+    forward_dynamics_with_drives, DriveForces, Path, ThelenMuscle, ThelenParameters,
+};
 use crate::endpoint::Endpoint;
 use crate::error::Result;
 use crate::planar::{Planar, PlanarInertia, PlanarJoint, PlanarMotion, PlanarTransform, Vec2};
@@ -104,12 +106,14 @@ pub fn muscles<S: Scalar>() -> RobotMuscles<S> {
     ]
 }
 
-/// `(F₀ᴹ N, l₀ᴹ m, lₛᵀ m)` of m1 … m4.
+/// `(F₀ᴹ N, l₀ᴹ m, lₛᵀ m)` of m1 … m4, chosen so that every fibre is near
+/// its optimal length with the arm hanging (`q = 0`): the path lengths there
+/// are 0.228, 0.228, 0.400 and 0.522 m.
 pub const MUSCLE_PARAMETERS: [(f64, f64, f64); NU] = [
-    (400.0, 0.10, 0.10),
-    (400.0, 0.10, 0.10),
-    (300.0, 0.10, 0.10),
-    (300.0, 0.20, 0.20),
+    (400.0, 0.12, 0.11),
+    (400.0, 0.12, 0.11),
+    (300.0, 0.12, 0.27),
+    (300.0, 0.12, 0.41),
 ];
 
 /// Joint accelerations (rad/s²) at `(q, v)` under activations `a`, by ABA.
@@ -127,7 +131,14 @@ pub fn forward_dynamics<'d, S: Scalar>(
     forces: &mut RobotForces<S>,
 ) -> Result<&'d [S; NV]> {
     forward_dynamics_with_drives::<Aba, _, _, _, NB, NV, NV>(
-        model, data, q, v, &[S::ZERO; NV], muscles, activation, forces,
+        model,
+        data,
+        q,
+        v,
+        &[S::ZERO; NV],
+        muscles,
+        activation,
+        forces,
     )
 }
 
