@@ -44,6 +44,9 @@
 #![cfg_attr(not(feature = "std"), no_std)]
 #![forbid(unsafe_op_in_unsafe_fn)]
 #![warn(missing_docs)]
+// Index loops over bodies and coordinates mirror the book's equations
+// (`for i in 0..NB`, `M[r][c]`); iterator chains would hide them.
+#![allow(clippy::needless_range_loop)]
 
 pub mod algorithm;
 pub mod data;
@@ -55,6 +58,7 @@ pub mod model;
 pub mod planar;
 pub mod scalar;
 pub mod sensitivity;
+pub mod sim;
 pub mod space;
 pub mod spatial;
 pub mod topology;

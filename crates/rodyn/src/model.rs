@@ -284,7 +284,7 @@ pub(crate) fn validate_inertia_3d<S: Scalar>(
     i: &Inertia<S>,
 ) -> core::result::Result<(), ModelProblem> {
     let m = i.mass.to_f64();
-    if !(m >= 0.0) || !i.is_finite() {
+    if !(i.is_finite() && m >= 0.0) {
         return Err(ModelProblem::InvalidMass);
     }
     let r = &i.rot_inertia;

@@ -37,7 +37,7 @@ pub fn ltdl_factor<S: Scalar, const NB: usize, const NQ: usize, const NV: usize,
     for k in (0..NV).rev() {
         let d = h[k][k];
         let relative = if scale > 0.0 { d.to_f64() / scale } else { 0.0 };
-        if !(d.to_f64() > tol) || !d.is_finite() {
+        if !(d.is_finite() && d.to_f64() > tol) {
             return Err(Error::MassMatrixNotPositiveDefinite {
                 dof: k,
                 relative_pivot: relative,
