@@ -41,15 +41,19 @@ const SPRING: LinearSpring<f64, Spatial, 2> = LinearSpring::new(
 fn main() -> Result<(), rodyn::Error> {
     let mut data = Data::new();
     let mut forces = DriveForces::new();
-    let energy = |data: &mut Data<f64, 1, 1>, q: &[f64; 1], v: &[f64; 1]| -> Result<f64, rodyn::Error> {
-        let kinetic = kinetic_energy(&PENDULUM, data, q, v)?;
-        let gravity = potential_energy(&PENDULUM, data, q)?;
-        let length = SPRING.path.kinematics(data)?.length;
-        Ok(kinetic + gravity + SPRING.potential_energy(length))
-    };
+    let energy =
+        |data: &mut Data<f64, 1, 1>, q: &[f64; 1], v: &[f64; 1]| -> Result<f64, rodyn::Error> {
+            let kinetic = kinetic_energy(&PENDULUM, data, q, v)?;
+            let gravity = potential_energy(&PENDULUM, data, q)?;
+            let length = SPRING.path.kinematics(data)?.length;
+            Ok(kinetic + gravity + SPRING.potential_energy(length))
+        };
     let (mut q, mut v) = ([1.2], [0.0]);
     let dt = 1e-3;
-    println!("{:>5} {:>9} {:>9} {:>9} {:>10} {:>12}", "t s", "q rad", "v rad/s", "L m", "tension N", "energy J");
+    println!(
+        "{:>5} {:>9} {:>9} {:>9} {:>10} {:>12}",
+        "t s", "q rad", "v rad/s", "L m", "tension N", "energy J"
+    );
     for step in 0..=2000 {
         if step % 100 == 0 {
             let e = energy(&mut data, &q, &v)?;
@@ -67,13 +71,26 @@ fn main() -> Result<(), rodyn::Error> {
         // Classical RK4 on (q, v).
         let mut accel = |q: f64, v: f64| -> Result<f64, rodyn::Error> {
             Ok(forward_dynamics_with_drives::<Aba, _, _, _, 1, 1, 1>(
-                &PENDULUM, &mut data, &[q], &[v], &[0.0], &SPRING, &[], &mut forces,
+                &PENDULUM,
+                &mut data,
+                &[q],
+                &[v],
+                &[0.0],
+                &SPRING,
+                &[],
+                &mut forces,
             )?[0])
         };
         let (q0, v0) = (q[0], v[0]);
         let k1 = (v0, accel(q0, v0)?);
-        let k2 = (v0 + 0.5 * dt * k1.1, accel(q0 + 0.5 * dt * k1.0, v0 + 0.5 * dt * k1.1)?);
-        let k3 = (v0 + 0.5 * dt * k2.1, accel(q0 + 0.5 * dt * k2.0, v0 + 0.5 * dt * k2.1)?);
+        let k2 = (
+            v0 + 0.5 * dt * k1.1,
+            accel(q0 + 0.5 * dt * k1.0, v0 + 0.5 * dt * k1.1)?,
+        );
+        let k3 = (
+            v0 + 0.5 * dt * k2.1,
+            accel(q0 + 0.5 * dt * k2.0, v0 + 0.5 * dt * k2.1)?,
+        );
         let k4 = (v0 + dt * k3.1, accel(q0 + dt * k3.0, v0 + dt * k3.1)?);
         q[0] += dt / 6.0 * (k1.0 + 2.0 * k2.0 + 2.0 * k3.0 + k4.0);
         v[0] += dt / 6.0 * (k1.1 + 2.0 * k2.1 + 2.0 * k3.1 + k4.1);

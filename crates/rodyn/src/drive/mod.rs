@@ -29,13 +29,13 @@
 //! the user's crate. Arrays and tuples of elements are elements themselves,
 //! so a whole drive set is one value.
 
-mod damper;
+pub mod damper;
 pub mod geometry;
-mod motor;
-mod muscle;
+pub mod motor;
+pub mod muscle;
 pub mod muscle_robot;
-mod path;
-mod spring;
+pub mod path;
+pub mod spring;
 
 pub use damper::LinearDamper;
 pub use geometry::PointGeometry;
@@ -275,11 +275,7 @@ where
 {
     forward_kinematics_velocity(model, data, q, v)?;
     out.clear();
-    let state = DriveState {
-        data,
-        q: &q[..],
-        v,
-    };
+    let state = DriveState { data, q: &q[..], v };
     elements.add_forces(&state, w, out)
 }
 
@@ -294,7 +290,16 @@ where
 /// # Errors
 /// As [`drive_forces`] and the method's own errors.
 #[allow(clippy::too_many_arguments)]
-pub fn forward_dynamics_with_drives<'d, M, S, G, E, const NB: usize, const NQ: usize, const NV: usize>(
+pub fn forward_dynamics_with_drives<
+    'd,
+    M,
+    S,
+    G,
+    E,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+>(
     model: &Model<S, NB, NQ, NV, G>,
     data: &'d mut Data<S, NB, NV, G>,
     q: &[S; NQ],

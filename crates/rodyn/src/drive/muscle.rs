@@ -61,7 +61,7 @@ pub const MIN_PENNATION_COSINE: f64 = 0.1;
 /// Shortest fibre, as a fraction of the optimal fibre length.
 pub const MIN_FIBER_LENGTH_FRACTION: f64 = 0.01;
 
-/// The parameters of a Thelen (2003) muscle; see the [module](self) table.
+/// The parameters of a Thelen (2003) muscle; see the [module](crate::drive::muscle) table.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ThelenParameters<S> {
     /// `F₀ᴹ`, maximum isometric force (N).
@@ -133,8 +133,12 @@ impl<S: Scalar> ThelenParameters<S> {
         tendon_slack_length: S,
         pennation_angle_at_optimal: S,
     ) -> Self {
-        ThelenParameters::<f64>::thelen_2003(0.0, 0.0, 0.0, 0.0)
-            .cast_with(max_isometric_force, optimal_fiber_length, tendon_slack_length, pennation_angle_at_optimal)
+        ThelenParameters::<f64>::thelen_2003(0.0, 0.0, 0.0, 0.0).cast_with(
+            max_isometric_force,
+            optimal_fiber_length,
+            tendon_slack_length,
+            pennation_angle_at_optimal,
+        )
     }
     /// The same parameters in another scalar type.
     #[must_use]
@@ -280,7 +284,9 @@ impl<S: Scalar, G: PointGeometry, const K: usize> ThelenMuscle<S, G, K> {
         let cos_max = S::from_f64(MIN_PENNATION_COSINE);
         let sin_max = (S::ONE - cos_max * cos_max).sqrt();
         let min_length = (S::from_f64(MIN_FIBER_LENGTH_FRACTION) * l_opt).max(height / sin_max);
-        let min_projection = (min_length * min_length - height * height).max(S::ZERO).sqrt();
+        let min_projection = (min_length * min_length - height * height)
+            .max(S::ZERO)
+            .sqrt();
         let projection = length - p.tendon_slack_length;
         let (fiber_length, cos_pennation, fiber_velocity) = if projection > min_projection {
             let l = (projection * projection + height * height).sqrt();
@@ -291,9 +297,8 @@ impl<S: Scalar, G: PointGeometry, const K: usize> ThelenMuscle<S, G, K> {
         };
         let clamped = activation.max(S::ZERO).min(S::ONE);
         let a_in_range = activation > S::ZERO && activation < S::ONE;
-        let velocity_scale = (S::from_f64(0.25) + S::from_f64(0.75) * clamped)
-            * p.max_contraction_velocity
-            * l_opt;
+        let velocity_scale =
+            (S::from_f64(0.25) + S::from_f64(0.75) * clamped) * p.max_contraction_velocity * l_opt;
         let v_norm = fiber_velocity / velocity_scale;
         let l_norm = fiber_length / l_opt;
         let f_l = p.active_force_length(l_norm);
@@ -350,7 +355,8 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
         let activation = read_input(w, self.input)?;
         let kin = self.path.kinematics(state.data)?;
         let tension = self.state_on(&kin, activation).tension;
-        self.path.add_tension(&kin, tension, state.data, &mut out.f_ext)
+        self.path
+            .add_tension(&kin, tension, state.data, &mut out.f_ext)
     }
     fn add_input_derivative(
         &self,
@@ -365,6 +371,7 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
         }
         let kin = self.path.kinematics(state.data)?;
         let slope = self.state_on(&kin, activation).tension_per_activation;
-        self.path.add_tension(&kin, slope, state.data, &mut out.f_ext)
+        self.path
+            .add_tension(&kin, slope, state.data, &mut out.f_ext)
     }
 }

@@ -84,7 +84,12 @@ pub struct NonlinearSpring<S: Scalar, G: PointGeometry, const K: usize> {
 impl<S: Scalar, G: PointGeometry, const K: usize> NonlinearSpring<S, G, K> {
     /// A spring with linear and cubic stiffness along `path`.
     #[must_use]
-    pub const fn new(path: Path<S, G, K>, stiffness: S, cubic_stiffness: S, rest_length: S) -> Self {
+    pub const fn new(
+        path: Path<S, G, K>,
+        stiffness: S,
+        cubic_stiffness: S,
+        rest_length: S,
+    ) -> Self {
         Self {
             path,
             stiffness,

@@ -18,7 +18,15 @@ use crate::Scalar;
 ///
 /// # Errors
 /// [`Error::InvalidDrive`](crate::Error::InvalidDrive) from the elements.
-pub fn input_sensitivity<S, G, E, const NB: usize, const NQ: usize, const NV: usize, const NU: usize>(
+pub fn input_sensitivity<
+    S,
+    G,
+    E,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    const NU: usize,
+>(
     model: &Model<S, NB, NQ, NV, G>,
     data: &Data<S, NB, NV, G>,
     q: &[S; NQ],
@@ -38,7 +46,13 @@ where
     for k in 0..NU {
         d_forces.clear();
         elements.add_input_derivative(&state, w, k, &mut d_forces)?;
-        aba_response(model, data, &d_forces.tau, Some(&d_forces.f_ext), &mut column);
+        aba_response(
+            model,
+            data,
+            &d_forces.tau,
+            Some(&d_forces.f_ext),
+            &mut column,
+        );
         for (row, value) in out.iter_mut().zip(&column) {
             row[k] = *value;
         }
