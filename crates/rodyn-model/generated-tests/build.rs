@@ -6,7 +6,8 @@ use std::fmt::Write;
 use std::path::Path;
 
 /// `(file under models/, module name, floating base)`: the URDFs with the
-/// root joints of the Pinocchio fixtures in `host-tests/fixtures/`.
+/// root joints of the Pinocchio fixtures in `host-tests/fixtures/`, then
+/// every rodyn model file shipped in `models/`.
 const MODELS: &[(&str, &str, bool)] = &[
     ("urdf/panda.urdf", "panda", false),
     ("urdf/ur5.urdf", "ur5", false),
@@ -14,6 +15,12 @@ const MODELS: &[(&str, &str, bool)] = &[
     ("urdf/branched_tree.urdf", "branched_tree", false),
     ("urdf/planar_chain_5.urdf", "planar_chain_5", false),
     ("urdf/spatial_chain_12.urdf", "spatial_chain_12", false),
+    ("pendulum.toml", "pendulum", false),
+    ("two_link_muscles.toml", "two_link_muscles", false),
+    ("gait_planar.toml", "gait_planar", false),
+    ("aibo.toml", "aibo", false),
+    ("panda.toml", "panda_with_motors", false),
+    ("solo12.toml", "solo12_with_contacts", false),
 ];
 
 fn main() {

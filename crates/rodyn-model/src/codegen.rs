@@ -378,226 +378,200 @@ fn endpoints(w: &mut Writer, model: &ModelDescription) {
     w.blank();
 }
 
-/// One kind of drive or contact: its struct, its named indices and its table.
-struct Table {
-    /// Struct name, e.g. `Spring`.
-    kind: &'static str,
-    /// Doc comment of the struct.
-    doc: &'static str,
-    /// `(field, type, doc)`; type `S` is the scalar.
-    fields: &'static [(&'static str, &'static str, &'static str)],
-    /// `(name, field values)` per element.
-    rows: Vec<(String, Vec<String>)>,
-}
-
+/// Springs, dampers, muscles and motors as values of `rodyn::drive`'s types,
+/// one named constant per element and scalar type; contacts as a parameter
+/// struct of the generated module.
 fn drives(w: &mut Writer, model: &ModelDescription) {
-    let path = |p: &[usize]| {
-        let list = p.iter().map(ToString::to_string).collect::<Vec<_>>();
-        format!("&[{}]", list.join(", "))
-    };
-    let mut spring = Table {
-        kind: "Spring",
-        doc: "A linear spring along a path of endpoints: tension `stiffness (l - rest_length) + damping l̇`.",
-        fields: &[
-            ("path", "&'static [usize]", "Endpoint indices along the path."),
-            ("stiffness", "S", "Stiffness, N/m."),
-            ("rest_length", "S", "Rest length, m."),
-            ("damping", "S", "Damping, N s/m."),
-        ],
-        rows: Vec::new(),
-    };
-    let mut damper = Table {
-        kind: "Damper",
-        doc: "A linear damper along a path of endpoints: tension `damping l̇`.",
-        fields: &[
-            (
-                "path",
-                "&'static [usize]",
-                "Endpoint indices along the path.",
-            ),
-            ("damping", "S", "Damping, N s/m."),
-        ],
-        rows: Vec::new(),
-    };
-    let mut muscle = Table {
-        kind: "Muscle",
-        doc: "A Hill-type muscle-tendon unit along a path of endpoints (via points).",
-        fields: &[
-            (
-                "path",
-                "&'static [usize]",
-                "Endpoint indices along the path, origin to insertion.",
-            ),
-            ("max_isometric_force", "S", "Maximum isometric force, N."),
-            ("optimal_fiber_length", "S", "Optimal fibre length, m."),
-            ("tendon_slack_length", "S", "Tendon slack length, m."),
-            (
-                "pennation_angle",
-                "S",
-                "Pennation angle at optimal fibre length, rad.",
-            ),
-            (
-                "max_contraction_velocity",
-                "S",
-                "Maximum contraction velocity, m/s.",
-            ),
-        ],
-        rows: Vec::new(),
-    };
-    for f in &model.force_elements {
-        let p = path(&f.path);
-        match f.law {
-            ForceLaw::Spring {
-                stiffness,
-                rest_length,
-                damping,
-            } => spring.rows.push((
-                f.name.clone(),
-                vec![
-                    p,
-                    literal(stiffness),
-                    literal(rest_length),
-                    literal(damping),
-                ],
-            )),
-            ForceLaw::Damper { damping } => damper
-                .rows
-                .push((f.name.clone(), vec![p, literal(damping)])),
-            ForceLaw::Muscle {
-                max_isometric_force,
-                optimal_fiber_length,
-                tendon_slack_length,
-                pennation_angle,
-                max_contraction_velocity,
-            } => muscle.rows.push((
-                f.name.clone(),
-                vec![
-                    p,
-                    literal(max_isometric_force),
-                    literal(optimal_fiber_length),
-                    literal(tendon_slack_length),
-                    literal(pennation_angle),
-                    literal(max_contraction_velocity),
-                ],
-            )),
-        }
+    let geometry = if model.planar { "Planar" } else { "Spatial" };
+    let inputs = model
+        .force_elements
+        .iter()
+        .filter(|f| matches!(f.law, ForceLaw::Muscle { .. }))
+        .map(|f| f.name.as_str())
+        .chain(model.motors.iter().map(|m| m.name.as_str()))
+        .collect::<Vec<_>>();
+    if model.force_elements.is_empty() && model.motors.is_empty() && model.contacts.is_empty() {
+        return;
     }
-    let idx_v = model.idx_v();
-    let motor = Table {
-        kind: "Motor",
-        doc: "An electric motor driving a one-degree-of-freedom joint through a gear.",
-        fields: &[
-            ("joint", "usize", "The joint (body index) it drives."),
-            ("v", "usize", "The joint's velocity coordinate."),
-            ("gear_ratio", "S", "Gear ratio, motor turns per joint turn."),
-            (
-                "rotor_inertia",
-                "S",
-                "Rotor inertia on the motor side, kg m².",
-            ),
-            ("torque_constant", "S", "Torque constant, N m/A."),
-        ],
-        rows: model
-            .motors
-            .iter()
-            .map(|m| {
-                (
-                    m.name.clone(),
-                    vec![
-                        m.body.to_string(),
-                        idx_v[m.body].to_string(),
-                        literal(m.gear_ratio),
-                        literal(m.rotor_inertia),
-                        literal(m.torque_constant),
-                    ],
-                )
-            })
-            .collect(),
-    };
-    let contact = Table {
-        kind: "Contact",
-        doc: "A compliant contact at an endpoint.",
-        fields: &[
-            ("endpoint", "usize", "The endpoint in contact."),
-            ("stiffness", "S", "Normal stiffness, N/m."),
-            ("damping", "S", "Normal damping, N s/m."),
-            ("friction", "S", "Coulomb friction coefficient."),
-        ],
-        rows: model
-            .contacts
-            .iter()
-            .map(|c| {
-                (
-                    c.name.clone(),
-                    vec![
-                        c.endpoint.to_string(),
-                        literal(c.stiffness),
-                        literal(c.damping),
-                        literal(c.friction),
-                    ],
-                )
-            })
-            .collect(),
-    };
-    for table in [spring, damper, muscle, motor, contact] {
-        if !table.rows.is_empty() {
-            write_table(w, &table);
-        }
-    }
-}
-
-fn write_table(w: &mut Writer, t: &Table) {
-    let kind = t.kind;
-    let snake = kind.to_lowercase();
-    let count = format!("N_{}", kind.to_uppercase());
-    let uses_scalar = t.fields.iter().any(|f| f.1 == "S");
-    let generic = if uses_scalar { "<S>" } else { "" };
-    w.line(&format!("/// {}", t.doc));
-    w.line("///");
-    w.line("/// Parameters as in the model file, converted to SI units.");
-    w.line("#[derive(Clone, Copy, Debug, PartialEq)]");
-    w.open(&format!("pub struct {kind}{generic} {{"));
-    for (name, ty, doc) in t.fields {
-        w.line(&format!("/// {doc}"));
-        w.line(&format!("pub {name}: {ty},"));
-    }
-    w.close("}");
+    w.line("/// Number of drive inputs `w` (muscle activations, then motor currents).");
+    w.line(&format!("pub const NU: usize = {};", inputs.len()));
     w.blank();
-    w.line(&format!("/// Number of {snake}s."));
-    w.line(&format!("pub const {count}: usize = {};", t.rows.len()));
-    w.blank();
-    w.line(&format!(
-        "/// {kind} indices into `{}S_F64` and `{}S_F32`.",
-        kind.to_uppercase(),
-        kind.to_uppercase()
-    ));
-    w.open(&format!("pub mod {snake} {{"));
-    for (i, (name, _)) in t.rows.iter().enumerate() {
+    w.line("/// The entry of the drive-input vector `w` each muscle and motor reads.");
+    w.open("pub mod input {");
+    for (k, name) in inputs.iter().enumerate() {
         w.line(&format!("/// `{name}`."));
-        w.line(&format!("pub const {}: usize = {i};", constant_name(name)));
+        w.line(&format!("pub const {}: usize = {k};", constant_name(name)));
     }
     w.close("}");
     w.blank();
-    w.open(&format!("macro_rules! {snake}s {{"));
+    w.line("use rodyn::drive::{JointMotor, LinearDamper, LinearSpring, NonlinearSpring, Path, ThelenMuscle, ThelenParameters};");
+    if !model.planar {
+        w.line("use rodyn::spatial::Spatial;");
+    }
+    w.blank();
+    for f in &model.force_elements {
+        let k = f.path.len();
+        let names = f
+            .path
+            .iter()
+            .map(|&e| format!("`{}`", model.endpoints[e].name))
+            .collect::<Vec<_>>();
+        let input = inputs.iter().position(|n| *n == f.name);
+        for s in ["f64", "f32"] {
+            let points = f
+                .path
+                .iter()
+                .map(|&e| {
+                    format!(
+                        "ENDPOINTS_{}[endpoint::{}]",
+                        s.to_uppercase(),
+                        constant_name(&model.endpoints[e].name)
+                    )
+                })
+                .collect::<Vec<_>>();
+            let path = format!("Path::new([{}])", points.join(", "));
+            let (ty, value, doc) = match f.law {
+                ForceLaw::Spring {
+                    stiffness,
+                    rest_length,
+                    cubic_stiffness: 0.0,
+                } => (
+                    format!("LinearSpring<{s}, {geometry}, {k}>"),
+                    format!("LinearSpring::new({path}, {}, {})", literal(stiffness), literal(rest_length)),
+                    format!("k = {stiffness} N/m, rest length {rest_length} m"),
+                ),
+                ForceLaw::Spring {
+                    stiffness,
+                    rest_length,
+                    cubic_stiffness,
+                } => (
+                    format!("NonlinearSpring<{s}, {geometry}, {k}>"),
+                    format!(
+                        "NonlinearSpring::new({path}, {}, {}, {})",
+                        literal(stiffness),
+                        literal(cubic_stiffness),
+                        literal(rest_length)
+                    ),
+                    format!("k = {stiffness} N/m, k3 = {cubic_stiffness} N/m³, rest length {rest_length} m"),
+                ),
+                ForceLaw::Damper { damping } => (
+                    format!("LinearDamper<{s}, {geometry}, {k}>"),
+                    format!("LinearDamper::new({path}, {})", literal(damping)),
+                    format!("d = {damping} N s/m"),
+                ),
+                ForceLaw::Muscle {
+                    max_isometric_force,
+                    optimal_fiber_length,
+                    tendon_slack_length,
+                    pennation_angle,
+                    max_contraction_velocity,
+                    activation_time_constant,
+                    deactivation_time_constant,
+                } => (
+                    format!("ThelenMuscle<{s}, {geometry}, {k}>"),
+                    format!(
+                        "ThelenMuscle::new({path}, ThelenParameters {{ max_contraction_velocity: {}, activation_time_constant: {}, deactivation_time_constant: {}, ..ThelenParameters::<{s}>::thelen_2003({}, {}, {}, {}) }}, input::{})",
+                        literal(max_contraction_velocity),
+                        literal(activation_time_constant),
+                        literal(deactivation_time_constant),
+                        literal(max_isometric_force),
+                        literal(optimal_fiber_length),
+                        literal(tendon_slack_length),
+                        literal(pennation_angle),
+                        constant_name(&f.name)
+                    ),
+                    format!("F_max = {max_isometric_force} N, l_opt = {optimal_fiber_length} m, l_slack = {tendon_slack_length} m, input {}", input.unwrap_or(0)),
+                ),
+            };
+            w.line(&format!(
+                "/// `{}`: {} along {} ({doc}), in `{s}`.",
+                f.name,
+                f.law.kind(),
+                names.join(" → ")
+            ));
+            w.line(&format!(
+                "pub const {}_{}: {ty} = {value};",
+                constant_name(&f.name),
+                s.to_uppercase()
+            ));
+        }
+        w.blank();
+    }
+    for m in &model.motors {
+        for s in ["f64", "f32"] {
+            w.line(&format!(
+                "/// `{}` on joint `{}`: gear ratio {}, k_t = {} N m/A, rotor inertia {} kg m², in `{s}`.",
+                m.name, model.bodies[m.body].joint_name, m.gear_ratio, m.torque_constant, m.rotor_inertia
+            ));
+            w.line(&format!(
+                "pub const {}_{}: JointMotor<{s}> = JointMotor::new(v::{}, input::{}, {}, {}, {});",
+                constant_name(&m.name),
+                s.to_uppercase(),
+                constant_name(&model.bodies[m.body].joint_name),
+                constant_name(&m.name),
+                literal(m.gear_ratio),
+                literal(m.torque_constant),
+                literal(m.rotor_inertia)
+            ));
+        }
+        w.blank();
+    }
+    if model.contacts.is_empty() {
+        return;
+    }
+    w.line("/// A compliant ground contact at an endpoint (parameters as in the model file, SI units).");
+    w.line("#[derive(Clone, Copy, Debug, PartialEq)]");
+    w.open("pub struct Contact<S> {");
+    for (field, ty, doc) in [
+        (
+            "endpoint",
+            "usize",
+            "The endpoint in contact (index into `ENDPOINTS_*`).",
+        ),
+        ("stiffness", "S", "Normal stiffness, N/m."),
+        ("damping", "S", "Normal damping, N s/m."),
+        ("friction", "S", "Coulomb friction coefficient."),
+    ] {
+        w.line(&format!("/// {doc}"));
+        w.line(&format!("pub {field}: {ty},"));
+    }
+    w.close("}");
+    w.blank();
+    w.line("/// Number of contacts.");
+    w.line(&format!("pub const NC: usize = {};", model.contacts.len()));
+    w.line("/// Contact indices into `CONTACTS_F64` and `CONTACTS_F32`.");
+    w.open("pub mod contact {");
+    for (i, c) in model.contacts.iter().enumerate() {
+        w.line(&format!(
+            "/// `{}` at `{}`.",
+            c.name, model.endpoints[c.endpoint].name
+        ));
+        w.line(&format!(
+            "pub const {}: usize = {i};",
+            constant_name(&c.name)
+        ));
+    }
+    w.close("}");
+    w.blank();
+    w.open("macro_rules! contacts {");
     w.open("($S:ty) => {");
     w.open("[");
-    for (name, values) in &t.rows {
-        w.line(&format!("// {name}"));
-        w.open(&format!("{kind}::<$S> {{"));
-        for ((field, _, _), value) in t.fields.iter().zip(values) {
-            w.line(&format!("{field}: {value},"));
-        }
-        w.close("},");
+    for c in &model.contacts {
+        w.line(&format!(
+            "Contact::<$S> {{ endpoint: endpoint::{}, stiffness: {}, damping: {}, friction: {} }},",
+            constant_name(&model.endpoints[c.endpoint].name),
+            literal(c.stiffness),
+            literal(c.damping),
+            literal(c.friction)
+        ));
     }
     w.close("]");
     w.close("};");
     w.close("}");
-    w.blank();
     for s in ["f64", "f32"] {
-        w.line(&format!("/// The {snake}s in `{s}`."));
+        w.line(&format!("/// The contacts in `{s}`."));
         w.line(&format!(
-            "pub const {}S_{}: [{kind}<{s}>; {count}] = {snake}s!({s});",
-            kind.to_uppercase(),
+            "pub const CONTACTS_{}: [Contact<{s}>; NC] = contacts!({s});",
             s.to_uppercase()
         ));
     }

@@ -123,25 +123,24 @@ pub struct EndpointDef {
     pub location: Location,
 }
 
-/// What pulls along a force element's path.
+/// What pulls along a force element's path (the laws of `rodyn::drive`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum ForceLaw {
-    /// A linear spring: tension `k (l - l0)` when stretched, with an optional
-    /// linear damping `d l̇`.
+    /// A spring: tension `k (l - l0) + k3 (l - l0)³`.
     Spring {
         /// Stiffness k, N/m.
         stiffness: f64,
         /// Rest length l0, m.
         rest_length: f64,
-        /// Damping d, N s/m.
-        damping: f64,
+        /// Cubic stiffness k3, N/m³ (0: a linear spring).
+        cubic_stiffness: f64,
     },
     /// A linear damper: tension `d l̇`.
     Damper {
         /// Damping d, N s/m.
         damping: f64,
     },
-    /// A Hill-type muscle-tendon unit.
+    /// A Hill-type muscle with a rigid tendon (Thelen 2003).
     Muscle {
         /// Maximum isometric force, N.
         max_isometric_force: f64,
@@ -151,8 +150,12 @@ pub enum ForceLaw {
         tendon_slack_length: f64,
         /// Pennation angle at optimal fibre length, rad.
         pennation_angle: f64,
-        /// Maximum contraction velocity, m/s.
+        /// Maximum contraction velocity, optimal fibre lengths per second.
         max_contraction_velocity: f64,
+        /// Activation time constant, s.
+        activation_time_constant: f64,
+        /// Deactivation time constant, s.
+        deactivation_time_constant: f64,
     },
 }
 

@@ -29,6 +29,7 @@ pub mod diagnostic;
 pub mod geometry;
 pub mod names;
 pub mod physics;
+pub mod rodyn_file;
 pub mod urdf;
 
 pub use description::ModelDescription;
@@ -63,6 +64,7 @@ pub fn load(path: &Path, options: LoadOptions) -> diagnostic::Result<ModelDescri
                 floating_base: options.floating_base,
             },
         ),
+        Some("toml") => rodyn_file::read_rodyn_file(path, &text),
         other => Err(Diagnostic::error(
             Location::start_of(path),
             format!(

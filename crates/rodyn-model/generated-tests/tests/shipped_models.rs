@@ -1,0 +1,177 @@
+//! Every model shipped in `models/`, compiled by the build script: it
+//! validates, its sizes and names are what the file says, and its numbers
+//! give the dynamics they should.
+
+use rodyn::algorithm::rnea::gravity_torques;
+use rodyn::spatial::{Inertia, Sym3, Vec3};
+use rodyn::Data;
+use rodyn_model_generated_tests::{
+    aibo, gait_planar, panda, panda_with_motors, pendulum, solo12_with_contacts, two_link_muscles,
+};
+
+#[test]
+fn every_shipped_model_validates_in_both_scalar_types() {
+    pendulum::MODEL_F64.validate().unwrap();
+    pendulum::MODEL_F32.validate().unwrap();
+    two_link_muscles::MODEL_F64.validate().unwrap();
+    two_link_muscles::MODEL_F32.validate().unwrap();
+    gait_planar::MODEL_F64.validate().unwrap();
+    gait_planar::MODEL_F32.validate().unwrap();
+    aibo::MODEL_F64.validate().unwrap();
+    aibo::MODEL_F32.validate().unwrap();
+    panda_with_motors::MODEL_F64.validate().unwrap();
+    panda_with_motors::MODEL_F32.validate().unwrap();
+    solo12_with_contacts::MODEL_F64.validate().unwrap();
+    solo12_with_contacts::MODEL_F32.validate().unwrap();
+}
+
+#[test]
+fn sizes_and_names_follow_the_files() {
+    assert_eq!(
+        (pendulum::NB, pendulum::NQ, pendulum::NV, pendulum::NE),
+        (1, 1, 1, 2)
+    );
+    assert_eq!(
+        (
+            two_link_muscles::NB,
+            two_link_muscles::NV,
+            two_link_muscles::NU
+        ),
+        (2, 2, 4)
+    );
+    // Eight segments, seven revolute joints on a planar floating pelvis.
+    assert_eq!(
+        (gait_planar::NB, gait_planar::NQ, gait_planar::NV),
+        (8, 10, 10)
+    );
+    assert_eq!(gait_planar::v::SACROILIAC, 3);
+    // Floating base (7 + 6) and three joints per leg.
+    assert_eq!((aibo::NB, aibo::NQ, aibo::NV, aibo::NC), (13, 19, 18, 4));
+    assert_eq!(
+        aibo::ENDPOINTS_F64[aibo::endpoint::HR_FOOT].body,
+        Some(aibo::body::HR_SHANK)
+    );
+    // The Panda's merged links are endpoints on panda_link7.
+    let tcp = panda_with_motors::ENDPOINTS_F64[panda_with_motors::endpoint::PANDA_HAND_TCP];
+    assert_eq!(tcp.body, Some(panda_with_motors::body::PANDA_LINK7));
+    assert_eq!(
+        panda_with_motors::MOTOR4_F64.dof,
+        panda_with_motors::v::PANDA_JOINT4
+    );
+    assert_eq!(solo12_with_contacts::NC, 4);
+}
+
+#[test]
+fn the_prosthetic_side_is_marked() {
+    let socket = gait_planar::ENDPOINTS_F64[gait_planar::endpoint::SOCKET];
+    assert_eq!(socket.body, Some(gait_planar::body::R_THIGH));
+    assert_eq!(
+        gait_planar::MODEL_F64.parent(gait_planar::body::R_SHANK),
+        Some(gait_planar::body::R_THIGH)
+    );
+}
+
+#[test]
+fn gait_model_masses_follow_winters_table() {
+    // Winter (2009) Table 4.1 fractions of 75 kg, summing to the whole body.
+    let m = gait_planar::MODEL_F64.total_mass();
+    assert!((m - 75.0).abs() < 1e-9, "{m}");
+    let thigh = gait_planar::MODEL_F64.inertia(gait_planar::body::L_THIGH);
+    assert!((thigh.mass - 7.5).abs() < 1e-12);
+    // Radius of gyration 0.1385 m: I = m r².
+    assert!((thigh.izz - 7.5 * 0.1385 * 0.1385).abs() < 1e-12);
+}
+
+#[test]
+fn aibo_is_about_one_and_a_half_kilograms_in_millimetres() {
+    // Lengths in the file are mm; the model is in metres.
+    let m = aibo::MODEL_F64.total_mass();
+    assert!((m - 1.6).abs() < 1e-9, "{m}");
+    let knee = aibo::MODEL_F64.placement(aibo::body::FL_SHANK);
+    assert!((knee.trans.z + 0.0695).abs() < 1e-15);
+    let foot = aibo::ENDPOINTS_F64[aibo::endpoint::FL_FOOT];
+    assert!((foot.position.z + 0.076).abs() < 1e-15);
+}
+
+/// The generated two-link robot is the hand-written one in
+/// `rodyn::drive::muscle_robot`: same placements, inertias and muscles.
+#[test]
+fn two_link_robot_matches_rodyns_muscle_robot() {
+    let reference = rodyn::drive::muscle_robot::model::<f64>();
+    let generated = two_link_muscles::MODEL_F64;
+    for i in 0..2 {
+        let (a, b) = (generated.placement(i), reference.placement(i));
+        assert!((a.cos - b.cos).abs() < 1e-15 && (a.sin - b.sin).abs() < 1e-15);
+        assert!((a.trans.x - b.trans.x).abs() < 1e-15 && (a.trans.y - b.trans.y).abs() < 1e-15);
+        let (a, b) = (generated.inertia(i), reference.inertia(i));
+        assert!((a.mass - b.mass).abs() < 1e-15 && (a.izz - b.izz).abs() < 1e-15);
+        assert!((a.com.x - b.com.x).abs() < 1e-15 && (a.com.y - b.com.y).abs() < 1e-15);
+    }
+    let muscles = rodyn::drive::muscle_robot::muscles::<f64>();
+    let generated = [
+        two_link_muscles::M1_F64,
+        two_link_muscles::M2_F64,
+        two_link_muscles::M3_F64,
+        two_link_muscles::M4_F64,
+    ];
+    for (g, r) in generated.iter().zip(&muscles) {
+        assert_eq!(g.path.points, r.path.points);
+        assert_eq!(g.params, r.params);
+        assert_eq!(g.input, r.input);
+    }
+}
+
+/// On-line parameter change: a payload on the Panda's last body changes the
+/// gravity torques by exactly the payload's weight times its lever arms.
+#[test]
+fn a_payload_changes_the_gravity_torques_by_its_weight() {
+    let mut model = panda::MODEL_F64;
+    let mut data = Data::new();
+    let q = [0.3, -0.5, 0.2, -1.8, 0.1, 1.4, 0.6];
+    let before = *gravity_torques(&model, &mut data, &q).unwrap();
+
+    // 1.5 kg point payload 0.1 m beyond the flange on panda_link7's z axis.
+    let last = panda::body::PANDA_LINK7;
+    let payload_mass = 1.5;
+    let payload_at = Vec3::new(0.0, 0.0, 0.107 + 0.1);
+    let old = *model.inertia(last);
+    let payload = Inertia::new(payload_mass, payload_at, Sym3::ZERO);
+    use rodyn::space::BodyInertia;
+    model.set_inertia(last, old.combine(&payload)).unwrap();
+    let after = *gravity_torques(&model, &mut data, &q).unwrap();
+
+    // Expected change: tau_j += -(z_j x (p - o_j)) . (m g) for each revolute
+    // joint j, with z_j the world axis and o_j the world origin of joint j.
+    use rodyn::space::RigidTransform;
+    let g = Vec3::new(0.0, 0.0, -9.81);
+    let p = data.o_m_i[last].act_point(&payload_at);
+    for j in 0..panda::NV {
+        let x = &data.o_m_i[j];
+        let axis = x.rot.column(2); // every Panda joint turns about its z
+        let lever = Vec3::new(p.x - x.trans.x, p.y - x.trans.y, p.z - x.trans.z);
+        let expected = -axis.cross(&lever).dot(&g.scale(payload_mass));
+        let got = after[j] - before[j];
+        assert!(
+            (got - expected).abs() < 1e-9,
+            "joint {j}: {got} vs {expected}"
+        );
+    }
+    // The heaviest change is real: at least some N m on the shoulder.
+    assert!((after[1] - before[1]).abs() > 0.5);
+    // An impossible payload is refused and leaves the model unchanged.
+    let negative = Inertia::new(-1.0, payload_at, Sym3::ZERO);
+    assert!(model.set_inertia(last, negative).is_err());
+    let again = *gravity_torques(&model, &mut data, &q).unwrap();
+    assert_eq!(again, after);
+}
+
+#[test]
+fn pendulum_endpoints_and_spring() {
+    let tip = pendulum::ENDPOINTS_F64[pendulum::endpoint::TIP];
+    assert_eq!(tip.body, Some(pendulum::body::LINK));
+    assert_eq!(tip.position, Vec3::new(0.0, -1.0, 0.0));
+    let anchor = pendulum::ENDPOINTS_F64[pendulum::endpoint::ANCHOR];
+    assert_eq!(anchor.body, None);
+    assert_eq!(pendulum::RETURN_SPRING_F64.stiffness, 20.0);
+    assert_eq!(pendulum::RETURN_SPRING_F32.rest_length, 0.3_f32);
+}
