@@ -28,6 +28,7 @@ pub struct Model<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G
     placements: [G::Transform<S>; NB],
     inertias: [G::Inertia<S>; NB],
     gravity: G::Motion<S>,
+    armature: [S; NV],
 }
 
 /// Standard gravity, 9.80665 m/s².
@@ -79,6 +80,7 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, 
             placements,
             inertias,
             gravity,
+            armature: [S::ZERO; NV],
         }
     }
 }
@@ -102,6 +104,7 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
             placements,
             inertias,
             gravity,
+            armature: [S::ZERO; NV],
         }
     }
 
@@ -169,6 +172,50 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
         self.placements[i] = placement;
         Ok(())
     }
+    /// The armature of each velocity coordinate: an inertia (kg m² or kg)
+    /// added to the diagonal of the mass matrix, such as a motor rotor's
+    /// reflected inertia `N² J_r`
+    /// ([`JointMotor::reflected_inertia`](crate::drive::JointMotor::reflected_inertia)).
+    /// Zero unless set. CRBA adds it to `M`, ABA to each joint's `D`, RNEA
+    /// adds `armature · q̈` to `τ`, and the kinetic energy counts it.
+    #[must_use]
+    pub const fn armature(&self) -> &[S; NV] {
+        &self.armature
+    }
+    /// The model with the per-coordinate `armature` (usable in `const`).
+    #[must_use]
+    pub const fn with_armature(mut self, armature: [S; NV]) -> Self {
+        self.armature = armature;
+        self
+    }
+    /// Changes the armature of velocity coordinate `dof`.
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`] for a non-finite value, [`Error::InvalidModel`]
+    /// with [`ModelProblem::InvalidInertia`] for a negative one (the body
+    /// index reported is the joint's), and
+    /// [`Error::InvalidDrive`] for a `dof` out of range.
+    pub fn set_armature(&mut self, dof: usize, armature: S) -> Result<()> {
+        if dof >= NV {
+            return Err(Error::InvalidDrive {
+                problem: crate::error::DriveProblem::DofOutOfRange { dof },
+            });
+        }
+        if !armature.is_finite() {
+            return Err(Error::NonFinite {
+                quantity: Quantity::ModelParameter,
+                index: dof,
+            });
+        }
+        if armature.to_f64() < 0.0 {
+            return Err(Error::InvalidModel {
+                body: self.topology.body_of_v[dof],
+                problem: ModelProblem::InvalidInertia,
+            });
+        }
+        self.armature[dof] = armature;
+        Ok(())
+    }
     /// Changes gravity (world frame).
     ///
     /// # Errors
@@ -222,6 +269,7 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
             placements: core::array::from_fn(|i| G::cast_transform(&self.placements[i])),
             inertias: core::array::from_fn(|i| G::cast_inertia(&self.inertias[i])),
             gravity: G::cast_motion(&self.gravity),
+            armature: core::array::from_fn(|k| T::from_f64(self.armature[k].to_f64())),
         })
     }
 

@@ -92,7 +92,8 @@ pub(crate) fn backward_pass<
             let d = {
                 let mut d = [S::ZERO];
                 joint.project_force(&data.u_cols[iv], &mut d);
-                d[0]
+                // The armature adds to D = Sᵀ I^A S (Pinocchio's convention).
+                d[0] + model.armature()[iv]
             };
             check_pivot(i, d, data.ia[i].trace())?;
             data.d_inv[iv][0] = S::ONE / d;
@@ -101,6 +102,7 @@ pub(crate) fn backward_pass<
                 i,
                 joint,
                 &data.u_cols[iv..iv + nv],
+                &model.armature()[iv..iv + nv],
                 data.ia[i].trace(),
                 &mut data.d_inv[iv..iv + nv],
             )?;
@@ -191,6 +193,7 @@ fn invert_joint_d<S: Scalar, G: Space, J: JointModel<S, G>>(
     i: usize,
     joint: &J,
     u_cols: &[G::Force<S>],
+    armature: &[S],
     scale: S,
     d_inv: &mut [[S; MAX_JOINT_NV]],
 ) -> Result<()> {
@@ -202,6 +205,7 @@ fn invert_joint_d<S: Scalar, G: Space, J: JointModel<S, G>>(
         for r in 0..n {
             l[r][k] = column[r];
         }
+        l[k][k] += armature[k];
     }
     // In-place Cholesky: lower triangle of l becomes L with D = L Lᵀ.
     for k in 0..n {

@@ -72,5 +72,9 @@ pub fn crba<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
             }
         }
     }
+    // Rotor (armature) inertias sit on the diagonal only.
+    for (k, armature) in model.armature().iter().enumerate() {
+        data.mass_matrix[k][k] += *armature;
+    }
     Ok(&data.mass_matrix)
 }

@@ -25,6 +25,9 @@ pub fn kinetic_energy<S: Scalar, const NB: usize, const NQ: usize, const NV: usi
     for i in 0..NB {
         twice += data.v[i].dot(&model.inertia(i).mul_motion(&data.v[i]));
     }
+    for (armature, v) in model.armature().iter().zip(v) {
+        twice += *armature * *v * *v;
+    }
     Ok(twice * S::from_f64(0.5))
 }
 

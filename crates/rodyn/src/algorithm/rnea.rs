@@ -50,6 +50,9 @@ pub fn rnea<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
     velocity_pass(model, data, q, v);
     forward_force_pass(model, data, a, f_ext);
     backward_force_pass(model, data);
+    for ((tau, armature), a) in data.tau.iter_mut().zip(model.armature()).zip(a) {
+        *tau += *armature * *a;
+    }
     Ok(&data.tau)
 }
 
