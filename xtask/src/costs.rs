@@ -1,0 +1,237 @@
+//! The cost and size tables of `docs/sections/firmware.md`.
+//!
+//! `cargo xtask costs` runs the `cost_probe` firmware (instructions per call
+//! counted with QEMU's `-icount` and SysTick, stack bytes from a painted
+//! stack) and measures each example's image with `llvm-size`, then rewrites
+//! the tables between the `<!-- …:begin -->` / `<!-- …:end -->` markers of
+//! the section and `firmware/expected/sizes.txt`. `cargo xtask test` compares
+//! the pendulum image with that file: a scene pays only for what it models,
+//! so the pendulum must not grow when the library gains contacts, muscles or
+//! floating bases it does not use.
+
+use crate::firmware::{self, Example, EXAMPLES};
+use crate::{setup, shell};
+use anyhow::{bail, Context, Result};
+use std::collections::BTreeMap;
+use std::fmt::Write;
+use std::path::PathBuf;
+use std::process::Command;
+
+/// The example whose size must not grow.
+const SIZE_GUARDED: &str = "pendulum";
+/// Growth of its flash image accepted without failing (fraction): room for
+/// changes to the algorithms it does use, none for features it does not.
+const SIZE_TOLERANCE: f64 = 0.01;
+
+/// One image's sections as `llvm-size` (Berkeley format) reports them.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Size {
+    /// Code, read-only data and the vector table (bytes).
+    text: u64,
+    /// Initialised statics: in flash and in RAM (bytes).
+    data: u64,
+    /// Zeroed statics (bytes).
+    bss: u64,
+}
+
+impl Size {
+    fn flash(self) -> u64 {
+        self.text + self.data
+    }
+    fn ram(self) -> u64 {
+        self.data + self.bss
+    }
+}
+
+fn measure(example: &Example) -> Result<Size> {
+    let llvm_size = setup::llvm_size()?;
+    let out = setup::output(Command::new(llvm_size).arg("-B").arg(firmware::elf(example)))?;
+    let numbers: Vec<u64> = out
+        .lines()
+        .nth(1)
+        .context("llvm-size printed no sizes")?
+        .split_whitespace()
+        .take(3)
+        .map(str::parse)
+        .collect::<Result<_, _>>()
+        .context("llvm-size output")?;
+    Ok(Size {
+        text: numbers[0],
+        data: numbers[1],
+        bss: numbers[2],
+    })
+}
+
+fn sizes_path() -> PathBuf {
+    firmware::dir().join("expected").join("sizes.txt")
+}
+
+fn read_sizes() -> Result<BTreeMap<String, Size>> {
+    let text = std::fs::read_to_string(sizes_path())
+        .with_context(|| format!("cannot read {}", sizes_path().display()))?;
+    let mut sizes = BTreeMap::new();
+    for line in text.lines().filter(|l| !l.starts_with('#') && !l.trim().is_empty()) {
+        let fields: Vec<&str> = line.split_whitespace().collect();
+        let value = |key: &str| -> Result<u64> {
+            fields
+                .iter()
+                .find_map(|f| f.strip_prefix(key)?.strip_prefix('='))
+                .with_context(|| format!("sizes.txt: no {key} in `{line}`"))?
+                .parse()
+                .with_context(|| format!("sizes.txt: bad {key} in `{line}`"))
+        };
+        let size = Size {
+            text: value("text")?,
+            data: value("data")?,
+            bss: value("bss")?,
+        };
+        sizes.insert(fields[0].to_string(), size);
+    }
+    Ok(sizes)
+}
+
+/// Compares every image with `firmware/expected/sizes.txt`; fails when the
+/// guarded pendulum's flash grew beyond the tolerance.
+pub fn check_sizes() -> Result<()> {
+    let recorded = read_sizes()?;
+    let mut failure = None;
+    for example in EXAMPLES {
+        let now = measure(example)?;
+        let Some(before) = recorded.get(example.name) else {
+            println!("size {}: flash {} B (not recorded)", example.name, now.flash());
+            continue;
+        };
+        let growth = now.flash() as f64 / before.flash() as f64 - 1.0;
+        println!(
+            "size {}: flash {} B (recorded {} B, {:+.1} %), RAM {} B",
+            example.name,
+            now.flash(),
+            before.flash(),
+            100.0 * growth,
+            now.ram()
+        );
+        if example.name == SIZE_GUARDED && growth > SIZE_TOLERANCE {
+            failure = Some(format!(
+                "the {SIZE_GUARDED} image grew from {} to {} B of flash (more than {} %): \
+                 it pays for something it does not model (`cargo xtask costs` records \
+                 an intended change)",
+                before.flash(),
+                now.flash(),
+                100.0 * SIZE_TOLERANCE
+            ));
+        }
+    }
+    match failure {
+        Some(message) => bail!(message),
+        None => Ok(()),
+    }
+}
+
+/// One row of the cost probe's output.
+struct Cost {
+    model: String,
+    algorithm: String,
+    min: u64,
+    max: u64,
+    stack: String,
+}
+
+/// Reads `cost model=… algorithm=… min=… max=… stack=…` lines.
+fn parse_costs(lines: &[String]) -> Result<Vec<Cost>> {
+    let mut costs = Vec::new();
+    for line in lines.iter().filter(|l| l.starts_with("cost ")) {
+        let field = |key: &str| -> Result<&str> {
+            line.split_whitespace()
+                .find_map(|f| f.strip_prefix(key)?.strip_prefix('='))
+                .with_context(|| format!("cost line without {key}: `{line}`"))
+        };
+        costs.push(Cost {
+            model: field("model")?.to_string(),
+            algorithm: field("algorithm")?.to_string(),
+            min: field("min")?.parse()?,
+            max: field("max")?.parse()?,
+            stack: field("stack")?.to_string(),
+        });
+    }
+    if costs.is_empty() {
+        bail!("the cost probe printed no cost lines");
+    }
+    Ok(costs)
+}
+
+/// Runs the probe and the size measurements and rewrites the tables.
+pub fn regenerate() -> Result<()> {
+    setup::ensure_target()?;
+    setup::ensure_qemu()?;
+    firmware::build()?;
+    let probe = firmware::example("cost_probe")?;
+    let outcome = firmware::run(probe, |line| println!("{line}"))?;
+    if outcome.exit_code != 0 {
+        bail!("cost_probe exited with code {}", outcome.exit_code);
+    }
+    let costs = parse_costs(&outcome.lines)?;
+
+    let mut cost_table = String::from(
+        "| model | algorithm | instructions per call (min – max) | stack bytes per call |\n\
+         |---|---|---:|---:|\n",
+    );
+    for c in &costs {
+        writeln!(
+            cost_table,
+            "| {} | {} | {} – {} | {} |",
+            c.model, c.algorithm, c.min, c.max, c.stack
+        )?;
+    }
+
+    let mut size_table = String::from(
+        "| example | flash: text + data (bytes) | RAM: data + bss (bytes) | text | data | bss |\n\
+         |---|---:|---:|---:|---:|---:|\n",
+    );
+    let mut sizes_file = String::from(
+        "# Image sizes (bytes, llvm-size -B) recorded by `cargo xtask costs`.\n\
+         # `cargo xtask test` fails when the pendulum's flash grows by more than 1 %.\n",
+    );
+    for example in EXAMPLES {
+        let s = measure(example)?;
+        writeln!(
+            size_table,
+            "| `{}` | {} | {} | {} | {} | {} |",
+            example.name,
+            s.flash(),
+            s.ram(),
+            s.text,
+            s.data,
+            s.bss
+        )?;
+        writeln!(
+            sizes_file,
+            "{} text={} data={} bss={}",
+            example.name, s.text, s.data, s.bss
+        )?;
+    }
+    std::fs::write(sizes_path(), sizes_file)?;
+
+    let doc_path = shell::root().join("docs/sections/firmware.md");
+    let doc = std::fs::read_to_string(&doc_path)
+        .with_context(|| format!("cannot read {}", doc_path.display()))?;
+    let doc = replace_between(&doc, "costs", &cost_table)?;
+    let doc = replace_between(&doc, "sizes", &size_table)?;
+    std::fs::write(&doc_path, doc)?;
+    println!(
+        "wrote {} and {}",
+        doc_path.display(),
+        sizes_path().display()
+    );
+    Ok(())
+}
+
+/// Replaces the text between `<!-- name:begin -->` and `<!-- name:end -->`.
+fn replace_between(doc: &str, name: &str, content: &str) -> Result<String> {
+    let (begin, end) = (format!("<!-- {name}:begin -->"), format!("<!-- {name}:end -->"));
+    let start = doc.find(&begin).with_context(|| format!("no `{begin}` marker"))? + begin.len();
+    let stop = doc[start..]
+        .find(&end)
+        .with_context(|| format!("no `{end}` marker"))?
+        + start;
+    Ok(format!("{}\n{}{}", &doc[..start], content, &doc[stop..]))
+}

@@ -1,0 +1,205 @@
+//! Building the firmware, running its examples in QEMU, checking their logs.
+
+use crate::defmt_log::LogDecoder;
+use crate::setup::TARGET;
+use crate::{expected, shell};
+use anyhow::{bail, Context, Result};
+use object::{Object, ObjectSymbol};
+use std::io::Read;
+use std::path::PathBuf;
+use std::process::{Command, Stdio};
+
+/// One firmware example (a binary in `firmware/src/bin/`).
+#[derive(Debug)]
+pub struct Example {
+    /// Binary name.
+    pub name: &'static str,
+    /// What it shows.
+    pub about: &'static str,
+}
+
+/// What `cargo xtask run` runs without an argument.
+pub const FLAGSHIP: &str = "arm_control";
+
+/// Every example, each checked by `cargo xtask test`.
+pub const EXAMPLES: &[Example] = &[
+    Example {
+        name: "arm_control",
+        about: "computed-torque control of a 7-DoF arm through embedded-hal drivers",
+    },
+    Example {
+        name: "pendulum",
+        about: "the seed pendulum simulated in real time",
+    },
+    Example {
+        name: "cost_probe",
+        about: "instructions and stack bytes per call, per model and algorithm",
+    },
+    Example {
+        name: "agreement",
+        about: "RNEA and ABA on seeded random states, for the host to recompute in f64",
+    },
+];
+
+/// Longest a run may take before QEMU is stopped (s).
+const QEMU_TIMEOUT_S: u32 = 300;
+
+/// The firmware directory (its `.cargo/config.toml` selects the target).
+pub fn dir() -> PathBuf {
+    shell::root().join("firmware")
+}
+
+/// The example by name.
+pub fn example(name: &str) -> Result<&'static Example> {
+    EXAMPLES.iter().find(|e| e.name == name).with_context(|| {
+        let names: Vec<_> = EXAMPLES.iter().map(|e| e.name).collect();
+        format!("no firmware example `{name}`; examples: {}", names.join(", "))
+    })
+}
+
+/// The example's ELF after [`build`].
+pub fn elf(example: &Example) -> PathBuf {
+    shell::root()
+        .join("target")
+        .join(TARGET)
+        .join("release")
+        .join(example.name)
+}
+
+/// Builds every example in release mode.
+pub fn build() -> Result<()> {
+    shell::cargo_in(dir(), &["build", "--release", "--bins"])
+}
+
+/// How a run ended.
+pub struct Outcome {
+    /// QEMU's exit code: the firmware's semihosting exit code.
+    pub exit_code: i32,
+    /// The decoded log.
+    pub lines: Vec<String>,
+}
+
+/// Runs `example` in QEMU (mps2-an386, Cortex-M4F) and decodes its log,
+/// passing each line to `on_line` as it arrives.
+///
+/// `-icount shift=6` makes the emulation deterministic: every instruction
+/// advances virtual time by 64 ns, so SysTick-based timings and the
+/// real-time pacing of the examples do not depend on the host's load.
+pub fn run(example: &Example, mut on_line: impl FnMut(&str)) -> Result<Outcome> {
+    let elf_path = elf(example);
+    let elf = std::fs::read(&elf_path)
+        .with_context(|| format!("cannot read {} (was it built?)", elf_path.display()))?;
+    let decoder = LogDecoder::from_elf(&elf)?;
+    let mut stream = decoder.stream();
+    let mut command = Command::new("timeout");
+    command
+        .arg(QEMU_TIMEOUT_S.to_string())
+        .args(["qemu-system-arm", "-machine", "mps2-an386", "-cpu", "cortex-m4"])
+        .args(["-nographic", "-monitor", "none", "-serial", "none"])
+        .args(["-icount", "shift=6"])
+        .args(["-semihosting-config", "enable=on,target=native", "-kernel"])
+        .arg(&elf_path)
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::inherit());
+    let mut child = command
+        .spawn()
+        .with_context(|| format!("cannot start {}", shell::describe(&command)))?;
+    let mut stdout = child.stdout.take().context("QEMU's stdout")?;
+    let mut lines = Vec::new();
+    let mut buffer = [0u8; 4096];
+    loop {
+        let n = stdout.read(&mut buffer).context("reading QEMU's output")?;
+        if n == 0 {
+            break;
+        }
+        stream.feed(&buffer[..n], &mut |line| {
+            on_line(&line);
+            lines.push(line);
+        });
+    }
+    let status = child.wait()?;
+    let exit_code = status.code().unwrap_or(-1);
+    if exit_code == 124 {
+        bail!("{} did not finish within {QEMU_TIMEOUT_S} s", example.name);
+    }
+    Ok(Outcome { exit_code, lines })
+}
+
+/// The checked-in expected log of `example`.
+pub fn expected_path(example: &Example) -> PathBuf {
+    dir().join("expected").join(format!("{}.log", example.name))
+}
+
+/// Where the last run's log is kept, for the host tests and for reading.
+pub fn last_log_path(example: &Example) -> PathBuf {
+    shell::root()
+        .join("target")
+        .join("firmware-logs")
+        .join(format!("{}.log", example.name))
+}
+
+/// Runs `example`, requires exit code 0 and a log that matches the expected one.
+pub fn run_and_compare(example: &Example) -> Result<()> {
+    let outcome = run(example, |_| {})?;
+    let log_path = last_log_path(example);
+    std::fs::create_dir_all(log_path.parent().expect("a log directory"))?;
+    std::fs::write(&log_path, outcome.lines.join("\n") + "\n")?;
+    if outcome.exit_code != 0 {
+        for line in &outcome.lines {
+            println!("  | {line}");
+        }
+        bail!("exit code {}", outcome.exit_code);
+    }
+    let expected_path = expected_path(example);
+    let expected = std::fs::read_to_string(&expected_path)
+        .with_context(|| format!("cannot read {}", expected_path.display()))?;
+    expected::compare(&expected, &outcome.lines).map_err(|difference| {
+        anyhow::anyhow!(
+            "log differs from {}: {difference}\n  (full log: {}; `cargo xtask bless` accepts it)",
+            expected_path.display(),
+            log_path.display()
+        )
+    })
+}
+
+/// Rewrites the expected log of `example` from a fresh run.
+pub fn bless(example: &Example) -> Result<()> {
+    let outcome = run(example, |_| {})?;
+    if outcome.exit_code != 0 {
+        bail!("{} exited with code {}: not blessed", example.name, outcome.exit_code);
+    }
+    let path = expected_path(example);
+    let old = std::fs::read_to_string(&path).unwrap_or_default();
+    std::fs::create_dir_all(dir().join("expected"))?;
+    std::fs::write(&path, expected::bless(&old, &outcome.lines))?;
+    println!("blessed {}", path.display());
+    Ok(())
+}
+
+/// Fails when the image links a heap allocator: rodyn and its examples must
+/// run without one.
+pub fn check_no_allocator(example: &Example) -> Result<()> {
+    let data = std::fs::read(elf(example))?;
+    let file = object::File::parse(&*data)?;
+    let allocator = file.symbols().find_map(|s| {
+        let name = s.name().ok()?;
+        (name.contains("__rust_alloc") || name.contains("__rg_alloc") || name == "malloc")
+            .then(|| name.to_string())
+    });
+    if let Some(symbol) = allocator {
+        bail!("{} links an allocator (symbol {symbol})", example.name);
+    }
+    Ok(())
+}
+
+/// Runs the host's f64 recomputation against the log of this run of the
+/// `agreement` example (plain `cargo test` checks the checked-in log).
+pub fn agreement_against_fresh_run() -> Result<()> {
+    let log = last_log_path(example("agreement")?);
+    let log = log.to_string_lossy();
+    shell::cargo_env(
+        &["test", "-p", "rodyn-host-tests", "--test", "firmware_agreement"],
+        &[("RODYN_AGREEMENT_LOG", log.as_ref())],
+    )
+}

@@ -1,0 +1,141 @@
+//! rodyn's project commands, run as `cargo xtask <command>` from anywhere in
+//! the repository (the alias lives in `.cargo/config.toml`).
+//!
+//! | command                  | does                                                              |
+//! |--------------------------|-------------------------------------------------------------------|
+//! | `run [example]`          | builds the firmware, runs `example` (default: the arm controller) in QEMU, prints the decoded defmt log |
+//! | `test`                   | host tests, the no_std core for thumbv7em, every firmware example in QEMU against its expected output, sizes, lint |
+//! | `lint`                   | rustfmt, clippy and rustdoc, warnings as errors, host and firmware |
+//! | `costs`                  | runs the cost probe, measures sizes, rewrites the tables in `docs/sections/firmware.md` and `firmware/expected/sizes.txt` |
+//! | `bless`                  | rewrites `firmware/expected/*.log` from fresh runs, keeping `*` wildcards |
+//!
+//! Each command installs what it needs when it is missing: the
+//! `thumbv7em-none-eabihf` target through rustup, QEMU through apt-get when
+//! running as root (otherwise it stops with the command to run).
+
+mod costs;
+mod defmt_log;
+mod expected;
+mod firmware;
+mod setup;
+mod shell;
+
+use anyhow::{bail, Result};
+use std::process::ExitCode;
+use std::time::Instant;
+
+const USAGE: &str = "usage: cargo xtask <run [example] | test | lint | costs | bless>";
+
+fn main() -> ExitCode {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let result = match args.first().map(String::as_str) {
+        Some("run") => run(args.get(1).map(String::as_str)),
+        Some("test") => test(),
+        Some("lint") => lint(),
+        Some("costs") => costs::regenerate(),
+        Some("bless") => bless(),
+        _ => {
+            eprintln!("{USAGE}");
+            return ExitCode::from(2);
+        }
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("xtask: error: {e:#}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// Builds the firmware and runs one example in QEMU with a live log.
+fn run(example: Option<&str>) -> Result<()> {
+    let name = example.unwrap_or(firmware::FLAGSHIP);
+    let example = firmware::example(name)?;
+    setup::ensure_target()?;
+    setup::ensure_qemu()?;
+    firmware::build()?;
+    println!("running {} in QEMU (mps2-an386, Cortex-M4F): {}", example.name, example.about);
+    let outcome = firmware::run(example, |line| println!("{line}"))?;
+    if outcome.exit_code != 0 {
+        bail!("{} exited with code {}", example.name, outcome.exit_code);
+    }
+    Ok(())
+}
+
+/// Everything CI checks.
+fn test() -> Result<()> {
+    let started = Instant::now();
+    setup::ensure_target()?;
+    setup::ensure_qemu()?;
+
+    shell::cargo(&["test", "--workspace"])?;
+    shell::cargo(&[
+        "build",
+        "-p",
+        "rodyn",
+        "--no-default-features",
+        "--features",
+        "libm",
+        "--target",
+        "thumbv7em-none-eabihf",
+    ])?;
+
+    firmware::build()?;
+    let mut failures = Vec::new();
+    for example in firmware::EXAMPLES {
+        firmware::check_no_allocator(example)?;
+        match firmware::run_and_compare(example) {
+            Ok(()) => println!("firmware {}: ok", example.name),
+            Err(e) => {
+                println!("firmware {}: FAILED: {e:#}", example.name);
+                failures.push(example.name);
+            }
+        }
+    }
+    firmware::agreement_against_fresh_run()?;
+    costs::check_sizes()?;
+    lint()?;
+
+    if !failures.is_empty() {
+        bail!("firmware examples failed: {}", failures.join(", "));
+    }
+    println!(
+        "xtask test: all checks passed in {:.0} s",
+        started.elapsed().as_secs_f64()
+    );
+    Ok(())
+}
+
+/// Formatting, clippy and rustdoc with warnings as errors.
+fn lint() -> Result<()> {
+    let started = Instant::now();
+    shell::cargo(&["fmt", "--all", "--check"])?;
+    shell::cargo_in(firmware::dir(), &["fmt", "--check"])?;
+    shell::cargo(&[
+        "clippy",
+        "--workspace",
+        "--all-targets",
+        "--",
+        "-D",
+        "warnings",
+    ])?;
+    shell::cargo_in(firmware::dir(), &["clippy", "--release", "--", "-D", "warnings"])?;
+    shell::cargo_env(
+        &["doc", "--workspace", "--no-deps"],
+        &[("RUSTDOCFLAGS", "-D warnings")],
+    )?;
+    println!("xtask lint: clean in {:.0} s", started.elapsed().as_secs_f64());
+    Ok(())
+}
+
+/// Rewrites the expected logs from fresh runs.
+fn bless() -> Result<()> {
+    setup::ensure_target()?;
+    setup::ensure_qemu()?;
+    firmware::build()?;
+    for example in firmware::EXAMPLES {
+        firmware::bless(example)?;
+    }
+    Ok(())
+}

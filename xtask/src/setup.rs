@@ -1,0 +1,75 @@
+//! Installing what the commands need, when it is missing.
+
+use crate::shell;
+use anyhow::{bail, Context, Result};
+use std::path::PathBuf;
+use std::process::Command;
+
+/// The firmware's target.
+pub const TARGET: &str = "thumbv7em-none-eabihf";
+
+/// Adds the thumbv7em target through rustup unless it is installed. The
+/// toolchain file lists it, but rustup does not install targets on its own
+/// when `RUSTUP_AUTO_INSTALL=0`.
+pub fn ensure_target() -> Result<()> {
+    let installed = output(Command::new("rustup").args(["target", "list", "--installed"]))
+        .context("rustup is needed to add the firmware target")?;
+    if installed.lines().any(|l| l.trim() == TARGET) {
+        return Ok(());
+    }
+    shell::run(Command::new("rustup").args(["target", "add", TARGET]))
+}
+
+/// Installs `qemu-system-arm` through apt-get when running as root;
+/// otherwise stops with the command to run.
+pub fn ensure_qemu() -> Result<()> {
+    if Command::new("qemu-system-arm")
+        .arg("--version")
+        .output()
+        .is_ok_and(|o| o.status.success())
+    {
+        return Ok(());
+    }
+    let is_root = output(Command::new("id").arg("-u")).is_ok_and(|uid| uid.trim() == "0");
+    if !is_root {
+        bail!(
+            "qemu-system-arm is missing; install it with:\n    \
+             sudo apt-get update && sudo apt-get install -y qemu-system-arm"
+        );
+    }
+    shell::run(Command::new("apt-get").arg("update").env("DEBIAN_FRONTEND", "noninteractive"))?;
+    shell::run(
+        Command::new("apt-get")
+            .args(["install", "-y", "--no-install-recommends", "qemu-system-arm"])
+            .env("DEBIAN_FRONTEND", "noninteractive"),
+    )
+}
+
+/// `llvm-size` from the toolchain's llvm-tools component, added when missing.
+pub fn llvm_size() -> Result<PathBuf> {
+    let sysroot = output(Command::new("rustc").args(["--print", "sysroot"]))?;
+    let host = output(Command::new("rustc").args(["--print", "host-tuple"]))?;
+    let path = PathBuf::from(sysroot.trim())
+        .join("lib/rustlib")
+        .join(host.trim())
+        .join("bin/llvm-size");
+    if !path.exists() {
+        shell::run(Command::new("rustup").args(["component", "add", "llvm-tools"]))?;
+    }
+    Ok(path)
+}
+
+/// A command's stdout, failing on a non-zero status.
+pub fn output(command: &mut Command) -> Result<String> {
+    let out = command
+        .output()
+        .with_context(|| format!("cannot start {}", shell::describe(command)))?;
+    if !out.status.success() {
+        bail!(
+            "`{}` failed: {}",
+            shell::describe(command),
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+    Ok(String::from_utf8_lossy(&out.stdout).into_owned())
+}

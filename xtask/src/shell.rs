@@ -1,0 +1,63 @@
+//! Running commands, echoing them first so a log shows what ran.
+
+use anyhow::{bail, Context, Result};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// The repository root (the parent of this crate).
+pub fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .expect("xtask lives one level below the root")
+        .to_path_buf()
+}
+
+/// Runs `command`, inheriting stdout and stderr; fails on a non-zero status.
+pub fn run(command: &mut Command) -> Result<()> {
+    println!("$ {}", describe(command));
+    let status = command
+        .status()
+        .with_context(|| format!("cannot start {}", describe(command)))?;
+    if !status.success() {
+        bail!("`{}` failed with {status}", describe(command));
+    }
+    Ok(())
+}
+
+/// Runs cargo with `args` at the repository root.
+pub fn cargo(args: &[&str]) -> Result<()> {
+    cargo_env(args, &[])
+}
+
+/// Runs cargo with `args` and extra environment variables at the root.
+pub fn cargo_env(args: &[&str], env: &[(&str, &str)]) -> Result<()> {
+    let mut command = cargo_command(&root());
+    command.args(args).envs(env.iter().copied());
+    run(&mut command)
+}
+
+/// Runs cargo with `args` in `dir`, where that directory's
+/// `.cargo/config.toml` applies.
+pub fn cargo_in(dir: PathBuf, args: &[&str]) -> Result<()> {
+    let mut command = cargo_command(&dir);
+    command.args(args);
+    run(&mut command)
+}
+
+/// A cargo command in `dir`, using the cargo that runs this xtask.
+pub fn cargo_command(dir: &Path) -> Command {
+    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+    let mut command = Command::new(cargo);
+    command.current_dir(dir);
+    command
+}
+
+/// `program arg arg ...` for messages.
+pub fn describe(command: &Command) -> String {
+    let mut text = command.get_program().to_string_lossy().into_owned();
+    for arg in command.get_args() {
+        text.push(' ');
+        text.push_str(&arg.to_string_lossy());
+    }
+    text
+}
