@@ -581,7 +581,10 @@ fn drives(w: &mut Writer, model: &ModelDescription) {
 /// A planar model must stay in the x-y plane: revolute joints about +z,
 /// prismatic joints in the plane, placements rotating about z, gravity in
 /// the plane.
-fn check_planar(model: &ModelDescription) -> Result<()> {
+///
+/// # Errors
+/// A diagnostic at the first joint that leaves the plane.
+pub fn check_planar(model: &ModelDescription) -> Result<()> {
     let tol = 1e-12;
     for b in &model.bodies {
         let fail = |why: &str| {

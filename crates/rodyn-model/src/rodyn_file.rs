@@ -317,6 +317,9 @@ impl Reader<'_> {
             );
         }
         check_subtrees_have_mass(&model)?;
+        if planar {
+            crate::codegen::check_planar(&model)?;
+        }
         for e in &f.endpoint {
             self.add_endpoint(&mut model, e, &scale_to_si)?;
         }
