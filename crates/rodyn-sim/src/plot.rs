@@ -1,0 +1,248 @@
+//! SVG line and scatter plots, with optional logarithmic axes.
+//!
+//! Logarithmic axes are drawn by plotting log10 of the data on a linear
+//! axis labelled in powers of ten: one code path for every combination.
+
+use plotters::prelude::*;
+use plotters::style::{register_font, FontStyle};
+use std::path::Path;
+use std::sync::Once;
+
+/// How a series is drawn.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Mark {
+    /// A line through the points.
+    Line,
+    /// A dashed-looking thin line.
+    ThinLine,
+    /// Points only.
+    Points,
+    /// A line with points.
+    LinePoints,
+    /// Large crosses (failures, limits).
+    Crosses,
+}
+
+/// One named series.
+#[derive(Clone, Debug)]
+pub struct Series {
+    /// Legend entry.
+    pub name: String,
+    /// Points (x, y); non-finite points are skipped.
+    pub points: Vec<(f64, f64)>,
+    /// How it is drawn.
+    pub mark: Mark,
+    /// Palette index.
+    pub color: usize,
+}
+
+impl Series {
+    /// A series.
+    pub fn new(name: impl Into<String>, points: Vec<(f64, f64)>, mark: Mark, color: usize) -> Self {
+        Self {
+            name: name.into(),
+            points,
+            mark,
+            color,
+        }
+    }
+}
+
+/// Axis scale.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Scale {
+    /// Linear.
+    Linear,
+    /// Base-10 logarithmic.
+    Log,
+}
+
+/// A plot's labels and axes.
+#[derive(Clone, Debug)]
+pub struct Figure<'a> {
+    /// Title.
+    pub title: &'a str,
+    /// x label.
+    pub x_label: &'a str,
+    /// y label.
+    pub y_label: &'a str,
+    /// x scale.
+    pub x_scale: Scale,
+    /// y scale.
+    pub y_scale: Scale,
+}
+
+/// A qualitative palette readable in print.
+pub fn color(index: usize) -> RGBColor {
+    const PALETTE: [RGBColor; 10] = [
+        RGBColor(31, 119, 180),
+        RGBColor(255, 127, 14),
+        RGBColor(44, 160, 44),
+        RGBColor(214, 39, 40),
+        RGBColor(148, 103, 189),
+        RGBColor(140, 86, 75),
+        RGBColor(227, 119, 194),
+        RGBColor(127, 127, 127),
+        RGBColor(188, 189, 34),
+        RGBColor(23, 190, 207),
+    ];
+    PALETTE[index % PALETTE.len()]
+}
+
+/// Registers a TrueType font for plotters' text (DejaVu Sans or Liberation
+/// Sans from the system); without one, plots have no text.
+pub fn init_fonts() {
+    static ONCE: Once = Once::new();
+    ONCE.call_once(|| {
+        const CANDIDATES: [&str; 4] = [
+            "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
+            "/usr/share/fonts/TTF/DejaVuSans.ttf",
+            "/usr/share/fonts/truetype/liberation/LiberationSans-Regular.ttf",
+            "/Library/Fonts/Arial.ttf",
+        ];
+        for path in CANDIDATES {
+            if let Ok(bytes) = std::fs::read(path) {
+                let bytes: &'static [u8] = Box::leak(bytes.into_boxed_slice());
+                if register_font("sans-serif", FontStyle::Normal, bytes).is_ok() {
+                    return;
+                }
+            }
+        }
+        eprintln!("warning: no TrueType font found (install fonts-dejavu-core); plot text will be missing");
+    });
+}
+
+fn transform(v: f64, scale: Scale) -> Option<f64> {
+    let out = match scale {
+        Scale::Linear => v,
+        Scale::Log => {
+            if v > 0.0 {
+                v.log10()
+            } else {
+                return None;
+            }
+        }
+    };
+    out.is_finite().then_some(out)
+}
+
+fn axis_label(v: f64, scale: Scale) -> String {
+    match scale {
+        Scale::Linear => {
+            let a = v.abs();
+            if a != 0.0 && !(1e-3..1e4).contains(&a) {
+                format!("{v:.0e}")
+            } else {
+                format!("{v}")
+            }
+        }
+        Scale::Log => {
+            if (v - v.round()).abs() < 1e-9 {
+                format!("1e{}", v.round() as i64)
+            } else {
+                format!("{:.1e}", 10f64.powf(v))
+            }
+        }
+    }
+}
+
+fn range(values: impl Iterator<Item = f64>, scale: Scale) -> (f64, f64) {
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for v in values {
+        lo = lo.min(v);
+        hi = hi.max(v);
+    }
+    if !lo.is_finite() {
+        return (0.0, 1.0);
+    }
+    let pad = match scale {
+        Scale::Log => 0.2,
+        Scale::Linear => 0.05 * (hi - lo).max(1e-12),
+    };
+    if hi - lo < 1e-12 {
+        (lo - 1.0, hi + 1.0)
+    } else {
+        (lo - pad, hi + pad)
+    }
+}
+
+/// Draws `series` into an SVG at `path` (800 x 520 px).
+pub fn plot(
+    path: &Path,
+    figure: &Figure,
+    series: &[Series],
+) -> Result<(), Box<dyn std::error::Error>> {
+    init_fonts();
+    let data: Vec<Vec<(f64, f64)>> = series
+        .iter()
+        .map(|s| {
+            s.points
+                .iter()
+                .filter_map(|&(x, y)| {
+                    Some((transform(x, figure.x_scale)?, transform(y, figure.y_scale)?))
+                })
+                .collect()
+        })
+        .collect();
+    let (x0, x1) = range(data.iter().flatten().map(|p| p.0), figure.x_scale);
+    let (y0, y1) = range(data.iter().flatten().map(|p| p.1), figure.y_scale);
+    let root = SVGBackend::new(path, (800, 520)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(figure.title, ("sans-serif", 20))
+        .margin(12)
+        .x_label_area_size(45)
+        .y_label_area_size(70)
+        .build_cartesian_2d(x0..x1, y0..y1)?;
+    let (xs, ys) = (figure.x_scale, figure.y_scale);
+    chart
+        .configure_mesh()
+        .x_desc(figure.x_label)
+        .y_desc(figure.y_label)
+        .x_label_formatter(&|v| axis_label(*v, xs))
+        .y_label_formatter(&|v| axis_label(*v, ys))
+        .light_line_style(RGBColor(235, 235, 235))
+        .draw()?;
+    for (s, points) in series.iter().zip(&data) {
+        let c = color(s.color);
+        let legend_color = c;
+        match s.mark {
+            Mark::Line | Mark::ThinLine | Mark::LinePoints => {
+                let width = if s.mark == Mark::ThinLine { 1 } else { 2 };
+                chart
+                    .draw_series(LineSeries::new(
+                        points.iter().copied(),
+                        c.stroke_width(width),
+                    ))?
+                    .label(&s.name)
+                    .legend(move |(x, y)| {
+                        PathElement::new([(x, y), (x + 18, y)], legend_color.stroke_width(2))
+                    });
+                if s.mark == Mark::LinePoints {
+                    chart.draw_series(points.iter().map(|&p| Circle::new(p, 3, c.filled())))?;
+                }
+            }
+            Mark::Points => {
+                chart
+                    .draw_series(points.iter().map(|&p| Circle::new(p, 3, c.filled())))?
+                    .label(&s.name)
+                    .legend(move |(x, y)| Circle::new((x + 9, y), 3, legend_color.filled()));
+            }
+            Mark::Crosses => {
+                chart
+                    .draw_series(points.iter().map(|&p| Cross::new(p, 6, c.stroke_width(2))))?
+                    .label(&s.name)
+                    .legend(move |(x, y)| Cross::new((x + 9, y), 5, legend_color.stroke_width(2)));
+            }
+        }
+    }
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.85))
+        .border_style(BLACK.mix(0.3))
+        .position(SeriesLabelPosition::UpperRight)
+        .label_font(("sans-serif", 13))
+        .draw()?;
+    root.present()?;
+    Ok(())
+}

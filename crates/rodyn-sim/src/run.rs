@@ -1,0 +1,165 @@
+//! `rodyn-sim run`: one scenario to CSV, SVG plots and a GIF.
+
+use crate::animate::stick_figure_gif;
+use crate::models::arm7;
+use crate::plot::{plot, Figure, Mark, Scale, Series};
+use crate::scenario::{run, RunConfig, Scenario};
+use crate::trajectory::Trajectory;
+use indicatif::{ProgressBar, ProgressStyle};
+use rodyn::sim::quadruped::{self, QuadrupedLoads, LEGS, LEG_NAMES};
+use rodyn::space::VectorOps;
+use rodyn::spatial::Force;
+use rodyn::Data;
+use std::path::Path;
+
+/// Runs `config`, writes `<scenario>.csv`, `<scenario>.svg` and
+/// `<scenario>.gif` into `out`, and prints a summary.
+pub fn run_command(config: &RunConfig, out: &Path) -> Result<(), Box<dyn std::error::Error>> {
+    std::fs::create_dir_all(out)?;
+    let steps = (config.duration / config.dt).round() as u64;
+    let bar = ProgressBar::new(steps);
+    bar.set_style(ProgressStyle::with_template(
+        "{spinner} {msg} [{bar:40}] {pos}/{len} steps ({eta})",
+    )?);
+    bar.set_message(config.scenario.name());
+    let trajectory = run(config, Some(&bar));
+    bar.finish_and_clear();
+    let name = config.scenario.name();
+    let csv = out.join(format!("{name}.csv"));
+    let plot_path = out.join(format!("{name}.svg"));
+    let gif = out.join(format!("{name}.gif"));
+    let frame = 0.04;
+    match config.scenario {
+        Scenario::ArmSwing => {
+            let names: Vec<String> = (1..=7).map(|k| format!("joint{k}")).collect();
+            trajectory.write_csv(&csv, &names)?;
+            let series = (0..7)
+                .map(|k| {
+                    Series::new(
+                        format!("joint {}", k + 1),
+                        column(&trajectory, k),
+                        Mark::Line,
+                        k,
+                    )
+                })
+                .collect::<Vec<_>>();
+            plot(
+                &plot_path,
+                &figure("7-DoF arm swinging under gravity", "joint angle (rad)"),
+                &series,
+            )?;
+            stick_figure_gif(&gif, &arm7::<f64>(), &[], &trajectory, frame, false)?;
+        }
+        Scenario::QuadrupedStand | Scenario::QuadrupedTrot => {
+            let mut names: Vec<String> = ["x", "y", "z", "qx", "qy", "qz", "qw"]
+                .iter()
+                .map(|s| s.to_string())
+                .collect();
+            for leg in LEG_NAMES {
+                for joint in ["abduction", "hip", "knee"] {
+                    names.push(format!("{leg}_{joint}"));
+                }
+            }
+            trajectory.write_csv(&csv, &names)?;
+            let forces = foot_forces(&trajectory)?;
+            let mut series = vec![
+                Series::new("torso x (m)", column(&trajectory, 0), Mark::Line, 0),
+                Series::new("torso z (m)", column(&trajectory, 2), Mark::Line, 1),
+            ];
+            for (leg, f) in forces.iter().enumerate() {
+                let scaled = f.iter().map(|&(t, n)| (t, n / 100.0)).collect();
+                series.push(Series::new(
+                    format!("{} normal force / 100 N", LEG_NAMES[leg]),
+                    scaled,
+                    Mark::ThinLine,
+                    2 + leg,
+                ));
+            }
+            plot(
+                &plot_path,
+                &figure(&format!("quadruped: {name}"), "m, N/100"),
+                &series,
+            )?;
+            let model = quadruped::model::<f64>();
+            stick_figure_gif(
+                &gif,
+                &model,
+                &quadruped::feet::<f64>(),
+                &trajectory,
+                frame,
+                config.scenario == Scenario::QuadrupedTrot,
+            )?;
+        }
+    }
+    let last_t = trajectory.t.last().copied().unwrap_or(0.0);
+    println!(
+        "{name}: {} {} {} dt = {} s, simulated {last_t:.3} s in {:.3} s of host time ({:.2e} s per simulated s)",
+        config.method.name(),
+        config.scalar.name(),
+        config.integrator.name(),
+        config.dt,
+        trajectory.wall_time.as_secs_f64(),
+        trajectory.cost_per_simulated_second()
+    );
+    if let Some(q) = trajectory.q.last() {
+        if config.scenario != Scenario::ArmSwing {
+            println!(
+                "final torso position x = {:.4} m, y = {:.4} m, z = {:.4} m",
+                q[0], q[1], q[2]
+            );
+        }
+    }
+    if let Some(f) = &trajectory.failure {
+        println!("stopped early: {f}");
+    }
+    println!(
+        "wrote {}, {}, {}",
+        csv.display(),
+        plot_path.display(),
+        gif.display()
+    );
+    Ok(())
+}
+
+fn figure<'a>(title: &'a str, y: &'a str) -> Figure<'a> {
+    Figure {
+        title,
+        x_label: "time (s)",
+        y_label: y,
+        x_scale: Scale::Linear,
+        y_scale: Scale::Linear,
+    }
+}
+
+fn column(t: &Trajectory, k: usize) -> Vec<(f64, f64)> {
+    t.t.iter().zip(&t.q).map(|(t, q)| (*t, q[k])).collect()
+}
+
+/// Normal force of each foot at each sample, recomputed in f64 from the
+/// recorded state with the scenario's ground.
+pub fn foot_forces(
+    trajectory: &Trajectory,
+) -> Result<Vec<Vec<(f64, f64)>>, Box<dyn std::error::Error>> {
+    let model = quadruped::model::<f64>();
+    let mut loads = QuadrupedLoads::<f64>::standing();
+    let mut data = Data::new();
+    let mut out = vec![Vec::new(); LEGS];
+    for ((t, q), v) in trajectory.t.iter().zip(&trajectory.q).zip(&trajectory.v) {
+        let q: [f64; quadruped::NQ] = q.as_slice().try_into()?;
+        let v: [f64; quadruped::NV] = v.as_slice().try_into()?;
+        let mut f_ext = [Force::ZERO; quadruped::NB];
+        loads.ground.add_forces(
+            &model,
+            &mut data,
+            &q,
+            &v,
+            &loads.feet,
+            &mut f_ext,
+            Some(&mut loads.reports),
+        )?;
+        for (leg, report) in loads.reports.iter().enumerate() {
+            out[leg].push((*t, report.force.z));
+        }
+    }
+    Ok(out)
+}

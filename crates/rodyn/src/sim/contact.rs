@@ -1,0 +1,153 @@
+//! Compliant point contact with flat ground, for the feet of legged robots.
+//!
+//! The ground is the plane `z = 0` of the world frame, its normal `+z`
+//! (gravity should point along `-z`). A contact point (an
+//! [`Endpoint`](crate::Endpoint) on a body) that sinks below it by the
+//! penetration `δ = -z > 0` feels
+//!
+//! * a **normal force** from a spring-damper ([`NormalLaw`]): linear,
+//!   `λ = k δ + c δ̇`, or Hunt-Crossley, `λ = k δ (1 + d δ̇)`, whose damping
+//!   vanishes with the penetration so that the force is continuous at
+//!   touch-down;
+//! * **no pull**: `λ` is clamped at zero. The ground can push a foot but not
+//!   hold it; a fast-rising foot whose damping term would make `λ`
+//!   negative simply leaves. This is physics, not a numerical patch: the
+//!   clamp is where the contact force stops being smooth, which is why
+//!   high-order integrators lose their order through contact;
+//! * a **regularised Coulomb friction** force opposing the tangential slip
+//!   velocity `s`: `f_t = -μ λ tanh(|s| / s₀) s / |s|`. Below the slip
+//!   scale `s₀` it behaves like a viscous damper of coefficient `μ λ / s₀`,
+//!   so a "standing" foot creeps slowly instead of sticking; above it the
+//!   force is Coulomb's `μ λ`. A smaller `s₀` is stiffer (smaller steps).
+//!
+//! The force acts at the contact point and is handed to the dynamics as a
+//! spatial force on the point's body, in that body's frame.
+//!
+//! Units: N/m, N s/m, s/m, m/s, N.
+
+use crate::algorithm::kinematics::forward_kinematics_velocity;
+use crate::data::Data;
+use crate::endpoint::Endpoint;
+use crate::error::Result;
+use crate::model::Model;
+use crate::spatial::{Force, Spatial, Vec3};
+use crate::Scalar;
+
+/// The normal force law of a penetrating point.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum NormalLaw<S> {
+    /// `λ = k δ + c δ̇`: stiffness `k` (N/m), damping `c` (N s/m).
+    LinearSpringDamper {
+        /// Stiffness k (N/m).
+        stiffness: S,
+        /// Damping c (N s/m).
+        damping: S,
+    },
+    /// `λ = k δ (1 + d δ̇)`: stiffness `k` (N/m), Hunt-Crossley damping `d` (s/m).
+    HuntCrossley {
+        /// Stiffness k (N/m).
+        stiffness: S,
+        /// Damping d (s/m); `d ≈ 1.5 (1 - e) / v_impact` for a restitution e.
+        damping: S,
+    },
+}
+
+/// Ground contact parameters.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GroundContact<S> {
+    /// The normal force law.
+    pub normal: NormalLaw<S>,
+    /// Coulomb friction coefficient μ.
+    pub friction: S,
+    /// Slip velocity scale s₀ of the regularisation (m/s).
+    pub slip_scale: S,
+}
+
+/// What one contact point is doing, for logs and plots.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ContactReport<S> {
+    /// The point in the world frame (m).
+    pub position: Vec3<S>,
+    /// Penetration δ (m), zero when above ground.
+    pub penetration: S,
+    /// The force the ground applies, world frame (N).
+    pub force: Vec3<S>,
+}
+
+impl<S: Scalar> GroundContact<S> {
+    /// The force (world frame, N) on a point at world position `p` moving
+    /// at world velocity `p_dot`.
+    #[must_use]
+    pub fn force_at(&self, p: &Vec3<S>, p_dot: &Vec3<S>) -> Vec3<S> {
+        let depth = -p.z;
+        if !(depth > S::ZERO) {
+            return Vec3::ZERO;
+        }
+        let depth_rate = -p_dot.z;
+        let normal = match self.normal {
+            NormalLaw::LinearSpringDamper { stiffness, damping } => {
+                stiffness * depth + damping * depth_rate
+            }
+            NormalLaw::HuntCrossley { stiffness, damping } => {
+                stiffness * depth * (S::ONE + damping * depth_rate)
+            }
+        }
+        .max(S::ZERO);
+        let slip = Vec3::new(p_dot.x, p_dot.y, S::ZERO);
+        let speed = slip.norm();
+        // tanh(|s|/s₀)/|s|, continued by its limit 1/s₀ at standstill.
+        let ratio = speed / self.slip_scale;
+        let gain = if ratio > S::from_f64(1e-4) {
+            ratio.tanh() / speed
+        } else {
+            S::ONE / self.slip_scale
+        };
+        let friction = slip * (-(self.friction * normal * gain));
+        Vec3::new(friction.x, friction.y, normal)
+    }
+
+    /// Adds the ground forces on every point in `points` to `f_ext` (body
+    /// frames), and writes what each point does to `reports` when given
+    /// (as many entries as points are filled).
+    ///
+    /// Runs [`forward_kinematics_velocity`] on `data` (leaves `li_m_i`,
+    /// `o_m_i`, `v`, `c` valid at `(q, v)`). Points fixed in the world are
+    /// skipped.
+    ///
+    /// # Errors
+    /// Those of [`forward_kinematics_velocity`].
+    #[allow(clippy::too_many_arguments)]
+    pub fn add_forces<const NB: usize, const NQ: usize, const NV: usize>(
+        &self,
+        model: &Model<S, NB, NQ, NV, Spatial>,
+        data: &mut Data<S, NB, NV, Spatial>,
+        q: &[S; NQ],
+        v: &[S; NV],
+        points: &[Endpoint<S>],
+        f_ext: &mut [Force<S>; NB],
+        mut reports: Option<&mut [ContactReport<S>]>,
+    ) -> Result<()> {
+        forward_kinematics_velocity(model, data, q, v)?;
+        for (n, point) in points.iter().enumerate() {
+            let Some(body) = point.body else { continue };
+            let pose = &data.o_m_i[body];
+            let twist = &data.v[body];
+            let p_local = point.position;
+            let p_world = pose.rot.mul_vec(&p_local) + pose.trans;
+            // Velocity of the material point: body twist at p, then rotated.
+            let p_dot_local = twist.lin + twist.ang.cross(&p_local);
+            let p_dot_world = pose.rot.mul_vec(&p_dot_local);
+            let force_world = self.force_at(&p_world, &p_dot_world);
+            let force_local = pose.rot.tr_mul_vec(&force_world);
+            f_ext[body] += Force::at_point(force_local, &p_local);
+            if let Some(out) = reports.as_deref_mut().and_then(|r| r.get_mut(n)) {
+                *out = ContactReport {
+                    position: p_world,
+                    penetration: (-p_world.z).max(S::ZERO),
+                    force: force_world,
+                };
+            }
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,113 @@
+//! Time-stepping schemes for `q̇ = Q(q) v`, `v̇ = FD(q, v, τ, f_ext)`.
+//!
+//! | integrator            | order | dynamics calls per step | stable for                          |
+//! |-----------------------|-------|-------------------------|-------------------------------------|
+//! | [`ExplicitEuler`]     | 1     | 1                       | damped systems only; gains energy on an undamped oscillator |
+//! | [`SemiImplicitEuler`] | 1     | 1                       | oscillators with `ω dt < 2` (symplectic: energy bounded) |
+//! | [`Rk4`]               | 4     | 4                       | oscillators with `ω dt < 2.78`      |
+//! | [`ImplicitEuler`]     | 1     | 2 NV + 1 and an NV x NV solve | stiff springs, dampers and contacts at any step (A-stable, dissipative) |
+//!
+//! Each is a value implementing [`Integrator`]; the forward-dynamics method
+//! is a type parameter given by value (`Aba` or `Crba`):
+//!
+//! ```
+//! use rodyn::algorithm::forward_dynamics::Aba;
+//! use rodyn::sim::{Integrator, NoLoads, Rk4, State};
+//! # use rodyn::{Data, Model, joint::{Axis, Joint}, spatial::*};
+//! # const M: Model<f64, 1, 1, 1> = Model::new([None], [Joint::revolute(Axis::Z)],
+//! #     [Transform::IDENTITY], [Inertia::point_mass(1.0, Vec3::new(0.5, 0.0, 0.0))],
+//! #     Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)));
+//! let mut data = Data::new();
+//! let mut state = State::new([0.3], [0.0]);
+//! let mut rk4 = Rk4::default();
+//! for _ in 0..1000 {
+//!     rk4.step(Aba, &M, &mut data, &mut state, 1e-3, &mut NoLoads)?;
+//! }
+//! assert!((state.t - 1.0).abs() < 1e-9);
+//! # Ok::<(), rodyn::Error>(())
+//! ```
+
+mod euler;
+mod implicit_euler;
+mod rk4;
+
+pub use euler::{ExplicitEuler, SemiImplicitEuler};
+pub use implicit_euler::ImplicitEuler;
+pub use rk4::Rk4;
+
+use super::loads::Loads;
+use super::manifold::ConfigurationRate;
+use super::state::State;
+use crate::algorithm::forward_dynamics::ForwardDynamics;
+use crate::data::Data;
+use crate::error::Result;
+use crate::model::Model;
+use crate::space::{Space, VectorOps};
+use crate::Scalar;
+
+/// One step of a time-stepping scheme.
+pub trait Integrator {
+    /// A short name for reports ("RK4").
+    const NAME: &'static str;
+
+    /// Advances `state` by `dt` seconds under `loads`, with forward dynamics
+    /// by `method` (ABA or CRBA).
+    ///
+    /// Leaves `data` as the last dynamics evaluation left it (not
+    /// necessarily at the new state).
+    ///
+    /// # Errors
+    /// Any error of the loads or the dynamics at any evaluation (a singular
+    /// articulated inertia, a mass matrix that is not positive definite, a
+    /// configuration off its manifold), or [`Error::NonFinite`](crate::Error::NonFinite)
+    /// when the new state would not be finite. On error `state` is unchanged.
+    #[allow(clippy::too_many_arguments)]
+    fn step<F, L, S, const NB: usize, const NQ: usize, const NV: usize, G>(
+        &mut self,
+        method: F,
+        model: &Model<S, NB, NQ, NV, G>,
+        data: &mut Data<S, NB, NV, G>,
+        state: &mut State<S, NQ, NV>,
+        dt: S,
+        loads: &mut L,
+    ) -> Result<()>
+    where
+        F: ForwardDynamics,
+        L: Loads<S, NB, NQ, NV, G>,
+        S: Scalar,
+        G: ConfigurationRate;
+}
+
+/// `q̈` at `(t, q, v)`: the loads, then the forward dynamics.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn acceleration<F, L, S, const NB: usize, const NQ: usize, const NV: usize, G>(
+    _method: &F,
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    loads: &mut L,
+    t: S,
+    q: &[S; NQ],
+    v: &[S; NV],
+) -> Result<[S; NV]>
+where
+    F: ForwardDynamics,
+    L: Loads<S, NB, NQ, NV, G>,
+    S: Scalar,
+    G: Space,
+{
+    let mut tau = [S::ZERO; NV];
+    let mut f_ext = [<G::Force<S> as VectorOps<S>>::ZERO; NB];
+    loads.loads(model, data, t, q, v, &mut tau, &mut f_ext)?;
+    Ok(*F::forward_dynamics(model, data, q, v, &tau, Some(&f_ext))?)
+}
+
+/// Writes the new state only when it is finite.
+#[inline]
+pub(crate) fn commit<S: Scalar, const NQ: usize, const NV: usize>(
+    state: &mut State<S, NQ, NV>,
+    next: State<S, NQ, NV>,
+) -> Result<()> {
+    next.check_finite()?;
+    *state = next;
+    Ok(())
+}

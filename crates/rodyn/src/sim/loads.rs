@@ -1,0 +1,92 @@
+//! What acts on a model during a simulation: joint torques and external forces.
+
+use crate::data::Data;
+use crate::error::Result;
+use crate::model::Model;
+use crate::space::Space;
+use crate::Scalar;
+
+/// Joint torques `τ` and external forces `f_ext` as functions of `(t, q, v)`.
+///
+/// The integrator zeroes `tau` (NV, N or N m per coordinate) and `f_ext`
+/// (one force per body, in that body's frame, Pinocchio's `fext`
+/// convention) before each call; an implementation adds what it produces, so
+/// contacts, drives and a controller can be stacked. `data` is free scratch:
+/// the forward dynamics overwrite it right after the call.
+///
+/// An integrator may evaluate the loads several times per step, at trial
+/// states (RK4's stages, the implicit Euler's finite differences), so the
+/// loads must be a function of `(t, q, v)` only: update a controller's
+/// internal state between steps, not inside this call.
+///
+/// Any `FnMut(&Model, &mut Data, t, &q, &v, &mut tau, &mut f_ext) -> Result<()>`
+/// is a `Loads`.
+pub trait Loads<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space> {
+    /// Adds the loads at `(t, q, v)` to `tau` and `f_ext`.
+    ///
+    /// # Errors
+    /// Whatever the load model reports (e.g. an invalid configuration met
+    /// while computing contact points); the step is then abandoned.
+    #[allow(clippy::too_many_arguments)]
+    fn loads(
+        &mut self,
+        model: &Model<S, NB, NQ, NV, G>,
+        data: &mut Data<S, NB, NV, G>,
+        t: S,
+        q: &[S; NQ],
+        v: &[S; NV],
+        tau: &mut [S; NV],
+        f_ext: &mut [G::Force<S>; NB],
+    ) -> Result<()>;
+}
+
+/// No torques and no external forces: the model moves under gravity alone.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct NoLoads;
+
+impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space> Loads<S, NB, NQ, NV, G>
+    for NoLoads
+{
+    #[inline]
+    fn loads(
+        &mut self,
+        _model: &Model<S, NB, NQ, NV, G>,
+        _data: &mut Data<S, NB, NV, G>,
+        _t: S,
+        _q: &[S; NQ],
+        _v: &[S; NV],
+        _tau: &mut [S; NV],
+        _f_ext: &mut [G::Force<S>; NB],
+    ) -> Result<()> {
+        Ok(())
+    }
+}
+
+impl<S, F, const NB: usize, const NQ: usize, const NV: usize, G> Loads<S, NB, NQ, NV, G> for F
+where
+    S: Scalar,
+    G: Space,
+    F: FnMut(
+        &Model<S, NB, NQ, NV, G>,
+        &mut Data<S, NB, NV, G>,
+        S,
+        &[S; NQ],
+        &[S; NV],
+        &mut [S; NV],
+        &mut [G::Force<S>; NB],
+    ) -> Result<()>,
+{
+    #[inline]
+    fn loads(
+        &mut self,
+        model: &Model<S, NB, NQ, NV, G>,
+        data: &mut Data<S, NB, NV, G>,
+        t: S,
+        q: &[S; NQ],
+        v: &[S; NV],
+        tau: &mut [S; NV],
+        f_ext: &mut [G::Force<S>; NB],
+    ) -> Result<()> {
+        self(model, data, t, q, v, tau, f_ext)
+    }
+}

@@ -1,0 +1,34 @@
+//! Simulation: integrators, ground contact and a legged-robot scenario, all
+//! `no_std` and allocation-free.
+//!
+//! A simulation advances a [`State`] `(t, q, v)` by a step `dt`. At each
+//! evaluation the integrator asks a [`Loads`] for the joint torques `τ` and
+//! the external forces `f_ext` (one per body, body frame) at `(t, q, v)`,
+//! and a [`ForwardDynamics`](crate::algorithm::forward_dynamics::ForwardDynamics)
+//! method (ABA or CRBA) for `q̈`. Contacts and drives only produce loads;
+//! they never change an integrator or an algorithm.
+//!
+//! | item                         | what it is                                                      |
+//! |------------------------------|-----------------------------------------------------------------|
+//! | [`State`]                    | time (s), configuration `q` (NQ), velocity `v` (NV)             |
+//! | [`Loads`]                    | `τ` and `f_ext` from `(t, q, v)`; a closure works               |
+//! | [`Integrator`]               | one step: [`ExplicitEuler`], [`SemiImplicitEuler`], [`Rk4`], [`ImplicitEuler`] |
+//! | [`ConfigurationUpdate`]      | how `q` moves on its manifold: exponential map or embedded with optional renormalisation |
+//! | [`contact::GroundContact`]   | compliant point contact with the plane z = 0                    |
+//! | [`quadruped`]                | an Aibo-size quadruped, its stance/trot controller and one call per step |
+//!
+//! Every step either returns `Ok` with a finite state or returns the error of
+//! the dynamics (or [`Error::NonFinite`](crate::Error::NonFinite)) and leaves
+//! the state as it was: a simulation never continues silently from NaN.
+
+pub mod contact;
+pub mod integrator;
+pub mod loads;
+pub mod manifold;
+pub mod quadruped;
+pub mod state;
+
+pub use integrator::{ExplicitEuler, ImplicitEuler, Integrator, Rk4, SemiImplicitEuler};
+pub use loads::{Loads, NoLoads};
+pub use manifold::{ConfigurationRate, ConfigurationUpdate};
+pub use state::State;
