@@ -1,10 +1,8 @@
 //! The build-script interface: compile a model file into `$OUT_DIR/<module>.rs`.
 //!
 //! ```no_run
-//! // build.rs of a firmware crate
-//! fn main() {
-//!     rodyn_model::build::compile("../models/panda.toml", "panda");
-//! }
+//! // build.rs of a firmware crate, inside `fn main()`:
+//! let _ = rodyn_model::build::compile("../models/panda.toml", "panda");
 //! // src/main.rs
 //! // include!(concat!(env!("OUT_DIR"), "/panda.rs"));
 //! // use panda::{MODEL_F32, body, joint};

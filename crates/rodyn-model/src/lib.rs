@@ -29,7 +29,10 @@ pub mod diagnostic;
 pub mod geometry;
 pub mod names;
 pub mod physics;
+pub mod render;
 pub mod rodyn_file;
+pub mod runtime;
+pub mod tree;
 pub mod urdf;
 
 pub use description::ModelDescription;

@@ -3,15 +3,23 @@
 //! ```text
 //! rodyn-model rust   <file> [--module NAME] [--floating-base]   print the generated Rust
 //! rodyn-model check  <file> [--floating-base]                   check the file, print warnings
+//! rodyn-model tree   <file> [--floating-base]                   bodies, joints, endpoints, drives
+//! rodyn-model render <file> [--q a,b,...] [--view xy|xz|yz|iso] [-o out.svg]   stick figure
 //! ```
 
+use rodyn_model::render::{render_svg, View};
+use rodyn_model::runtime::RuntimeModel;
+use rodyn_model::tree::render_tree;
 use rodyn_model::{build::generate_source, LoadOptions};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
 const USAGE: &str = "usage:
   rodyn-model rust  <file> [--module NAME] [--floating-base]   print the generated Rust module
-  rodyn-model check <file> [--floating-base]                   check a model file and print its warnings";
+  rodyn-model check <file> [--floating-base]                   check a model file and print its warnings
+  rodyn-model tree  <file> [--floating-base]                   print bodies, joints, endpoints, drives, nq and nv
+  rodyn-model render <file> [--floating-base] [--q a,b,...] [--view xy|xz|yz|iso] [--width PX] [-o out.svg]
+                                                               draw a stick figure at q (default: zeros; planar models view xy, others iso)";
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -29,11 +37,42 @@ fn run(args: &[String]) -> Result<(), String> {
     let mut file = None;
     let mut module = None;
     let mut options = LoadOptions::default();
+    let mut q: Vec<f64> = Vec::new();
+    let mut view = None;
+    let mut output = None;
+    let mut width = 480.0;
     let mut it = rest.iter();
     while let Some(arg) = it.next() {
         match arg.as_str() {
             "--module" => module = Some(it.next().ok_or("--module needs a name")?.clone()),
             "--floating-base" => options.floating_base = true,
+            "--q" => {
+                let list = it.next().ok_or("--q needs comma-separated numbers")?;
+                q = list
+                    .split(',')
+                    .map(|x| {
+                        x.trim()
+                            .parse::<f64>()
+                            .map_err(|_| format!("--q: `{x}` is not a number"))
+                    })
+                    .collect::<Result<_, _>>()?;
+            }
+            "--view" => {
+                let v = it.next().ok_or("--view needs xy, xz, yz or iso")?;
+                view = Some(
+                    View::parse(v)
+                        .ok_or(format!("--view: unknown view `{v}`; use xy, xz, yz or iso"))?,
+                );
+            }
+            "--width" => {
+                width = it
+                    .next()
+                    .and_then(|w| w.parse().ok())
+                    .ok_or("--width needs a number of pixels")?;
+            }
+            "-o" | "--output" => {
+                output = Some(PathBuf::from(it.next().ok_or("-o needs a file name")?))
+            }
             other if other.starts_with("--") => {
                 return Err(format!("unknown option {other}\n{USAGE}"))
             }
@@ -67,6 +106,36 @@ fn run(args: &[String]) -> Result<(), String> {
                 model.nq(),
                 model.nv()
             );
+            Ok(())
+        }
+        "tree" => {
+            let model = rodyn_model::load(&file, options).map_err(|d| d.to_string())?;
+            print!("{}", render_tree(&model));
+            Ok(())
+        }
+        "render" => {
+            let model = rodyn_model::load(&file, options).map_err(|d| d.to_string())?;
+            if !q.is_empty() && q.len() != model.nq() {
+                return Err(format!(
+                    "--q has {} numbers but the model has nq = {}",
+                    q.len(),
+                    model.nq()
+                ));
+            }
+            let view = view.unwrap_or(if model.planar {
+                View::Xy
+            } else {
+                View::Isometric
+            });
+            let runtime = RuntimeModel::new(model).map_err(|d| d.to_string())?;
+            let svg = render_svg(&runtime, &q, view, width)
+                .map_err(|e| format!("cannot pose the model: {e}"))?;
+            match output {
+                Some(path) => {
+                    std::fs::write(&path, svg).map_err(|e| format!("{}: {e}", path.display()))?
+                }
+                None => print!("{svg}"),
+            }
             Ok(())
         }
         _ => Err(USAGE.to_string()),
