@@ -2,6 +2,9 @@
 //! reflected inertia as the model's armature in CRBA, ABA, RNEA and the
 //! kinetic energy.
 
+// Row and column indices mirror the matrix equations being checked.
+#![allow(clippy::needless_range_loop)]
+
 use rodyn::algorithm::crba::crba;
 use rodyn::algorithm::energy::kinetic_energy;
 use rodyn::algorithm::forward_dynamics::{Aba, Crba};

@@ -2,6 +2,9 @@
 //! its activation dynamics, the activation derivative, and the guards of its
 //! singular regions.
 
+// Row and column indices mirror the matrix equations being checked.
+#![allow(clippy::needless_range_loop)]
+
 use rodyn::drive::{Path, ThelenMuscle, ThelenParameters};
 use rodyn::spatial::{Spatial, Vec3};
 use rodyn::Endpoint;
@@ -21,8 +24,16 @@ fn curves_pass_through_their_defining_points() {
     // f_L = 1 at optimal length and e⁻¹ at l̃ = 1 ± √γ.
     assert_eq!(P.active_force_length(1.0), 1.0);
     let e_inv = (-1.0f64).exp();
-    approx::assert_relative_eq!(P.active_force_length(1.0 + 0.45f64.sqrt()), e_inv, max_relative = 1e-14);
-    approx::assert_relative_eq!(P.active_force_length(1.0 - 0.45f64.sqrt()), e_inv, max_relative = 1e-14);
+    approx::assert_relative_eq!(
+        P.active_force_length(1.0 + 0.45f64.sqrt()),
+        e_inv,
+        max_relative = 1e-14
+    );
+    approx::assert_relative_eq!(
+        P.active_force_length(1.0 - 0.45f64.sqrt()),
+        e_inv,
+        max_relative = 1e-14
+    );
     // f_PE = 0 at and below optimal length, 1 at strain ε₀ᴹ = 0.6.
     assert_eq!(P.passive_force_length(1.0), 0.0);
     assert_eq!(P.passive_force_length(0.7), 0.0);
@@ -84,7 +95,9 @@ fn tension_derivative_by_activation_matches_central_differences() {
 #[test]
 fn pennation_follows_the_constant_thickness_geometry() {
     let alpha0 = 0.4f64;
-    let m = muscle(ThelenParameters::<f64>::thelen_2003(1000.0, 0.1, 0.2, alpha0));
+    let m = muscle(ThelenParameters::<f64>::thelen_2003(
+        1000.0, 0.1, 0.2, alpha0,
+    ));
     // At optimal fibre length the fibre's projection is l₀ cos α₀.
     let s = m.state(0.2 + 0.1 * alpha0.cos(), 0.5, 0.5);
     approx::assert_relative_eq!(s.fiber_length, 0.1, max_relative = 1e-14);
@@ -118,9 +131,17 @@ fn singular_regions_are_guarded() {
 #[test]
 fn activation_dynamics_follow_thelens_time_constants() {
     // Rising from a = 0 with u = 1: τ = τ_act (0.5 + 1.5·0) = 7.5 ms.
-    approx::assert_relative_eq!(P.activation_rate(1.0, 0.0), 1.0 / 0.0075, max_relative = 1e-14);
+    approx::assert_relative_eq!(
+        P.activation_rate(1.0, 0.0),
+        1.0 / 0.0075,
+        max_relative = 1e-14
+    );
     // Falling from a = 1 with u = 0: τ = τ_deact / (0.5 + 1.5) = 25 ms.
-    approx::assert_relative_eq!(P.activation_rate(0.0, 1.0), -1.0 / 0.025, max_relative = 1e-14);
+    approx::assert_relative_eq!(
+        P.activation_rate(0.0, 1.0),
+        -1.0 / 0.025,
+        max_relative = 1e-14
+    );
     // At equilibrium nothing moves; excitation is clamped to [0, 1].
     assert_eq!(P.activation_rate(0.4, 0.4), 0.0);
     assert_eq!(P.activation_rate(3.0, 1.0), 0.0);

@@ -1,6 +1,9 @@
 //! Paths: lengthening velocity, generalised forces and power balance on
 //! random states, in 3-D and in the plane.
 
+// Row and column indices mirror the matrix equations being checked.
+#![allow(clippy::needless_range_loop)]
+
 use rodyn::algorithm::kinematics::forward_kinematics_velocity;
 use rodyn::algorithm::rnea::rnea;
 use rodyn::drive::{Path, PathKinematics};
@@ -22,9 +25,8 @@ impl Rng {
 
 /// Three bodies, two branches, three different joint axes.
 fn model_3d() -> Model<f64, 3, 3, 3> {
-    let body = |m: f64, c: Vec3<f64>| {
-        Inertia::new(m, c, Sym3::diagonal(0.02 * m, 0.03 * m, 0.025 * m))
-    };
+    let body =
+        |m: f64, c: Vec3<f64>| Inertia::new(m, c, Sym3::diagonal(0.02 * m, 0.03 * m, 0.025 * m));
     Model::new(
         [None, Some(0), Some(0)],
         [
@@ -112,8 +114,9 @@ fn check_path<const NB: usize, const NV: usize, G, const K: usize>(
         // Generalised forces: without gravity, RNEA at rest returns -Jᵀ f.
         let zero = [0.0; NV];
         let mut rdata = Data::new();
-        let jt_f: [f64; NV] =
-            rnea(model, &mut rdata, &q, &zero, &zero, Some(&f_ext)).unwrap().map(|t| -t);
+        let jt_f: [f64; NV] = rnea(model, &mut rdata, &q, &zero, &zero, Some(&f_ext))
+            .unwrap()
+            .map(|t| -t);
         for k in 0..NV {
             let mut qp = q;
             let mut qm = q;
@@ -122,7 +125,11 @@ fn check_path<const NB: usize, const NV: usize, G, const K: usize>(
             let dl_dq = (kinematics_at(model, path, &qp, &zero).0.length
                 - kinematics_at(model, path, &qm, &zero).0.length)
                 / (2.0 * H);
-            approx::assert_relative_eq!(jt_f[k], -tension * dl_dq, epsilon = 1e-6 * tension.abs().max(1.0));
+            approx::assert_relative_eq!(
+                jt_f[k],
+                -tension * dl_dq,
+                epsilon = 1e-6 * tension.abs().max(1.0)
+            );
         }
     }
 }
@@ -171,7 +178,11 @@ fn straight_two_point_path_has_closed_form_length_and_force() {
     // From (0, 2) to (1, 0): length √5; the point moves along +y at 1 m/s,
     // toward the anchor: L̇ = (1, -2)/√5 · (0, 1) = -2/√5.
     approx::assert_relative_eq!(kin.length, 5f64.sqrt(), epsilon = 1e-15);
-    approx::assert_relative_eq!(kin.lengthening_velocity, -2.0 / 5f64.sqrt(), epsilon = 1e-15);
+    approx::assert_relative_eq!(
+        kin.lengthening_velocity,
+        -2.0 / 5f64.sqrt(),
+        epsilon = 1e-15
+    );
     let mut f_ext = [Force::ZERO; 1];
     path.add_tension(&kin, 10.0, &data, &mut f_ext).unwrap();
     // 10 N toward the anchor, applied at (1, 0, 0): moment about z = x fy.
@@ -196,6 +207,8 @@ fn coincident_points_give_zero_force_not_nan_and_bad_bodies_are_errors() {
     let bad = Path::new([Endpoint::on_body(0, same), Endpoint::on_body(7, same)]);
     assert!(matches!(
         bad.kinematics(&data),
-        Err(Error::InvalidDrive { problem: rodyn::error::DriveProblem::BodyOutOfRange { body: 7 } })
+        Err(Error::InvalidDrive {
+            problem: rodyn::error::DriveProblem::BodyOutOfRange { body: 7 }
+        })
     ));
 }

@@ -2,6 +2,9 @@
 //! against central finite differences, the dual-number route and an
 //! independent mass-matrix route (CRBA + RNEA).
 
+// Row and column indices mirror the matrix equations being checked.
+#![allow(clippy::needless_range_loop)]
+
 use rodyn::algorithm::crba::crba;
 use rodyn::algorithm::forward_dynamics::{Aba, Crba};
 use rodyn::algorithm::rnea::rnea;
@@ -58,7 +61,10 @@ fn muscle_robot_sensitivity_matches_central_differences() {
             let (mut ap, mut am) = (a, a);
             ap[k] += h;
             am[k] -= h;
-            let (dp, dm) = (ddq_at(&mut data, &q, &v, &ap), ddq_at(&mut data, &q, &v, &am));
+            let (dp, dm) = (
+                ddq_at(&mut data, &q, &v, &ap),
+                ddq_at(&mut data, &q, &v, &am),
+            );
             for i in 0..NV {
                 let fd = (dp[i] - dm[i]) / (2.0 * h);
                 approx::assert_relative_eq!(s[i][k], fd, epsilon = 1e-6 * scale);
@@ -98,7 +104,12 @@ fn muscle_robot_sensitivity_matches_dual_numbers() {
             )
             .unwrap();
             for i in 0..NV {
-                approx::assert_relative_eq!(s[i][k], ddq[i].du, epsilon = 1e-9, max_relative = 1e-10);
+                approx::assert_relative_eq!(
+                    s[i][k],
+                    ddq[i].du,
+                    epsilon = 1e-9,
+                    max_relative = 1e-10
+                );
             }
         }
     }
@@ -107,9 +118,8 @@ fn muscle_robot_sensitivity_matches_dual_numbers() {
 /// A floating torso with two revolute limbs on separate branches, two
 /// motors, a spring and a muscle spanning both branches.
 fn floating_model() -> Model<f64, 3, 9, 8> {
-    let body = |m: f64, c: Vec3<f64>| {
-        Inertia::new(m, c, Sym3::diagonal(0.05 * m, 0.04 * m, 0.03 * m))
-    };
+    let body =
+        |m: f64, c: Vec3<f64>| Inertia::new(m, c, Sym3::diagonal(0.05 * m, 0.04 * m, 0.03 * m));
     Model::new(
         [None, Some(0), Some(0)],
         [
@@ -188,11 +198,23 @@ fn floating_base_sensitivity_matches_the_mass_matrix_route_and_differences() {
             rng.uniform(-1.5, 1.5),
         ];
         let v: [f64; 8] = core::array::from_fn(|_| rng.uniform(-1.0, 1.0));
-        let w = [rng.uniform(-2.0, 2.0), rng.uniform(-2.0, 2.0), rng.uniform(0.1, 0.9)];
+        let w = [
+            rng.uniform(-2.0, 2.0),
+            rng.uniform(-2.0, 2.0),
+            rng.uniform(0.1, 0.9),
+        ];
         let tau = [0.0; 8];
         let mut s = [[0.0; 3]; 8];
         forward_dynamics_and_sensitivity(
-            &model, &mut data, &q, &v, &tau, &drives, &w, &mut forces, &mut s,
+            &model,
+            &mut data,
+            &q,
+            &v,
+            &tau,
+            &drives,
+            &w,
+            &mut forces,
+            &mut s,
         )
         .unwrap();
 
@@ -203,12 +225,23 @@ fn floating_base_sensitivity_matches_the_mass_matrix_route_and_differences() {
             let mut kin = Data::new();
             rodyn::algorithm::kinematics::forward_kinematics_velocity(&model, &mut kin, &q, &v)
                 .unwrap();
-            let state = rodyn::drive::DriveState { data: &kin, q: &q, v: &v };
+            let state = rodyn::drive::DriveState {
+                data: &kin,
+                q: &q,
+                v: &v,
+            };
             rodyn::drive::ForceElement::add_input_derivative(&drives, &state, &w, k, &mut d)
                 .unwrap();
             let zero = [0.0; 8];
-            let minus_jt_f =
-                *rnea(&no_gravity, &mut Data::new(), &q, &zero, &zero, Some(&d.f_ext)).unwrap();
+            let minus_jt_f = *rnea(
+                &no_gravity,
+                &mut Data::new(),
+                &q,
+                &zero,
+                &zero,
+                Some(&d.f_ext),
+            )
+            .unwrap();
             let rhs: [f64; 8] = core::array::from_fn(|i| d.tau[i] - minus_jt_f[i]);
             let x = solve(m, rhs);
             for i in 0..8 {
@@ -239,11 +272,25 @@ fn floating_base_sensitivity_matches_the_mass_matrix_route_and_differences() {
         }
         // The forward dynamics under the same drives agree between methods.
         let by_aba = *forward_dynamics_with_drives::<Aba, _, _, _, 3, 9, 8>(
-            &model, &mut Data::new(), &q, &v, &tau, &drives, &w, &mut forces,
+            &model,
+            &mut Data::new(),
+            &q,
+            &v,
+            &tau,
+            &drives,
+            &w,
+            &mut forces,
         )
         .unwrap();
         let by_crba = *forward_dynamics_with_drives::<Crba, _, _, _, 3, 9, 8>(
-            &model, &mut Data::new(), &q, &v, &tau, &drives, &w, &mut forces,
+            &model,
+            &mut Data::new(),
+            &q,
+            &v,
+            &tau,
+            &drives,
+            &w,
+            &mut forces,
         )
         .unwrap();
         for i in 0..8 {
@@ -255,7 +302,9 @@ fn floating_base_sensitivity_matches_the_mass_matrix_route_and_differences() {
 /// Gaussian elimination with partial pivoting for the small test systems.
 fn solve<const N: usize>(mut a: [[f64; N]; N], mut b: [f64; N]) -> [f64; N] {
     for c in 0..N {
-        let p = (c..N).max_by(|&i, &j| a[i][c].abs().total_cmp(&a[j][c].abs())).unwrap();
+        let p = (c..N)
+            .max_by(|&i, &j| a[i][c].abs().total_cmp(&a[j][c].abs()))
+            .unwrap();
         a.swap(c, p);
         b.swap(c, p);
         for r in c + 1..N {
@@ -272,4 +321,48 @@ fn solve<const N: usize>(mut a: [[f64; N]; N], mut b: [f64; N]) -> [f64; N] {
         x[r] = (b[r] - s) / a[r][r];
     }
     x
+}
+
+/// The firmware's scalar: the f32 muscle robot agrees with f64.
+#[test]
+fn muscle_robot_in_f32_agrees_with_f64() {
+    let (model, muscles) = (robot::model::<f64>(), robot::muscles::<f64>());
+    let (model32, muscles32) = (robot::model::<f32>(), robot::muscles::<f32>());
+    for (q, v, a) in robot_states(10) {
+        let mut s = [[0.0; NU]; NV];
+        let mut s32 = [[0.0f32; NU]; NV];
+        let ddq = *robot::sensitivity(
+            &model,
+            &muscles,
+            &mut Data::new(),
+            &q,
+            &v,
+            &a,
+            &mut DriveForces::new(),
+            &mut s,
+        )
+        .unwrap();
+        let ddq32 = *robot::sensitivity(
+            &model32,
+            &muscles32,
+            &mut Data::new(),
+            &q.map(|x| x as f32),
+            &v.map(|x| x as f32),
+            &a.map(|x| x as f32),
+            &mut DriveForces::new(),
+            &mut s32,
+        )
+        .unwrap();
+        let scale = s.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
+        for i in 0..NV {
+            approx::assert_relative_eq!(
+                ddq32[i] as f64,
+                ddq[i],
+                epsilon = 1e-4 * ddq[i].abs().max(10.0)
+            );
+            for k in 0..NU {
+                approx::assert_relative_eq!(s32[i][k] as f64, s[i][k], epsilon = 1e-4 * scale);
+            }
+        }
+    }
 }

@@ -3,6 +3,9 @@
 //! maximum isometric force), by running the same dynamics on `Dual`,
 //! against central finite differences within 1e-6 relative (f64).
 
+// Row and column indices mirror the matrix equations being checked.
+#![allow(clippy::needless_range_loop)]
+
 use rodyn::drive::muscle_robot::{self as robot, NU, NV};
 use rodyn::drive::DriveForces;
 use rodyn::planar::{PlanarInertia, PlanarTransform, Vec2};
@@ -44,7 +47,10 @@ impl Parameter {
             }
             Self::UpperLinkLength => {
                 model
-                    .set_placement(1, PlanarTransform::from_translation(Vec2::new(value, S::ZERO)))
+                    .set_placement(
+                        1,
+                        PlanarTransform::from_translation(Vec2::new(value, S::ZERO)),
+                    )
                     .unwrap();
             }
             Self::OptimalFiberLength => muscles[2].params.optimal_fiber_length = value,
@@ -97,7 +103,10 @@ fn parameter_derivatives_by_dual_numbers_match_central_differences() {
                     "{p:?} at q {q:?}: x d qdd[{i}]/dx dual {dual} vs central difference {fd}"
                 );
                 // A derivative that is zero everywhere would pass trivially.
-                assert!(fd.abs() > 1e-2, "{p:?}: qdd[{i}] hardly depends on it ({fd})");
+                assert!(
+                    fd.abs() > 1e-2,
+                    "{p:?}: qdd[{i}] hardly depends on it ({fd})"
+                );
                 // The value part is the f64 result.
                 let plain = p.ddq(x, q, v, a);
                 approx::assert_relative_eq!(by_dual[i].re, plain[i], max_relative = 1e-14);

@@ -107,12 +107,15 @@ const MUSCLE_COLORS: [RGBColor; NU] = [
     RGBColor(214, 39, 40),
 ];
 
+/// One curve: legend label, colour, dashed or not, points (t, y).
+type Series = (String, RGBColor, bool, Vec<(f64, f64)>);
+
 /// Draws one panel of time series.
 fn panel<DB: DrawingBackend>(
     area: &DrawingArea<DB, plotters::coord::Shift>,
     title: &str,
     y_label: &str,
-    series: &[(String, RGBColor, bool, Vec<(f64, f64)>)],
+    series: &[Series],
 ) -> Result<(), Box<dyn std::error::Error>>
 where
     DB::ErrorType: 'static,
@@ -190,16 +193,16 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             ],
         )?;
         let mut series = Vec::new();
-        for k in 0..NU {
+        for (k, color) in MUSCLE_COLORS.into_iter().enumerate() {
             series.push((
                 format!("u{}", k + 1),
-                MUSCLE_COLORS[k],
+                color,
                 true,
                 samples.iter().map(|s| (s.t, s.u[k])).collect(),
             ));
             series.push((
                 format!("a{}", k + 1),
-                MUSCLE_COLORS[k],
+                color,
                 false,
                 samples.iter().map(|s| (s.t, s.a[k])).collect(),
             ));

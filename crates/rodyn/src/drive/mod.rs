@@ -27,7 +27,50 @@
 //!
 //! **A new element** is a type that implements [`ForceElement`]; it lives in
 //! the user's crate. Arrays and tuples of elements are elements themselves,
-//! so a whole drive set is one value.
+//! so a whole drive set is one value:
+//!
+//! ```
+//! use rodyn::algorithm::forward_dynamics::Aba;
+//! use rodyn::drive::*;
+//! use rodyn::prelude::*;
+//! use rodyn::Endpoint;
+//!
+//! /// Viscous friction in every joint: τ = -b q̇ (a user's own element).
+//! struct JointFriction(f64);
+//! impl<G: Space, const NB: usize, const NV: usize> ForceElement<f64, G, NB, NV> for JointFriction {
+//!     fn add_forces(&self, state: &DriveState<'_, f64, G, NB, NV>, _w: &[f64],
+//!                   out: &mut DriveForces<f64, G, NB, NV>) -> rodyn::Result<()> {
+//!         for (tau, v) in out.tau.iter_mut().zip(state.v) {
+//!             *tau -= self.0 * v;
+//!         }
+//!         Ok(())
+//!     }
+//!     fn add_input_derivative(&self, _: &DriveState<'_, f64, G, NB, NV>, _: &[f64], _: usize,
+//!                             _: &mut DriveForces<f64, G, NB, NV>) -> rodyn::Result<()> {
+//!         Ok(()) // reads no input
+//!     }
+//! }
+//!
+//! const PENDULUM: Model<f64, 1, 1, 1> = Model::new(
+//!     [None], [Joint::revolute(Axis::Z)], [Transform::IDENTITY],
+//!     [Inertia::point_mass(1.0, Vec3::new(0.0, -0.5, 0.0))],
+//!     Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
+//! );
+//! // A return spring from the link's end to a world anchor, a motor, and friction.
+//! let spring = LinearSpring::new(
+//!     Path::new([Endpoint::on_body(0, Vec3::new(0.0, -0.5, 0.0)),
+//!                Endpoint::in_world(Vec3::new(0.4, 0.0, 0.0))]),
+//!     80.0, 0.3);
+//! let motor = JointMotor::new(0, 0, 50.0, 0.02, 1e-5);
+//! let drives = (spring, motor, JointFriction(0.1));
+//! let (mut data, mut forces) = (Data::new(), DriveForces::new());
+//! let current = [0.5]; // A, the motor's drive input
+//! let ddq = forward_dynamics_with_drives::<Aba, _, _, _, 1, 1, 1>(
+//!     &PENDULUM, &mut data, &[0.3], &[1.0], &[0.0], &drives, &current, &mut forces)?;
+//! assert!(ddq[0].is_finite());
+//! assert!((forces.tau[0] - (50.0 * 0.02 * 0.5 - 0.1 * 1.0)).abs() < 1e-12);
+//! # Ok::<(), rodyn::Error>(())
+//! ```
 
 pub mod damper;
 pub mod geometry;
