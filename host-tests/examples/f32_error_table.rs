@@ -6,39 +6,51 @@
 //! ```
 //!
 //! Error measure: `‖x − x_ref‖∞ / ‖x_ref‖∞`, the worst over the fixture's
-//! states (see `rodyn_host_tests::fixture::compare`). In f32 the inputs are
-//! rounded to f32 too, so the table shows what a caller with f32 data gets.
+//! states and over each algorithm's checks (see
+//! `rodyn_host_tests::fixture::compare`). In f32 the inputs are rounded to
+//! f32 too, so the table shows what a caller with f32 data gets.
+//! `κ₂(M)` is the largest 2-norm condition number of the reference mass
+//! matrix over the states: forward dynamics loses about that factor.
 
+use nalgebra::DMatrix;
 use rodyn::Scalar;
-use rodyn_host_tests::fixture::compare::{compare_fixture, Check, Errors};
+use rodyn_host_tests::fixture::compare::{compare_fixture, ALGORITHMS};
+use rodyn_host_tests::fixture::Fixture;
 use rodyn_host_tests::for_each_fixture;
 
-/// The columns of the table.
-const COLUMNS: [Check; 7] = [
-    Check::Rnea,
-    Check::RneaFext,
-    Check::Crba,
-    Check::Aba,
-    Check::CrbaFd,
-    Check::GravityTorques,
-    Check::KineticEnergy,
-];
+/// The largest condition number of the fixture's reference mass matrices.
+fn mass_matrix_condition(name: &str) -> f64 {
+    let fixture = Fixture::load_named(name).unwrap_or_else(|e| panic!("{e}"));
+    fixture
+        .states
+        .iter()
+        .map(|s| {
+            let n = s.mass_matrix.len();
+            let m = DMatrix::from_fn(n, n, |r, c| s.mass_matrix[r][c]);
+            let eig = m.symmetric_eigen().eigenvalues;
+            eig.max() / eig.min()
+        })
+        .fold(0.0, f64::max)
+}
 
 fn row<S: Scalar, const NB: usize, const NQ: usize, const NV: usize>(name: &str) -> String {
-    let errors: Errors =
-        compare_fixture::<S, NB, NQ, NV>(name).unwrap_or_else(|e| panic!("{name}: {e}"));
-    let cells: Vec<String> = COLUMNS
+    let errors = compare_fixture::<S, NB, NQ, NV>(name).unwrap_or_else(|e| panic!("{name}: {e}"));
+    let cells: Vec<String> = ALGORITHMS
         .iter()
-        .map(|&c| format!("{:.1e}", errors.get(c)))
+        .map(|(_, checks)| format!("{:.1e}", errors.max_of(checks)))
         .collect();
-    format!("| {name} | {NV} | {} |", cells.join(" | "))
+    format!(
+        "| {name} | {NV} | {:.0e} | {} |",
+        mass_matrix_condition(name),
+        cells.join(" | ")
+    )
 }
 
 macro_rules! table {
     ($scalar:ty; $(($id:ident, $name:literal, $nb:literal, $nq:literal, $nv:literal)),* $(,)?) => {{
-        let header: Vec<&str> = COLUMNS.iter().map(|c| c.name()).collect();
-        println!("| model | nv | {} |", header.join(" | "));
-        println!("|---|---:|{}", "---:|".repeat(COLUMNS.len()));
+        let header: Vec<&str> = ALGORITHMS.iter().map(|(name, _)| *name).collect();
+        println!("| model | nv | κ₂(M) | {} |", header.join(" | "));
+        println!("|---|---:|---:|{}", "---:|".repeat(ALGORITHMS.len()));
         $( println!("{}", row::<$scalar, $nb, $nq, $nv>($name)); )*
     }};
 }
@@ -51,7 +63,7 @@ macro_rules! f64_table {
 }
 
 fn main() {
-    println!("### f32: relative error against Pinocchio (f64)\n");
+    println!("### f32: relative error against Pinocchio\n");
     for_each_fixture!(f32_table);
     println!("\n### f64: relative error against Pinocchio\n");
     for_each_fixture!(f64_table);
