@@ -59,8 +59,7 @@ pub fn example(name: &str) -> Result<&'static Example> {
 
 /// The example's ELF after [`build`].
 pub fn elf(example: &Example) -> PathBuf {
-    shell::root()
-        .join("target")
+    shell::target_dir()
         .join(TARGET)
         .join("release")
         .join(example.name)
@@ -133,8 +132,7 @@ pub fn expected_path(example: &Example) -> PathBuf {
 
 /// Where the last run's log is kept, for the host tests and for reading.
 pub fn last_log_path(example: &Example) -> PathBuf {
-    shell::root()
-        .join("target")
+    shell::target_dir()
         .join("firmware-logs")
         .join(format!("{}.log", example.name))
 }

@@ -12,6 +12,11 @@ pub fn root() -> PathBuf {
         .to_path_buf()
 }
 
+/// Cargo's target directory: `CARGO_TARGET_DIR` when set, else `target/`.
+pub fn target_dir() -> PathBuf {
+    std::env::var_os("CARGO_TARGET_DIR").map_or_else(|| root().join("target"), PathBuf::from)
+}
+
 /// Runs `command`, inheriting stdout and stderr; fails on a non-zero status.
 pub fn run(command: &mut Command) -> Result<()> {
     println!("$ {}", describe(command));

@@ -53,7 +53,8 @@ struct Cost {
     stack: Option<u32>,
 }
 
-/// Probes every algorithm on `model`, printing one `cost` line each.
+/// Probes every algorithm on `model`, printing one `cost` line each
+/// (`name` without spaces: the xtask splits the line at whitespace).
 /// Returns false when an algorithm failed.
 fn probe<const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     name: &str,
@@ -143,8 +144,8 @@ fn main() -> ! {
     defmt::println!("cost_probe: f32, {} random states per model and algorithm", STATES);
     sin_cos_cost(&counter);
     let passed = probe("pendulum", &PENDULUM, &counter)
-        & probe("pendulum (planar)", &PENDULUM_PLANAR, &counter)
-        & probe("Panda 7-DoF arm", &PANDA, &counter)
-        & probe("quadruped (floating base, 12 joints)", &QUADRUPED, &counter);
+        & probe("pendulum-planar", &PENDULUM_PLANAR, &counter)
+        & probe("panda-7dof", &PANDA, &counter)
+        & probe("quadruped-floating", &QUADRUPED, &counter);
     exit_with(passed)
 }
