@@ -1,0 +1,98 @@
+//! A model with its workspace and states, behind an object-safe interface, so
+//! that binaries can time models of different const sizes in one list.
+
+use crate::state::{random_states, State};
+use crate::timing::{calls_for, ns_per_call};
+use crate::Algorithm;
+use rodyn::space::Space;
+use rodyn::{Data, Model, Scalar};
+
+/// A model that can be timed.
+pub trait Case {
+    /// Number of velocity coordinates.
+    fn nv(&self) -> usize;
+    /// Calls of `algorithm` that take about `target_ns`.
+    fn calibrate(&mut self, algorithm: Algorithm, target_ns: f64) -> usize;
+    /// Nanoseconds per call of `algorithm`, over `calls` calls.
+    fn time(&mut self, algorithm: Algorithm, calls: usize) -> f64;
+    /// RNEA torques of the first state, in f64.
+    fn first_torques(&mut self) -> Vec<f64>;
+}
+
+/// A model in scalar `S` and geometry `G` with its random states.
+pub struct ModelCase<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space> {
+    model: Model<S, NB, NQ, NV, G>,
+    data: Box<Data<S, NB, NV, G>>,
+    states: Vec<State<S, NQ, NV>>,
+}
+
+impl<const NB: usize, const NQ: usize, const NV: usize, G: Space> ModelCase<f64, NB, NQ, NV, G> {
+    /// `model` with `count` random states from `seed`.
+    #[must_use]
+    pub fn new(model: Model<f64, NB, NQ, NV, G>, count: usize, seed: u64) -> Self {
+        let states = random_states(&model, count, seed);
+        Self {
+            model,
+            data: Box::new(Data::new()),
+            states,
+        }
+    }
+    /// The same model and states in `f32`.
+    ///
+    /// # Panics
+    /// For a model with custom joints, which cannot change scalar type.
+    #[must_use]
+    pub fn to_f32(&self) -> ModelCase<f32, NB, NQ, NV, G> {
+        ModelCase {
+            model: self.model.cast().expect("built-in joints cast"),
+            data: Box::new(Data::new()),
+            states: self.states.iter().map(State::cast).collect(),
+        }
+    }
+    /// The states, for handing to another library.
+    #[must_use]
+    pub fn states(&self) -> &[State<f64, NQ, NV>] {
+        &self.states
+    }
+    /// The model.
+    #[must_use]
+    pub fn model(&self) -> &Model<f64, NB, NQ, NV, G> {
+        &self.model
+    }
+}
+
+impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space> Case
+    for ModelCase<S, NB, NQ, NV, G>
+{
+    fn nv(&self) -> usize {
+        NV
+    }
+    fn calibrate(&mut self, algorithm: Algorithm, target_ns: f64) -> usize {
+        let Self {
+            model,
+            data,
+            states,
+        } = self;
+        calls_for(target_ns, states.len(), |k| {
+            algorithm.run(model, data, &states[k])
+        })
+    }
+    fn time(&mut self, algorithm: Algorithm, calls: usize) -> f64 {
+        let Self {
+            model,
+            data,
+            states,
+        } = self;
+        ns_per_call(calls, states.len(), |k| {
+            algorithm.run(model, data, &states[k])
+        })
+    }
+    fn first_torques(&mut self) -> Vec<f64> {
+        let s = &self.states[0];
+        rodyn::algorithm::rnea::rnea(&self.model, &mut self.data, &s.q, &s.v, &s.a, None)
+            .expect("rnea")
+            .iter()
+            .map(|t| t.to_f64())
+            .collect()
+    }
+}
