@@ -1,0 +1,55 @@
+//! Runs one algorithm on one model many times, for profilers.
+//!
+//! Timings on a shared machine are noisy; instruction counts are not. Under
+//! callgrind the count per call is deterministic:
+//!
+//! ```text
+//! cargo build -p rodyn-bench --release --bin profile
+//! valgrind --tool=callgrind --callgrind-out-file=/tmp/cg.out \
+//!     target/release/profile aba panda 1000
+//! callgrind_annotate /tmp/cg.out | head -30
+//! ```
+//!
+//! Without a profiler it prints the wall-clock time per call.
+//! Models: panda, ur5, solo12, chain<N>, chain<N>_planar (N in 5, 10, 20, 60).
+
+use rodyn_bench::cases::{Case, ModelCase};
+use rodyn_bench::models::{planar_chain, planar_chain_3d, PANDA, SOLO12, UR5};
+use rodyn_bench::Algorithm;
+
+fn case(name: &str) -> Option<Box<dyn Case>> {
+    const STATES: usize = 16;
+    const SEED: u64 = 7;
+    Some(match name {
+        "panda" => Box::new(ModelCase::new(PANDA, STATES, SEED)),
+        "ur5" => Box::new(ModelCase::new(UR5, STATES, SEED)),
+        "solo12" => Box::new(ModelCase::new(SOLO12, STATES, SEED)),
+        "chain5" => Box::new(ModelCase::new(planar_chain_3d::<5>(), STATES, SEED)),
+        "chain10" => Box::new(ModelCase::new(planar_chain_3d::<10>(), STATES, SEED)),
+        "chain20" => Box::new(ModelCase::new(planar_chain_3d::<20>(), STATES, SEED)),
+        "chain60" => Box::new(ModelCase::new(planar_chain_3d::<60>(), STATES, SEED)),
+        "chain5_planar" => Box::new(ModelCase::new(planar_chain::<5>(), STATES, SEED)),
+        "chain10_planar" => Box::new(ModelCase::new(planar_chain::<10>(), STATES, SEED)),
+        "chain20_planar" => Box::new(ModelCase::new(planar_chain::<20>(), STATES, SEED)),
+        "chain60_planar" => Box::new(ModelCase::new(planar_chain::<60>(), STATES, SEED)),
+        _ => return None,
+    })
+}
+
+fn main() -> Result<(), String> {
+    let usage = "usage: profile <rnea|crba|crba_fd|aba> <model> [calls]";
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let algorithm = Algorithm::ALL
+        .into_iter()
+        .find(|a| Some(a.name()) == args.first().map(String::as_str))
+        .ok_or(usage)?;
+    let name = args.get(1).ok_or(usage)?;
+    let mut case = case(name).ok_or(format!("unknown model {name}"))?;
+    let calls = match args.get(2) {
+        Some(c) => c.parse().map_err(|e| format!("calls: {e}"))?,
+        None => 100_000,
+    };
+    let ns = case.time(algorithm, calls);
+    println!("{} {name}: {ns:.1} ns/call over {calls} calls", algorithm.name());
+    Ok(())
+}
