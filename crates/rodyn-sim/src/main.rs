@@ -8,6 +8,8 @@
 //! ```
 
 mod animate;
+mod chart;
+mod failures;
 mod models;
 mod plot;
 mod run;
@@ -54,6 +56,21 @@ enum Command {
         #[arg(short, long, default_value = "out")]
         out: PathBuf,
     },
+    /// The speed-versus-accuracy chart for the arm and the quadruped.
+    Chart {
+        /// Output directory.
+        #[arg(short, long, default_value = "docs/img/sim")]
+        out: PathBuf,
+    },
+    /// The maps of where methods fail.
+    Failures {
+        /// Which experiment.
+        #[arg(value_enum, default_value_t = failures::Experiment::All)]
+        experiment: failures::Experiment,
+        /// Output directory.
+        #[arg(short, long, default_value = "docs/img/sim")]
+        out: PathBuf,
+    },
 }
 
 fn main() {
@@ -79,6 +96,8 @@ fn main() {
             };
             run::run_command(&config, &out)
         }
+        Command::Chart { out } => chart::chart_command(&out),
+        Command::Failures { experiment, out } => failures::failures_command(experiment, &out),
     };
     if let Err(e) = result {
         eprintln!("error: {e}");
