@@ -11,9 +11,15 @@ use rodyn::{Data, Model, Scalar};
 pub trait Case {
     /// Number of velocity coordinates.
     fn nv(&self) -> usize;
+    /// `false` when `algorithm` reports an error on one of the states
+    /// (such a case is not timed).
+    fn succeeds(&mut self, algorithm: Algorithm) -> bool;
     /// Calls of `algorithm` that take about `target_ns`.
     fn calibrate(&mut self, algorithm: Algorithm, target_ns: f64) -> usize;
     /// Nanoseconds per call of `algorithm`, over `calls` calls.
+    ///
+    /// # Panics
+    /// When the algorithm fails: check [`succeeds`](Self::succeeds) first.
     fn time(&mut self, algorithm: Algorithm, calls: usize) -> f64;
     /// RNEA torques of the first state, in f64.
     fn first_torques(&mut self) -> Vec<f64>;
@@ -66,6 +72,16 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space> Cas
 {
     fn nv(&self) -> usize {
         NV
+    }
+    fn succeeds(&mut self, algorithm: Algorithm) -> bool {
+        let Self {
+            model,
+            data,
+            states,
+        } = self;
+        states
+            .iter()
+            .all(|s| algorithm.try_run(model, data, s).is_ok())
     }
     fn calibrate(&mut self, algorithm: Algorithm, target_ns: f64) -> usize {
         let Self {

@@ -54,8 +54,33 @@ impl Algorithm {
     /// Runs the algorithm once on `state` and returns one entry of its
     /// result, so that the optimiser cannot drop the call.
     ///
+    /// # Errors
+    /// As the algorithm: e.g. a mass matrix that is not numerically
+    /// positive definite in `f32`.
+    #[inline]
+    pub fn try_run<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
+        self,
+        model: &Model<S, NB, NQ, NV, G>,
+        data: &mut Data<S, NB, NV, G>,
+        state: &State<S, NQ, NV>,
+    ) -> rodyn::Result<S> {
+        let last = NV - 1;
+        Ok(match self {
+            Self::Rnea => rnea(model, data, &state.q, &state.v, &state.a, None)?[last],
+            Self::Crba => crba(model, data, &state.q)?[last][0],
+            Self::CrbaForwardDynamics => {
+                Crba::forward_dynamics(model, data, &state.q, &state.v, &state.tau, None)?[last]
+            }
+            Self::Aba => {
+                Aba::forward_dynamics(model, data, &state.q, &state.v, &state.tau, None)?[last]
+            }
+        })
+    }
+
+    /// [`try_run`](Self::try_run) for states known to be valid.
+    ///
     /// # Panics
-    /// When the algorithm reports an error: benchmark states are valid.
+    /// When the algorithm reports an error.
     #[inline]
     pub fn run<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
         self,
@@ -63,18 +88,9 @@ impl Algorithm {
         data: &mut Data<S, NB, NV, G>,
         state: &State<S, NQ, NV>,
     ) -> S {
-        let last = NV - 1;
-        match self {
-            Self::Rnea => {
-                rnea(model, data, &state.q, &state.v, &state.a, None).expect("rnea")[last]
-            }
-            Self::Crba => crba(model, data, &state.q).expect("crba")[last][0],
-            Self::CrbaForwardDynamics => {
-                Crba::forward_dynamics(model, data, &state.q, &state.v, &state.tau, None)
-                    .expect("crba forward dynamics")[last]
-            }
-            Self::Aba => Aba::forward_dynamics(model, data, &state.q, &state.v, &state.tau, None)
-                .expect("aba")[last],
+        match self.try_run(model, data, state) {
+            Ok(x) => x,
+            Err(e) => panic!("{} failed on a benchmark state: {e:?}", self.name()),
         }
     }
 }

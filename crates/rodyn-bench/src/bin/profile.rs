@@ -50,6 +50,9 @@ fn main() -> Result<(), String> {
         None => 100_000,
     };
     let ns = case.time(algorithm, calls);
-    println!("{} {name}: {ns:.1} ns/call over {calls} calls", algorithm.name());
+    println!(
+        "{} {name}: {ns:.1} ns/call over {calls} calls",
+        algorithm.name()
+    );
     Ok(())
 }

@@ -1,0 +1,232 @@
+//! ABA against CRBA forward dynamics on revolute chains of 1 to 120 links.
+//!
+//! ```text
+//! cargo run -p rodyn-bench --release --bin crossover [-- --rounds N --ms M --out FILE]
+//! ```
+//!
+//! Times both methods on the planar chains (planar algebra and their 3-D
+//! equivalents, `f64` and `f32`), prints a markdown table of the medians and
+//! the crossover per variant, and draws `docs/img/perf/crossover.svg`: the
+//! time of CRBA forward dynamics divided by that of ABA against the number
+//! of links. Below 1, CRBA is faster.
+
+use plotters::prelude::*;
+use rodyn_bench::cases::{Case, ModelCase};
+use rodyn_bench::models::{planar_chain, planar_chain_3d};
+use rodyn_bench::timing::median;
+use rodyn_bench::Algorithm;
+use std::io::Write as _;
+
+const STATES: usize = 32;
+const SEED: u64 = 0xC805_5;
+
+/// One curve of the chart: a geometry and a scalar type.
+const VARIANTS: [&str; 4] = ["planar f32", "planar f64", "3-D f32", "3-D f64"];
+
+/// The four variants of the chain of `N` links, in [`VARIANTS`] order.
+fn chain_cases<const N: usize>() -> [Box<dyn Case>; 4] {
+    let planar = ModelCase::new(planar_chain::<N>(), STATES, SEED);
+    let spatial = ModelCase::new(planar_chain_3d::<N>(), STATES, SEED);
+    [
+        Box::new(planar.to_f32()),
+        Box::new(planar),
+        Box::new(spatial.to_f32()),
+        Box::new(spatial),
+    ]
+}
+
+/// Chain lengths, each with its four variants.
+fn all_chains() -> Vec<(usize, [Box<dyn Case>; 4])> {
+    macro_rules! chains {
+        ($($n:literal),*) => { vec![$(($n, chain_cases::<$n>())),*] };
+    }
+    chains!(1, 2, 3, 4, 6, 8, 10, 12, 16, 20, 30, 40, 60, 80, 120)
+}
+
+struct Options {
+    rounds: usize,
+    ms: f64,
+    out: String,
+}
+
+fn parse_args() -> Result<Options, String> {
+    let mut opts = Options {
+        rounds: 5,
+        ms: 10.0,
+        out: "docs/img/perf/crossover.svg".into(),
+    };
+    let mut args = std::env::args().skip(1);
+    while let Some(arg) = args.next() {
+        let mut value = || args.next().ok_or(format!("{arg} needs a value"));
+        match arg.as_str() {
+            "--rounds" => opts.rounds = value()?.parse().map_err(|e| format!("--rounds: {e}"))?,
+            "--ms" => opts.ms = value()?.parse().map_err(|e| format!("--ms: {e}"))?,
+            "--out" => opts.out = value()?,
+            _ => return Err(format!("unknown argument {arg}")),
+        }
+    }
+    Ok(opts)
+}
+
+/// The smallest chain length from which ABA stays faster than CRBA.
+fn crossover(lengths: &[usize], ratio: &[f64]) -> Option<usize> {
+    let last_crba_win = ratio.iter().rposition(|&r| r < 1.0);
+    match last_crba_win {
+        None => lengths.first().copied(),
+        Some(k) => lengths.get(k + 1).copied(),
+    }
+}
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let opts = parse_args()?;
+    let mut chains = all_chains();
+    let target_ns = opts.ms * 1.0e6;
+    let methods = [Algorithm::Aba, Algorithm::CrbaForwardDynamics];
+    // calls[chain][variant][method], fixed for every round.
+    let calls: Vec<Vec<[usize; 2]>> = chains
+        .iter_mut()
+        .map(|(_, cases)| {
+            cases
+                .iter_mut()
+                .map(|c| {
+                    // A method that fails on the chain (CRBA's factorisation in
+                    // f32 on long chains) gets no timing: 0 calls, NaN below.
+                    methods.map(|m| {
+                        if c.succeeds(m) {
+                            c.calibrate(m, target_ns)
+                        } else {
+                            0
+                        }
+                    })
+                })
+                .collect()
+        })
+        .collect();
+    let mut samples: Vec<[[Vec<f64>; 2]; 4]> =
+        (0..chains.len()).map(|_| Default::default()).collect();
+    for round in 0..opts.rounds {
+        eprint!("round {}/{}\r", round + 1, opts.rounds);
+        let _ = std::io::stderr().flush();
+        for (c, (_, cases)) in chains.iter_mut().enumerate() {
+            for (v, case) in cases.iter_mut().enumerate() {
+                // Alternate the order of the two methods between rounds.
+                for step in 0..2 {
+                    let m = (step + round) % 2;
+                    let ns = match calls[c][v][m] {
+                        0 => f64::NAN,
+                        n => case.time(methods[m], n),
+                    };
+                    samples[c][v][m].push(ns);
+                }
+            }
+        }
+    }
+    eprintln!();
+
+    let lengths: Vec<usize> = chains.iter().map(|(n, _)| *n).collect();
+    // ns[variant][method][chain]
+    let mut ns = vec![[vec![0.0; lengths.len()], vec![0.0; lengths.len()]]; 4];
+    for (c, per_variant) in samples.iter_mut().enumerate() {
+        for (v, per_method) in per_variant.iter_mut().enumerate() {
+            for (m, values) in per_method.iter_mut().enumerate() {
+                ns[v][m][c] = median(values);
+            }
+        }
+    }
+    let ratios: Vec<Vec<f64>> = ns
+        .iter()
+        .map(|[aba, crba]| crba.iter().zip(aba).map(|(c, a)| c / a).collect())
+        .collect();
+
+    println!(
+        "{} rounds, medians, ns per call; ratio = CRBA forward dynamics / ABA.\n",
+        opts.rounds
+    );
+    print!("| links |");
+    for v in VARIANTS {
+        print!(" ABA {v} | CRBA {v} | ratio |");
+    }
+    println!();
+    println!("|---:|{}", "---:|---:|---:|".repeat(VARIANTS.len()));
+    for (c, n) in lengths.iter().enumerate() {
+        print!("| {n} |");
+        for v in 0..VARIANTS.len() {
+            let (aba, crba, ratio) = (ns[v][0][c], ns[v][1][c], ratios[v][c]);
+            if ratio.is_finite() {
+                print!(" {aba:.0} | {crba:.0} | {ratio:.2} |");
+            } else {
+                // CRBA reported the mass matrix as not positive definite.
+                print!(" {aba:.0} | fails | – |");
+            }
+        }
+        println!();
+    }
+    println!();
+    for (v, name) in VARIANTS.iter().enumerate() {
+        match crossover(&lengths, &ratios[v]) {
+            Some(n) => println!("{name}: ABA is faster from {n} links on"),
+            None => println!("{name}: CRBA is faster at every length measured"),
+        }
+    }
+
+    draw(&opts.out, &lengths, &ratios)?;
+    eprintln!("wrote {}", opts.out);
+    Ok(())
+}
+
+fn draw(
+    path: &str,
+    lengths: &[usize],
+    ratios: &[Vec<f64>],
+) -> Result<(), Box<dyn std::error::Error>> {
+    let root = SVGBackend::new(path, (800, 500)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let max_ratio = ratios.iter().flatten().fold(1.0f64, |m, &r| m.max(r)) * 1.1;
+    let min_ratio = ratios.iter().flatten().fold(1.0f64, |m, &r| m.min(r)) * 0.9;
+    let max_n = *lengths.last().unwrap_or(&1) as f64;
+    let mut chart = ChartBuilder::on(&root)
+        .caption(
+            "rodyn: CRBA forward dynamics time / ABA time, revolute chains",
+            ("sans-serif", 20),
+        )
+        .margin(15)
+        .x_label_area_size(45)
+        .y_label_area_size(60)
+        .build_cartesian_2d(
+            (1.0f64..max_n).log_scale(),
+            (min_ratio..max_ratio).log_scale(),
+        )?;
+    chart
+        .configure_mesh()
+        .x_desc("links (degrees of freedom)")
+        .y_desc("CRBA / ABA (below 1: CRBA faster)")
+        .draw()?;
+    chart.draw_series(LineSeries::new(
+        [(1.0, 1.0), (max_n, 1.0)],
+        BLACK.stroke_width(1),
+    ))?;
+    let colours = [RED, BLUE, GREEN, MAGENTA];
+    for ((name, ratio), colour) in VARIANTS.iter().zip(ratios).zip(colours) {
+        let points: Vec<(f64, f64)> = lengths
+            .iter()
+            .map(|&n| n as f64)
+            .zip(ratio.iter().copied())
+            .filter(|(_, r)| r.is_finite())
+            .collect();
+        chart
+            .draw_series(LineSeries::new(points.clone(), colour.stroke_width(2)))?
+            .label(*name)
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2))
+            });
+        chart.draw_series(points.iter().map(|&p| Circle::new(p, 3, colour.filled())))?;
+    }
+    chart
+        .configure_series_labels()
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .position(SeriesLabelPosition::UpperLeft)
+        .draw()?;
+    root.present()?;
+    Ok(())
+}
