@@ -108,14 +108,24 @@ fn check_model<const NB: usize, const NQ: usize, const NV: usize>(
 #[test]
 fn firmware_f32_results_agree_with_host_f64() {
     let path = std::env::var("RODYN_AGREEMENT_LOG").unwrap_or_else(|_| {
-        concat!(env!("CARGO_MANIFEST_DIR"), "/../firmware/expected/agreement.log").to_string()
+        concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../firmware/expected/agreement.log"
+        )
+        .to_string()
     });
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
     let states = parse_log(&text);
     for (name, (rnea_err, aba_err, count)) in [
-        ("pendulum", check_model("pendulum", &models::PENDULUM, &states)),
+        (
+            "pendulum",
+            check_model("pendulum", &models::PENDULUM, &states),
+        ),
         ("panda", check_model("panda", &models::PANDA, &states)),
-        ("quadruped", check_model("quadruped", &models::QUADRUPED, &states)),
+        (
+            "quadruped",
+            check_model("quadruped", &models::QUADRUPED, &states),
+        ),
     ] {
         println!("{name}: {count} states, max relative difference RNEA {rnea_err:.2e}, ABA {aba_err:.2e}");
         assert!(count >= 8, "{name}: only {count} states in {path}");

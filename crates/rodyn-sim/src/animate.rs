@@ -8,6 +8,9 @@ use rodyn::spatial::{Spatial, Vec3};
 use rodyn::{Data, Endpoint, Model};
 use std::path::Path;
 
+/// A line between two world points (m).
+type Segment = (Vec3<f64>, Vec3<f64>);
+
 /// Writes one frame per `frame_interval` seconds of `trajectory` (at most
 /// 200 frames) to an animated GIF, 480 x 360 px. Lines join each body's
 /// origin to its parent's and to the endpoints on it; the ground is z = 0.
@@ -23,14 +26,16 @@ pub fn stick_figure_gif<const NB: usize, const NQ: usize, const NV: usize>(
     init_fonts();
     let mut data = Data::new();
     // Segments of every sampled frame in world coordinates.
-    let mut frames: Vec<(f64, Vec<(Vec3<f64>, Vec3<f64>)>)> = Vec::new();
+    let mut frames: Vec<(f64, Vec<Segment>)> = Vec::new();
     let mut next_t = 0.0;
     for (t, q) in trajectory.t.iter().zip(&trajectory.q) {
         if *t + 1e-9 < next_t || frames.len() >= 200 {
             continue;
         }
         next_t = t + frame_interval;
-        let q: [f64; NQ] = q.as_slice().try_into()?;
+        // Widened f32 quaternions are unit only to f32 precision.
+        let mut q: [f64; NQ] = q.as_slice().try_into()?;
+        model.normalize(&mut q);
         forward_kinematics(model, &mut data, &q)?;
         let mut segments = Vec::new();
         for i in 0..NB {

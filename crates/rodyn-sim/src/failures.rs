@@ -1,7 +1,7 @@
 //! `rodyn-sim failures`: where each method breaks down, one plot each.
 
 use crate::models::{chain, light_tip_pendulum, slider, tumbling_box};
-use crate::plot::{plot, Figure, Mark, Scale, Series};
+use crate::plot::{plot, Curve, Figure, Mark, Scale, Series};
 use crate::scenario::IntegratorKind;
 use clap::ValueEnum;
 use rodyn::algorithm::forward_dynamics::{Aba, Crba, ForwardDynamics};
@@ -17,6 +17,10 @@ use rodyn::{Data, Model, Scalar};
 use std::path::Path;
 
 type Res = Result<(), Box<dyn std::error::Error>>;
+/// A drift curve and, if rodyn stopped the run, when and why.
+type DriftRun = (Curve, Option<(f64, rodyn::Error)>);
+/// A named error measurement.
+type Case = (&'static str, fn(f64) -> Result<f64, rodyn::Error>);
 
 /// The experiments.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -107,14 +111,14 @@ pub fn chain_error<F: ForwardDynamics, const N: usize>() -> (f64, Option<f64>) {
 
 macro_rules! chain_rows {
     ($($n:literal),*) => {
-        vec![$(($n, chain_error::<Aba, $n>(), chain_error::<Crba, $n>())),*]
+        [$(($n, chain_error::<Aba, $n>(), chain_error::<Crba, $n>())),*]
     };
 }
 
 fn chain_length(out: &Path) -> Res {
     let rows = chain_rows!(1, 2, 5, 10, 20, 30, 40, 60, 80, 100, 120);
     println!("chain: links, f32 ABA rel. error, f32 CRBA rel. error, f64 CRBA vs f64 ABA");
-    let mut s = vec![Vec::new(), Vec::new(), Vec::new()];
+    let mut s: [Curve; 3] = [Vec::new(), Vec::new(), Vec::new()];
     for (n, (_, aba32), (crba64, crba32)) in &rows {
         let show = |e: &Option<f64>| e.map_or("error".to_string(), |e| format!("{e:.2e}"));
         println!(
@@ -292,7 +296,7 @@ fn massless(out: &Path) -> Res {
     let mut series = Vec::new();
     let mut reported = Vec::new();
     println!("massless: tip mass (kg, first link 1 kg) -> relative error of q̈, or the error rodyn returns");
-    let cases: [(&str, fn(f64) -> Result<f64, rodyn::Error>); 4] = [
+    let cases: [Case; 4] = [
         ("ABA f32", light_tip_error::<Aba, f32>),
         ("CRBA f32", light_tip_error::<Crba, f32>),
         (
@@ -315,7 +319,11 @@ fn massless(out: &Path) -> Res {
                 }
             }
         }
-        let table: Vec<String> = pts.iter().step_by(2).map(|(m, e)| format!("{m:.0e}:{e:.1e}")).collect();
+        let table: Vec<String> = pts
+            .iter()
+            .step_by(2)
+            .map(|(m, e)| format!("{m:.0e}:{e:.1e}"))
+            .collect();
         println!("  {name:<40} {}", table.join(" "));
         match first_error {
             Some((m, e)) => println!("  {name:<40} first error at tip mass {m:.0e}: {e}"),
@@ -348,7 +356,7 @@ pub fn quaternion_drift<S: Scalar, I: Integrator>(
     mut integrator: I,
     dt: f64,
     steps: usize,
-) -> (Vec<(f64, f64)>, Option<(f64, rodyn::Error)>) {
+) -> DriftRun {
     let model = tumbling_box::<S>();
     let mut data = Data::new();
     let w = [0.5, 3.0, 0.2].map(S::from_f64);
@@ -409,7 +417,7 @@ fn quaternion(out: &Path) -> Res {
     let no = ConfigurationUpdate::Embedded { renormalize: false };
     let yes = ConfigurationUpdate::Embedded { renormalize: true };
     let exp = ConfigurationUpdate::ExponentialMap;
-    let runs: Vec<(String, (Vec<(f64, f64)>, Option<(f64, rodyn::Error)>))> = vec![
+    let runs: Vec<(String, DriftRun)> = vec![
         (
             "RK4 f64 renormalised".into(),
             quaternion_drift::<f64, _>(Rk4 { update: yes }, dt, steps),

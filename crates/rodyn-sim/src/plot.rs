@@ -8,6 +8,9 @@ use plotters::style::{register_font, FontStyle};
 use std::path::Path;
 use std::sync::Once;
 
+/// Points (x, y) of one curve.
+pub type Curve = Vec<(f64, f64)>;
+
 /// How a series is drawn.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Mark {

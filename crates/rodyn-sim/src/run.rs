@@ -2,7 +2,7 @@
 
 use crate::animate::stick_figure_gif;
 use crate::models::arm7;
-use crate::plot::{plot, Figure, Mark, Scale, Series};
+use crate::plot::{plot, Curve, Figure, Mark, Scale, Series};
 use crate::scenario::{run, RunConfig, Scenario};
 use crate::trajectory::Trajectory;
 use indicatif::{ProgressBar, ProgressStyle};
@@ -137,15 +137,16 @@ fn column(t: &Trajectory, k: usize) -> Vec<(f64, f64)> {
 
 /// Normal force of each foot at each sample, recomputed in f64 from the
 /// recorded state with the scenario's ground.
-pub fn foot_forces(
-    trajectory: &Trajectory,
-) -> Result<Vec<Vec<(f64, f64)>>, Box<dyn std::error::Error>> {
+pub fn foot_forces(trajectory: &Trajectory) -> Result<Vec<Curve>, Box<dyn std::error::Error>> {
     let model = quadruped::model::<f64>();
     let mut loads = QuadrupedLoads::<f64>::standing();
     let mut data = Data::new();
     let mut out = vec![Vec::new(); LEGS];
     for ((t, q), v) in trajectory.t.iter().zip(&trajectory.q).zip(&trajectory.v) {
-        let q: [f64; quadruped::NQ] = q.as_slice().try_into()?;
+        // An f32 run's quaternion, widened to f64, is unit only to f32
+        // precision: project it before the f64 checks see it.
+        let mut q: [f64; quadruped::NQ] = q.as_slice().try_into()?;
+        model.normalize(&mut q);
         let v: [f64; quadruped::NV] = v.as_slice().try_into()?;
         let mut f_ext = [Force::ZERO; quadruped::NB];
         loads.ground.add_forces(

@@ -2,7 +2,7 @@
 //!
 //! The ground is the plane `z = 0` of the world frame, its normal `+z`
 //! (gravity should point along `-z`). A contact point (an
-//! [`Endpoint`](crate::Endpoint) on a body) that sinks below it by the
+//! [`Endpoint`] on a body) that sinks below it by the
 //! penetration `δ = -z > 0` feels
 //!
 //! * a **normal force** from a spring-damper ([`NormalLaw`]): linear,
@@ -80,7 +80,8 @@ impl<S: Scalar> GroundContact<S> {
     #[must_use]
     pub fn force_at(&self, p: &Vec3<S>, p_dot: &Vec3<S>) -> Vec3<S> {
         let depth = -p.z;
-        if !(depth > S::ZERO) {
+        // NaN compares unordered and falls through to no force as well.
+        if depth.partial_cmp(&S::ZERO) != Some(core::cmp::Ordering::Greater) {
             return Vec3::ZERO;
         }
         let depth_rate = -p_dot.z;

@@ -64,7 +64,7 @@ impl Integrator for ImplicitEuler {
         let t1 = t + dt;
         let q_dyn = for_dynamics(model, self.update, &q);
         let a0 = acceleration(&method, model, data, loads, t1, &q_dyn, &v)?;
-        let h_base = S::from_f64(S::EPSILON.sqrt());
+        let h_base = S::from_f64(S::EPSILON).sqrt();
         let dt2 = dt * dt;
         // Iteration matrix K = I - dt A_v - dt² A_q, built column by column,
         // and the right-hand side dt (a₀ + dt A_q v).
@@ -124,7 +124,7 @@ fn solve_in_place<S: Scalar, const N: usize>(k: &mut [[S; N]; N], mut b: [S; N])
             }
         }
         let pivot = k[pivot_row][c];
-        if !pivot.is_finite() || !(pivot.abs().to_f64() > tiny) {
+        if !pivot.is_finite() || pivot.abs().to_f64() <= tiny {
             return Err(Error::NonFinite {
                 quantity: Quantity::Acceleration,
                 index: c,
