@@ -9,8 +9,10 @@
 //! for the arm and the quadruped, along -y for the pendulum (it swings in
 //! the x-y plane about z).
 
+use rodyn::drive::{LinearSpring, Path};
 use rodyn::planar::{Planar, PlanarInertia, PlanarJoint, PlanarMotion, PlanarTransform, Vec2};
 use rodyn::prelude::*;
+use rodyn::Endpoint;
 
 /// Gravitational acceleration (m/s²).
 const G: f32 = 9.81;
@@ -37,6 +39,17 @@ pub const PENDULUM: Model<f32, 1, 1, 1> = Model::new(
     Motion::new(Vec3::ZERO, Vec3::new(0.0, -G, 0.0)),
 );
 
+/// The seed pendulum's return spring: from the rod's tip to an anchor 0.4 m
+/// beside the pivot; 40 N/m, rest length 0.3 m.
+pub const PENDULUM_SPRING: LinearSpring<f32, Spatial, 2> = LinearSpring::new(
+    Path::new([
+        Endpoint::on_body(0, Vec3::new(0.0, -PENDULUM_LENGTH, 0.0)),
+        Endpoint::in_world(Vec3::new(0.4, 0.0, 0.0)),
+    ]),
+    40.0,
+    0.3,
+);
+
 /// The same pendulum as a planar model: 3-component spatial algebra.
 pub const PENDULUM_PLANAR: Model<f32, 1, 1, 1, Planar> = Model::new_planar(
     [None],
@@ -51,7 +64,8 @@ pub const PENDULUM_PLANAR: Model<f32, 1, 1, 1, Planar> = Model::new_planar(
 );
 
 /// Rotation about x by -90° (the modified-DH twist `α = -π/2`).
-const RX_MINUS_90: Mat3<f32> = Mat3::from_rows([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]]);
+const RX_MINUS_90: Mat3<f32> =
+    Mat3::from_rows([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]]);
 /// Rotation about x by +90° (`α = +π/2`).
 const RX_PLUS_90: Mat3<f32> = Mat3::from_rows([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]]);
 

@@ -45,7 +45,11 @@ impl Size {
 
 fn measure(example: &Example) -> Result<Size> {
     let llvm_size = setup::llvm_size()?;
-    let out = setup::output(Command::new(llvm_size).arg("-B").arg(firmware::elf(example)))?;
+    let out = setup::output(
+        Command::new(llvm_size)
+            .arg("-B")
+            .arg(firmware::elf(example)),
+    )?;
     let numbers: Vec<u64> = out
         .lines()
         .nth(1)
@@ -70,7 +74,10 @@ fn read_sizes() -> Result<BTreeMap<String, Size>> {
     let text = std::fs::read_to_string(sizes_path())
         .with_context(|| format!("cannot read {}", sizes_path().display()))?;
     let mut sizes = BTreeMap::new();
-    for line in text.lines().filter(|l| !l.starts_with('#') && !l.trim().is_empty()) {
+    for line in text
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
+    {
         let fields: Vec<&str> = line.split_whitespace().collect();
         let value = |key: &str| -> Result<u64> {
             fields
@@ -98,7 +105,11 @@ pub fn check_sizes() -> Result<()> {
     for example in EXAMPLES {
         let now = measure(example)?;
         let Some(before) = recorded.get(example.name) else {
-            println!("size {}: flash {} B (not recorded)", example.name, now.flash());
+            println!(
+                "size {}: flash {} B (not recorded)",
+                example.name,
+                now.flash()
+            );
             continue;
         };
         let growth = now.flash() as f64 / before.flash() as f64 - 1.0;
@@ -227,8 +238,14 @@ pub fn regenerate() -> Result<()> {
 
 /// Replaces the text between `<!-- name:begin -->` and `<!-- name:end -->`.
 fn replace_between(doc: &str, name: &str, content: &str) -> Result<String> {
-    let (begin, end) = (format!("<!-- {name}:begin -->"), format!("<!-- {name}:end -->"));
-    let start = doc.find(&begin).with_context(|| format!("no `{begin}` marker"))? + begin.len();
+    let (begin, end) = (
+        format!("<!-- {name}:begin -->"),
+        format!("<!-- {name}:end -->"),
+    );
+    let start = doc
+        .find(&begin)
+        .with_context(|| format!("no `{begin}` marker"))?
+        + begin.len();
     let stop = doc[start..]
         .find(&end)
         .with_context(|| format!("no `{end}` marker"))?

@@ -39,10 +39,7 @@ pub fn compare(expected: &str, actual: &[String]) -> Result<(), String> {
     let expected: Vec<&str> = expected.lines().collect();
     for (n, (e, a)) in expected.iter().zip(actual).enumerate() {
         if !lines_match(e, a) {
-            return Err(format!(
-                "line {}:\n  expected: {e}\n  actual:   {a}",
-                n + 1
-            ));
+            return Err(format!("line {}:\n  expected: {e}\n  actual:   {a}", n + 1));
         }
     }
     if expected.len() != actual.len() {

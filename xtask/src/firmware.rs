@@ -29,7 +29,7 @@ pub const EXAMPLES: &[Example] = &[
     },
     Example {
         name: "pendulum",
-        about: "the seed pendulum simulated in real time",
+        about: "the seed pendulum with its return spring, simulated in real time",
     },
     Example {
         name: "cost_probe",
@@ -53,7 +53,10 @@ pub fn dir() -> PathBuf {
 pub fn example(name: &str) -> Result<&'static Example> {
     EXAMPLES.iter().find(|e| e.name == name).with_context(|| {
         let names: Vec<_> = EXAMPLES.iter().map(|e| e.name).collect();
-        format!("no firmware example `{name}`; examples: {}", names.join(", "))
+        format!(
+            "no firmware example `{name}`; examples: {}",
+            names.join(", ")
+        )
     })
 }
 
@@ -93,7 +96,13 @@ pub fn run(example: &Example, mut on_line: impl FnMut(&str)) -> Result<Outcome> 
     let mut command = Command::new("timeout");
     command
         .arg(QEMU_TIMEOUT_S.to_string())
-        .args(["qemu-system-arm", "-machine", "mps2-an386", "-cpu", "cortex-m4"])
+        .args([
+            "qemu-system-arm",
+            "-machine",
+            "mps2-an386",
+            "-cpu",
+            "cortex-m4",
+        ])
         .args(["-nographic", "-monitor", "none", "-serial", "none"])
         .args(["-icount", "shift=6"])
         .args(["-semihosting-config", "enable=on,target=native", "-kernel"])
@@ -165,7 +174,11 @@ pub fn run_and_compare(example: &Example) -> Result<()> {
 pub fn bless(example: &Example) -> Result<()> {
     let outcome = run(example, |_| {})?;
     if outcome.exit_code != 0 {
-        bail!("{} exited with code {}: not blessed", example.name, outcome.exit_code);
+        bail!(
+            "{} exited with code {}: not blessed",
+            example.name,
+            outcome.exit_code
+        );
     }
     let path = expected_path(example);
     let old = std::fs::read_to_string(&path).unwrap_or_default();
@@ -197,7 +210,13 @@ pub fn agreement_against_fresh_run() -> Result<()> {
     let log = last_log_path(example("agreement")?);
     let log = log.to_string_lossy();
     shell::cargo_env(
-        &["test", "-p", "rodyn-host-tests", "--test", "firmware_agreement"],
+        &[
+            "test",
+            "-p",
+            "rodyn-host-tests",
+            "--test",
+            "firmware_agreement",
+        ],
         &[("RODYN_AGREEMENT_LOG", log.as_ref())],
     )
 }

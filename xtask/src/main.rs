@@ -55,7 +55,10 @@ fn run(example: Option<&str>) -> Result<()> {
     setup::ensure_target()?;
     setup::ensure_qemu()?;
     firmware::build()?;
-    println!("running {} in QEMU (mps2-an386, Cortex-M4F): {}", example.name, example.about);
+    println!(
+        "running {} in QEMU (mps2-an386, Cortex-M4F): {}",
+        example.name, example.about
+    );
     let outcome = firmware::run(example, |line| println!("{line}"))?;
     if outcome.exit_code != 0 {
         bail!("{} exited with code {}", example.name, outcome.exit_code);
@@ -120,12 +123,18 @@ fn lint() -> Result<()> {
         "-D",
         "warnings",
     ])?;
-    shell::cargo_in(firmware::dir(), &["clippy", "--release", "--", "-D", "warnings"])?;
+    shell::cargo_in(
+        firmware::dir(),
+        &["clippy", "--release", "--", "-D", "warnings"],
+    )?;
     shell::cargo_env(
         &["doc", "--workspace", "--no-deps"],
         &[("RUSTDOCFLAGS", "-D warnings")],
     )?;
-    println!("xtask lint: clean in {:.0} s", started.elapsed().as_secs_f64());
+    println!(
+        "xtask lint: clean in {:.0} s",
+        started.elapsed().as_secs_f64()
+    );
     Ok(())
 }
 

@@ -37,10 +37,19 @@ pub fn ensure_qemu() -> Result<()> {
              sudo apt-get update && sudo apt-get install -y qemu-system-arm"
         );
     }
-    shell::run(Command::new("apt-get").arg("update").env("DEBIAN_FRONTEND", "noninteractive"))?;
     shell::run(
         Command::new("apt-get")
-            .args(["install", "-y", "--no-install-recommends", "qemu-system-arm"])
+            .arg("update")
+            .env("DEBIAN_FRONTEND", "noninteractive"),
+    )?;
+    shell::run(
+        Command::new("apt-get")
+            .args([
+                "install",
+                "-y",
+                "--no-install-recommends",
+                "qemu-system-arm",
+            ])
             .env("DEBIAN_FRONTEND", "noninteractive"),
     )
 }

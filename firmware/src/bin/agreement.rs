@@ -64,7 +64,10 @@ fn report<const NB: usize, const NQ: usize, const NV: usize>(
 #[entry]
 fn main() -> ! {
     let mut rng = XorShift32::new(SEED);
-    defmt::println!("agreement: f32 RNEA and ABA on {} random states per model", STATES);
+    defmt::println!(
+        "agreement: f32 RNEA and ABA on {} random states per model",
+        STATES
+    );
     let passed = report("pendulum", &PENDULUM, &mut rng)
         & report("panda", &PANDA, &mut rng)
         & report("quadruped", &QUADRUPED, &mut rng);

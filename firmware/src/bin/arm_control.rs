@@ -51,7 +51,10 @@ fn main() -> ! {
         )
     });
     let drives = core::array::from_fn(|k| {
-        TorqueDrive::new(SimulatedPwm::new(&signals.duties[k]), PANDA_TORQUE_LIMITS[k])
+        TorqueDrive::new(
+            SimulatedPwm::new(&signals.duties[k]),
+            PANDA_TORQUE_LIMITS[k],
+        )
     });
     // ωₙ = 40 rad/s, critically damped; rate filter time constant 2 ms.
     let gains = Gains::from_natural_frequency(40.0, 1.0, 0.606_530_66);
@@ -83,9 +86,9 @@ fn main() -> ! {
         max_tick_instructions = max_tick_instructions.max(instructions);
         // Errors after the first 100 ms, once the rate filter has settled.
         if tick >= 100 {
-            for k in 0..7 {
-                let e = (plant.q[k] - reference.q[k]).abs();
-                max_error[k] = max_error[k].max(e);
+            for ((worst, q), q_ref) in max_error.iter_mut().zip(plant.q).zip(reference.q) {
+                let e = (q - q_ref).abs();
+                *worst = worst.max(e);
                 squared_error += e * e;
             }
         }
@@ -100,7 +103,10 @@ fn main() -> ! {
     let worst = max_error.iter().fold(0.0f32, |a, &b| a.max(b));
     let samples = (7 * (TICKS - 100)) as f32;
     defmt::println!("max tracking error per joint (rad): {}", max_error);
-    defmt::println!("rms tracking error: {} rad", (squared_error / samples).sqrt());
+    defmt::println!(
+        "rms tracking error: {} rad",
+        (squared_error / samples).sqrt()
+    );
     defmt::println!("controller tick: {} instructions", max_tick_instructions);
     let passed = worst <= MAX_TRACKING_ERROR;
     defmt::println!(

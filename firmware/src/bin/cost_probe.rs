@@ -84,13 +84,19 @@ fn probe<const NB: usize, const NQ: usize, const NV: usize, G: Space>(
                     Algorithm::CrbaForwardDynamics => {
                         Crba::forward_dynamics(model, &mut data, &q, &v, &u, None).is_ok()
                     }
-                    Algorithm::Aba => Aba::forward_dynamics(model, &mut data, &q, &v, &u, None).is_ok(),
+                    Algorithm::Aba => {
+                        Aba::forward_dynamics(model, &mut data, &q, &v, &u, None).is_ok()
+                    }
                 }
             };
             let (ok, instructions) = counter.count(&mut call);
             let (ok_again, stack) = stack_bytes(&mut call);
             if !(ok && ok_again) {
-                defmt::error!("{=str} {=str}: the algorithm returned an error", name, algorithm.name());
+                defmt::error!(
+                    "{=str} {=str}: the algorithm returned an error",
+                    name,
+                    algorithm.name()
+                );
                 return false;
             }
             cost.min = cost.min.min(instructions);
@@ -132,7 +138,11 @@ fn sin_cos_cost(counter: &InstructionCounter) {
         min = min.min(instructions);
         max = max.max(instructions);
     }
-    defmt::println!("cost model=scalar algorithm=f32-sin_cos min={} max={} stack=-", min, max);
+    defmt::println!(
+        "cost model=scalar algorithm=f32-sin_cos min={} max={} stack=-",
+        min,
+        max
+    );
 }
 
 #[entry]
@@ -141,7 +151,10 @@ fn main() -> ! {
         exit(CHECK_FAILED)
     };
     let counter = InstructionCounter::start(&mut peripherals.SYST);
-    defmt::println!("cost_probe: f32, {} random states per model and algorithm", STATES);
+    defmt::println!(
+        "cost_probe: f32, {} random states per model and algorithm",
+        STATES
+    );
     sin_cos_cost(&counter);
     let passed = probe("pendulum", &PENDULUM, &counter)
         & probe("pendulum-planar", &PENDULUM_PLANAR, &counter)

@@ -42,9 +42,7 @@ impl<PWM: SetDutyCycle> TorqueDrive<PWM> {
         let fraction = (0.5 + 0.5 * torque / self.limit).clamp(0.0, 1.0);
         // Round to the nearest duty step (+0.5 then truncate: fraction >= 0).
         let duty = (fraction * f32::from(max) + 0.5) as u16;
-        self.pwm
-            .set_duty_cycle(duty)
-            .map_err(|_| DriveError::Pwm)?;
+        self.pwm.set_duty_cycle(duty).map_err(|_| DriveError::Pwm)?;
         Ok(duty_to_torque(duty, max, self.limit))
     }
 }

@@ -36,7 +36,9 @@ impl<'m, const N: usize> ArmPlant<'m, N> {
     /// The torques the drives currently apply, read from the PWM duty cycles.
     #[must_use]
     pub fn drive_torques(&self, signals: &Signals<N>) -> [f32; N] {
-        core::array::from_fn(|k| duty_to_torque(signals.duties[k].get(), PWM_PERIOD, self.limits[k]))
+        core::array::from_fn(|k| {
+            duty_to_torque(signals.duties[k].get(), PWM_PERIOD, self.limits[k])
+        })
     }
 
     /// Advances `dt` seconds in `substeps` equal steps under the drives' torques,
@@ -49,9 +51,9 @@ impl<'m, const N: usize> ArmPlant<'m, N> {
         let h = dt / substeps as f32;
         for _ in 0..substeps {
             let ddq = aba(self.model, &mut self.data, &self.q, &self.v, &tau, None)?;
-            for k in 0..N {
-                self.v[k] += h * ddq[k];
-                self.q[k] += h * self.v[k];
+            for ((q, v), ddq) in self.q.iter_mut().zip(&mut self.v).zip(ddq) {
+                *v += h * ddq;
+                *q += h * *v;
             }
         }
         self.publish(signals);
