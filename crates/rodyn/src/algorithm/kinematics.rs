@@ -27,8 +27,9 @@ pub(crate) fn body_transform<
 ) -> G::Transform<S> {
     let t = model.topology();
     let iq = t.idx_q[i];
-    let j_m_i = model.joint(i).transform(&q[iq..iq + t.nq[i]]);
-    model.placement(i).compose(&j_m_i)
+    model
+        .joint(i)
+        .placed_transform(model.placement(i), &q[iq..iq + t.nq[i]])
 }
 
 /// The joint velocity `v_J = S qd` of body `i`.

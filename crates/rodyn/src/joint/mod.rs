@@ -60,6 +60,14 @@ pub trait JointModel<S: Scalar, G: Space>: Copy + Debug {
     fn nv(&self) -> usize;
     /// The joint transform `jMi(q)` (the book's `X_J`, as a transform).
     fn transform(&self, q: &[S]) -> G::Transform<S>;
+    /// `placement · jMi(q)`: the moving frame in the parent body's frame,
+    /// given the joint's placement. A joint whose transform is sparse
+    /// overrides it to skip the full composition.
+    #[inline]
+    fn placed_transform(&self, placement: &G::Transform<S>, q: &[S]) -> G::Transform<S> {
+        use crate::space::RigidTransform;
+        placement.compose(&self.transform(q))
+    }
     /// The joint velocity `S qd`.
     fn motion(&self, qd: &[S]) -> G::Motion<S>;
     /// Column `k` of the motion subspace `S`.
@@ -169,6 +177,14 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
             Self::Fixed => Transform::from_translation(crate::spatial::Vec3::ZERO),
             Self::FreeFlyer(j) => j.transform(q),
             Self::Custom(c) => c.behaviour.transform(q),
+        }
+    }
+    #[inline]
+    fn placed_transform(&self, placement: &Transform<S>, q: &[S]) -> Transform<S> {
+        use crate::space::RigidTransform;
+        match self {
+            Self::Revolute(j) => j.placed_transform(placement, q[0]),
+            _ => placement.compose(&self.transform(q)),
         }
     }
     #[inline]

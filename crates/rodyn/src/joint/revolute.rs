@@ -3,6 +3,7 @@
 //! `jMi(q)` is a rotation by `q` about the axis; `S = [axis; 0]`.
 
 use super::Axis;
+use crate::space::RigidTransform;
 use crate::spatial::{ArticulatedInertia6, Force, Mat3, Motion, Transform, Vec3};
 use crate::Scalar;
 
@@ -24,6 +25,21 @@ impl<S: Scalar> Revolute<S> {
             None => Mat3::from_axis_sin_cos(&self.axis.vector(), s, c),
         };
         Transform::from_rotation(rot)
+    }
+    /// `placement · jMi(q)`: the body's frame in its parent's frame.
+    ///
+    /// About a coordinate axis the rotation mixes two columns of the
+    /// placement's rotation; no 3x3 product is needed.
+    #[inline]
+    #[must_use]
+    pub fn placed_transform(&self, placement: &Transform<S>, q: S) -> Transform<S> {
+        match self.axis.index() {
+            Some(k) => {
+                let (s, c) = q.sin_cos();
+                Transform::new(placement.rot.mul_axis_rotation(k, s, c), placement.trans)
+            }
+            None => placement.compose(&self.transform(q)),
+        }
     }
     /// `S qd`.
     #[inline]
