@@ -18,7 +18,7 @@ use rodyn_bench::Algorithm;
 use std::io::Write as _;
 
 const STATES: usize = 32;
-const SEED: u64 = 0xC805_5;
+const SEED: u64 = 0xC805;
 
 /// One curve of the chart: a geometry and a scalar type.
 const VARIANTS: [&str; 4] = ["planar f32", "planar f64", "3-D f32", "3-D f64"];
