@@ -175,14 +175,16 @@ pub(crate) fn forward_acceleration_pass<
 /// Rejects a pivot that is not safely positive relative to `scale`.
 #[inline]
 fn check_pivot<S: Scalar>(joint: usize, d: S, scale: S) -> Result<()> {
-    let (d, scale) = (d.to_f64(), scale.to_f64());
-    let relative = if scale > 0.0 { d / scale } else { 0.0 };
-    if d.is_finite() && scale.is_finite() && relative > SINGULAR_PIVOT_EPS * S::EPSILON {
+    // Compared in S: on an FPU without double precision (Cortex-M4F) every
+    // f32-to-f64 conversion is a software call; only the error path pays it.
+    let tolerance = S::from_f64(SINGULAR_PIVOT_EPS * S::EPSILON) * scale;
+    if d.is_finite() && scale.is_finite() && d > tolerance {
         Ok(())
     } else {
+        let (d, scale) = (d.to_f64(), scale.to_f64());
         Err(Error::SingularArticulatedInertia {
             joint,
-            relative_pivot: relative,
+            relative_pivot: if scale > 0.0 { d / scale } else { 0.0 },
         })
     }
 }

@@ -29,18 +29,19 @@ pub fn ltdl_factor<S: Scalar, const NB: usize, const NQ: usize, const NV: usize,
     let lambda = &model.topology().lambda_v;
     let h = &mut data.ltdl;
     *h = data.mass_matrix;
-    let mut scale = 0.0f64;
+    // Compared in S, like ABA's pivots: no f64 on the hot path.
+    let mut scale = S::ZERO;
     for (k, row) in h.iter().enumerate() {
-        scale = scale.max(row[k].to_f64().abs());
+        scale = scale.max(row[k].abs());
     }
-    let tol = PIVOT_TOLERANCE_EPS * S::EPSILON * scale;
+    let tolerance = S::from_f64(PIVOT_TOLERANCE_EPS * S::EPSILON) * scale;
     for k in (0..NV).rev() {
         let d = h[k][k];
-        let relative = if scale > 0.0 { d.to_f64() / scale } else { 0.0 };
-        if !(d.is_finite() && d.to_f64() > tol) {
+        if !(d.is_finite() && d > tolerance) {
+            let scale = scale.to_f64();
             return Err(Error::MassMatrixNotPositiveDefinite {
                 dof: k,
-                relative_pivot: relative,
+                relative_pivot: if scale > 0.0 { d.to_f64() / scale } else { 0.0 },
             });
         }
         let mut i = lambda[k];

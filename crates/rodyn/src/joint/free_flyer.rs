@@ -116,11 +116,13 @@ impl FreeFlyer {
         if !q[..7].iter().all(|x| x.is_finite()) {
             return Err(ConfigurationError::NonFinite);
         }
-        let norm = (q[3] * q[3] + q[4] * q[4] + q[5] * q[5] + q[6] * q[6])
-            .sqrt()
-            .to_f64();
-        if (norm - 1.0).abs() > QUATERNION_TOLERANCE_EPS * S::EPSILON {
-            return Err(ConfigurationError::QuaternionNotUnit { norm });
+        // |n² - 1| ≈ 2 |n - 1|; compared in S to keep f64 off the MCU's hot path.
+        let norm_squared = q[3] * q[3] + q[4] * q[4] + q[5] * q[5] + q[6] * q[6];
+        let tolerance = S::from_f64(2.0 * QUATERNION_TOLERANCE_EPS * S::EPSILON);
+        if (norm_squared - S::ONE).abs() > tolerance {
+            return Err(ConfigurationError::QuaternionNotUnit {
+                norm: norm_squared.sqrt().to_f64(),
+            });
         }
         Ok(())
     }

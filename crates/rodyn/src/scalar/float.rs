@@ -106,7 +106,7 @@ impl Scalar for f32 {
         }
         #[cfg(all(not(feature = "std"), feature = "libm"))]
         {
-            libm::sincosf(self)
+            super::sin_cos_f32::sin_cos(self)
         }
     }
     #[inline]

@@ -8,9 +8,13 @@
 //! target. On `thumbv7em-none-eabihf` the `f32` square root uses the FPU's
 //! `VSQRT.F32` instead of libm's software routine, and no algorithm calls a
 //! fused multiply-add (libm's `fmaf` emulates it in software doubles).
+//! Without `std`, `f32` sine and cosine are computed in single precision
+//! (libm's `sincosf` works in `f64`, which a Cortex-M4F emulates).
 
 mod dual;
 mod float;
+#[cfg(any(feature = "libm", test))]
+mod sin_cos_f32;
 
 pub use dual::Dual;
 
