@@ -11,7 +11,7 @@
 //! ```
 //!
 //! Without a profiler it prints the wall-clock time per call.
-//! Models: panda, ur5, solo12, chain<N>, chain<N>_planar (N in 5, 10, 20, 60).
+//! Models: `panda`, `ur5`, `solo12`, `chainN` and `chainN_planar` (N in 5, 10, 20, 60).
 
 use rodyn_bench::cases::{Case, ModelCase};
 use rodyn_bench::models::{planar_chain, planar_chain_3d, PANDA, SOLO12, UR5};
