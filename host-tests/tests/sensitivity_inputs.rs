@@ -8,7 +8,6 @@
 use rodyn::algorithm::crba::crba;
 use rodyn::algorithm::forward_dynamics::{Aba, Crba};
 use rodyn::algorithm::rnea::rnea;
-use rodyn::drive::muscle_robot::{self as robot, NU, NV};
 use rodyn::drive::{
     forward_dynamics_with_drives, DriveForces, JointMotor, LinearSpring, Path, ThelenMuscle,
     ThelenParameters,
@@ -16,6 +15,7 @@ use rodyn::drive::{
 use rodyn::prelude::*;
 use rodyn::sensitivity::forward_dynamics_and_sensitivity;
 use rodyn::Endpoint;
+use rodyn_scenarios::muscle_robot::{self as robot, NU, NV};
 
 struct Rng(u64);
 impl Rng {
@@ -44,8 +44,8 @@ fn robot_states(n: usize) -> Vec<([f64; NV], [f64; NV], [f64; NU])> {
 
 #[test]
 fn muscle_robot_sensitivity_matches_central_differences() {
-    let model = robot::model::<f64>();
-    let muscles = robot::muscles::<f64>();
+    let model = robot::MODEL_F64;
+    let muscles = robot::MUSCLES_F64;
     let mut data = Data::new();
     let mut forces = DriveForces::new();
     let ddq_at = |data: &mut robot::RobotData<f64>, q: &[f64; NV], v: &[f64; NV], a: &[f64; NU]| {
@@ -75,8 +75,8 @@ fn muscle_robot_sensitivity_matches_central_differences() {
 
 #[test]
 fn muscle_robot_sensitivity_matches_dual_numbers() {
-    let model = robot::model::<f64>();
-    let muscles = robot::muscles::<f64>();
+    let model = robot::MODEL_F64;
+    let muscles = robot::MUSCLES_F64;
     let dual_model = model.cast::<Dual>().unwrap();
     let dual_muscles = muscles.map(|m| m.cast::<Dual>());
     let mut data = Data::new();
@@ -326,8 +326,8 @@ fn solve<const N: usize>(mut a: [[f64; N]; N], mut b: [f64; N]) -> [f64; N] {
 /// The firmware's scalar: the f32 muscle robot agrees with f64.
 #[test]
 fn muscle_robot_in_f32_agrees_with_f64() {
-    let (model, muscles) = (robot::model::<f64>(), robot::muscles::<f64>());
-    let (model32, muscles32) = (robot::model::<f32>(), robot::muscles::<f32>());
+    let (model, muscles) = (robot::MODEL_F64, robot::MUSCLES_F64);
+    let (model32, muscles32) = (robot::MODEL_F32, robot::MUSCLES_F32);
     for (q, v, a) in robot_states(10) {
         let mut s = [[0.0; NU]; NV];
         let mut s32 = [[0.0f32; NU]; NV];

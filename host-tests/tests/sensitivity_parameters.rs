@@ -6,10 +6,10 @@
 // Row and column indices mirror the matrix equations being checked.
 #![allow(clippy::needless_range_loop)]
 
-use rodyn::drive::muscle_robot::{self as robot, NU, NV};
 use rodyn::drive::DriveForces;
 use rodyn::planar::{PlanarInertia, PlanarTransform, Vec2};
 use rodyn::prelude::*;
+use rodyn_scenarios::muscle_robot::{self as robot, NU, NV};
 
 /// One model parameter, set to a value of any scalar type.
 #[derive(Clone, Copy, Debug)]
@@ -28,15 +28,15 @@ impl Parameter {
     fn nominal(self) -> f64 {
         match self {
             Self::LowerLinkMass => 1.0,
-            Self::UpperLinkLength => robot::LINK_LENGTH,
-            Self::OptimalFiberLength => robot::MUSCLE_PARAMETERS[2].1,
-            Self::MaxIsometricForce => robot::MUSCLE_PARAMETERS[0].0,
+            Self::UpperLinkLength => robot::MODEL_F64.placement(1).trans.x,
+            Self::OptimalFiberLength => robot::MUSCLES_F64[2].params.optimal_fiber_length,
+            Self::MaxIsometricForce => robot::MUSCLES_F64[0].params.max_isometric_force,
         }
     }
 
     /// The robot with this parameter set to `value`.
     fn robot<S: Scalar>(self, value: S) -> (robot::RobotModel<S>, robot::RobotMuscles<S>) {
-        let mut model = robot::model::<S>();
+        let mut model = robot::model::<S>().unwrap();
         let mut muscles = robot::muscles::<S>();
         match self {
             Self::LowerLinkMass => {

@@ -8,12 +8,12 @@
 //! `docs/img/drives/muscle_robot_sensitivity.svg`, and prints a summary.
 
 use plotters::prelude::*;
-use rodyn::drive::muscle_robot::{self as robot, NU, NV};
 use rodyn::Data;
+use rodyn_scenarios::muscle_robot::{self as robot, NU, NV};
 use std::path::PathBuf;
 
 /// Simulated time (s) and RK4 step (s), as the core example
-/// `cargo run -p rodyn --example muscle_robot`.
+/// `cargo run -p rodyn-scenarios --example muscle_robot`.
 const DURATION: f64 = 2.0;
 const DT: f64 = 1e-3;
 
@@ -40,8 +40,8 @@ struct Sample {
 
 /// RK4 on (q, v, a) with the sensitivity matrix recorded every step.
 fn simulate() -> Result<Vec<Sample>, rodyn::Error> {
-    let model = robot::model::<f64>();
-    let muscles = robot::muscles::<f64>();
+    let model = robot::MODEL_F64;
+    let muscles = robot::MUSCLES_F64;
     let mut data = Data::new();
     let mut forces = robot::RobotForces::new();
     type X = ([f64; NV], [f64; NV], [f64; NU]);

@@ -7,13 +7,13 @@ use clap::ValueEnum;
 use rodyn::algorithm::forward_dynamics::{Aba, Crba, ForwardDynamics};
 use rodyn::sim::contact::NormalLaw;
 use rodyn::sim::manifold::{add_scaled, configuration_rate};
-use rodyn::sim::quadruped::{self, QuadrupedLoads};
 use rodyn::sim::{
     ConfigurationUpdate, ExplicitEuler, ImplicitEuler, Integrator, NoLoads, Rk4, SemiImplicitEuler,
     State,
 };
 use rodyn::spatial::Force;
 use rodyn::{Data, Model, Scalar};
+use rodyn_scenarios::quadruped::{self, QuadrupedLoads};
 use std::path::Path;
 
 type Res = Result<(), Box<dyn std::error::Error>>;
@@ -514,7 +514,7 @@ pub fn quadruped_lands<I: Integrator>(
     k: f64,
     dt: f64,
 ) -> Result<bool, rodyn::Error> {
-    let model = quadruped::model::<f64>();
+    let model = quadruped::model::<f64>()?;
     let mut loads = QuadrupedLoads::<f64>::standing();
     loads.ground.normal = NormalLaw::LinearSpringDamper {
         stiffness: k,
@@ -531,7 +531,8 @@ pub fn quadruped_lands<I: Integrator>(
     // Expected height: stance minus the static sag of the legs, 2.0 mm, and
     // of the ground, m g / (4 k).
     let expected = stance - 0.002 - model.total_mass() * 9.81 / (4.0 * k);
-    Ok(speed < 0.02 && (state.q[2] - expected).abs() < 0.005)
+    let height = quadruped::trunk_position(&state.q).z;
+    Ok(speed < 0.02 && (height - expected).abs() < 0.005)
 }
 
 fn contact(out: &Path) -> Res {

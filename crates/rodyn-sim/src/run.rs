@@ -6,10 +6,10 @@ use crate::plot::{plot, Curve, Figure, Mark, Scale, Series};
 use crate::scenario::{run, RunConfig, Scenario};
 use crate::trajectory::Trajectory;
 use indicatif::{ProgressBar, ProgressStyle};
-use rodyn::sim::quadruped::{self, QuadrupedLoads, LEGS, LEG_NAMES};
 use rodyn::space::VectorOps;
 use rodyn::spatial::Force;
 use rodyn::Data;
+use rodyn_scenarios::quadruped::{self, QuadrupedLoads, LEGS, LEG_NAMES};
 use std::path::Path;
 
 /// Runs `config`, writes `<scenario>.csv`, `<scenario>.svg` and
@@ -56,7 +56,7 @@ pub fn run_command(config: &RunConfig, out: &Path) -> Result<(), Box<dyn std::er
                 .map(|s| s.to_string())
                 .collect();
             for leg in LEG_NAMES {
-                for joint in ["abduction", "hip", "knee"] {
+                for joint in ["hip_pitch", "hip_roll", "knee"] {
                     names.push(format!("{leg}_{joint}"));
                 }
             }
@@ -64,7 +64,17 @@ pub fn run_command(config: &RunConfig, out: &Path) -> Result<(), Box<dyn std::er
             let forces = foot_forces(&trajectory)?;
             let mut series = vec![
                 Series::new("torso x (m)", column(&trajectory, 0), Mark::Line, 0),
-                Series::new("torso z (m)", column(&trajectory, 2), Mark::Line, 1),
+                Series::new(
+                    "torso z (m)",
+                    trajectory
+                        .t
+                        .iter()
+                        .zip(&trajectory.q)
+                        .map(|(t, q)| (*t, trunk_height(q)))
+                        .collect(),
+                    Mark::Line,
+                    1,
+                ),
             ];
             for (leg, f) in forces.iter().enumerate() {
                 let scaled = f.iter().map(|&(t, n)| (t, n / 100.0)).collect();
@@ -80,7 +90,7 @@ pub fn run_command(config: &RunConfig, out: &Path) -> Result<(), Box<dyn std::er
                 &figure(&format!("quadruped: {name}"), "m, N/100"),
                 &series,
             )?;
-            let model = quadruped::model::<f64>();
+            let model = quadruped::model::<f64>()?;
             stick_figure_gif(
                 &gif,
                 &model,
@@ -103,9 +113,11 @@ pub fn run_command(config: &RunConfig, out: &Path) -> Result<(), Box<dyn std::er
     );
     if let Some(q) = trajectory.q.last() {
         if config.scenario != Scenario::ArmSwing {
+            let q: [f64; quadruped::NQ] = q.as_slice().try_into()?;
+            let p = quadruped::trunk_position(&q);
             println!(
                 "final torso position x = {:.4} m, y = {:.4} m, z = {:.4} m",
-                q[0], q[1], q[2]
+                p.x, p.y, p.z
             );
         }
     }
@@ -135,10 +147,18 @@ fn column(t: &Trajectory, k: usize) -> Vec<(f64, f64)> {
     t.t.iter().zip(&t.q).map(|(t, q)| (*t, q[k])).collect()
 }
 
+/// The trunk's world height (m) in a recorded configuration (the model
+/// file places the floating joint above the world origin).
+fn trunk_height(q: &[f64]) -> f64 {
+    q.try_into().map_or(f64::NAN, |q: [f64; quadruped::NQ]| {
+        quadruped::trunk_position(&q).z
+    })
+}
+
 /// Normal force of each foot at each sample, recomputed in f64 from the
 /// recorded state with the scenario's ground.
 pub fn foot_forces(trajectory: &Trajectory) -> Result<Vec<Curve>, Box<dyn std::error::Error>> {
-    let model = quadruped::model::<f64>();
+    let model = quadruped::model::<f64>()?;
     let mut loads = QuadrupedLoads::<f64>::standing();
     let mut data = Data::new();
     let mut out = vec![Vec::new(); LEGS];

@@ -6,12 +6,12 @@ use crate::trajectory::Trajectory;
 use clap::ValueEnum;
 use indicatif::ProgressBar;
 use rodyn::algorithm::forward_dynamics::{Aba, Crba, ForwardDynamics};
-use rodyn::sim::quadruped::{self, QuadrupedLoads};
 use rodyn::sim::{
     ExplicitEuler, ImplicitEuler, Integrator, Loads, NoLoads, Rk4, SemiImplicitEuler, State,
 };
 use rodyn::spatial::Spatial;
 use rodyn::{Data, Model, Scalar};
+use rodyn_scenarios::quadruped::{self, QuadrupedLoads};
 use std::time::Instant;
 
 /// What is simulated.
@@ -142,7 +142,8 @@ fn run_typed<S: Scalar>(config: &RunConfig, progress: Option<&ProgressBar>) -> T
             by_integrator(config, &model, NoLoads, state, progress)
         }
         Scenario::QuadrupedStand | Scenario::QuadrupedTrot => {
-            let model = quadruped::model::<S>();
+            // Casting fails only for custom joints, which the model file cannot have.
+            let model = quadruped::model::<S>().expect("the Aibo model casts to any scalar");
             let loads = if config.scenario == Scenario::QuadrupedTrot {
                 QuadrupedLoads::trotting()
             } else {

@@ -2,6 +2,7 @@
 //! validates, its sizes and names are what the file says, and its numbers
 //! give the dynamics they should.
 
+use rodyn::algorithm::kinematics::forward_kinematics_velocity;
 use rodyn::algorithm::rnea::gravity_torques;
 use rodyn::spatial::{Inertia, Sym3, Vec3};
 use rodyn::Data;
@@ -93,32 +94,57 @@ fn aibo_is_about_one_and_a_half_kilograms_in_millimetres() {
     assert!((foot.position.z + 0.076).abs() < 1e-15);
 }
 
-/// The generated two-link robot is the hand-written one in
-/// `rodyn::drive::muscle_robot`: same placements, inertias and muscles.
+/// The two-link robot's muscles are routed so that every fibre is near its
+/// optimal length with the arm hanging (`q = 0`): path lengths of 0.228,
+/// 0.228, 0.400 and 0.522 m, each the tendon's slack length plus a fibre
+/// within 10 % of its optimal length.
 #[test]
-fn two_link_robot_matches_rodyns_muscle_robot() {
-    let reference = rodyn::drive::muscle_robot::model::<f64>();
-    let generated = two_link_muscles::MODEL_F64;
-    for i in 0..2 {
-        let (a, b) = (generated.placement(i), reference.placement(i));
-        assert!((a.cos - b.cos).abs() < 1e-15 && (a.sin - b.sin).abs() < 1e-15);
-        assert!((a.trans.x - b.trans.x).abs() < 1e-15 && (a.trans.y - b.trans.y).abs() < 1e-15);
-        let (a, b) = (generated.inertia(i), reference.inertia(i));
-        assert!((a.mass - b.mass).abs() < 1e-15 && (a.izz - b.izz).abs() < 1e-15);
-        assert!((a.com.x - b.com.x).abs() < 1e-15 && (a.com.y - b.com.y).abs() < 1e-15);
-    }
-    let muscles = rodyn::drive::muscle_robot::muscles::<f64>();
-    let generated = [
+fn two_link_robot_fibres_are_near_optimal_when_hanging() {
+    let model = two_link_muscles::MODEL_F64;
+    let mut data = Data::new();
+    forward_kinematics_velocity(&model, &mut data, &[0.0; 2], &[0.0; 2]).unwrap();
+    let muscles = [
         two_link_muscles::M1_F64,
         two_link_muscles::M2_F64,
         two_link_muscles::M3_F64,
         two_link_muscles::M4_F64,
     ];
-    for (g, r) in generated.iter().zip(&muscles) {
-        assert_eq!(g.path.points, r.path.points);
-        assert_eq!(g.params, r.params);
-        assert_eq!(g.input, r.input);
+    for (k, (muscle, expected)) in muscles.iter().zip([0.228, 0.228, 0.400, 0.522]).enumerate() {
+        assert_eq!(muscle.input, k);
+        let length = muscle.path.kinematics(&data).unwrap().length;
+        assert!((length - expected).abs() < 1e-3, "m{}: {length} m", k + 1);
+        let fibre = length - muscle.params.tendon_slack_length;
+        let stretch = fibre / muscle.params.optimal_fiber_length;
+        assert!((stretch - 1.0).abs() < 0.1, "m{}: l/l0 = {stretch}", k + 1);
     }
+}
+
+/// Contacts are `rodyn::sim` ground laws at the file's endpoints, ready for
+/// `GroundContact::add_forces`: a foot 1 mm deep carries k δ.
+#[test]
+fn aibo_contacts_are_ground_contacts_at_the_feet() {
+    use rodyn::sim::contact::NormalLaw;
+    for c in 0..aibo::NC {
+        let ground = aibo::CONTACTS_F64[c];
+        assert_eq!(
+            ground.normal,
+            NormalLaw::LinearSpringDamper {
+                stiffness: 5.0e3,
+                damping: 50.0
+            }
+        );
+        assert_eq!(ground.friction, 0.8);
+        let foot = aibo::CONTACT_POINTS_F64[c];
+        assert_eq!(foot, aibo::ENDPOINTS_F64[aibo::CONTACT_ENDPOINTS[c]]);
+    }
+    assert_eq!(
+        aibo::CONTACT_ENDPOINTS[aibo::contact::HR_FOOT_CONTACT],
+        aibo::endpoint::HR_FOOT
+    );
+    let ground = aibo::CONTACTS_F32[aibo::contact::FL_FOOT_CONTACT];
+    let force = ground.force_at(&Vec3::new(0.0, 0.0, -1.0e-3), &Vec3::ZERO);
+    assert!((force.z - 5.0).abs() < 1e-5, "{}", force.z);
+    assert_eq!((force.x, force.y), (0.0, 0.0));
 }
 
 /// On-line parameter change: a payload on the Panda's last body changes the

@@ -76,7 +76,6 @@ pub mod damper;
 pub mod geometry;
 pub mod motor;
 pub mod muscle;
-pub mod muscle_robot;
 pub mod path;
 pub mod spring;
 

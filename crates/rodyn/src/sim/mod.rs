@@ -1,5 +1,6 @@
-//! Simulation: integrators, ground contact and a legged-robot scenario, all
-//! `no_std` and allocation-free.
+//! Simulation: integrators and ground contact, all `no_std` and
+//! allocation-free. Scenes built on them (the Aibo-size quadruped's gait)
+//! live in the `rodyn-scenarios` crate.
 //!
 //! A simulation advances a [`State`] `(t, q, v)` by a step `dt`. At each
 //! evaluation the integrator asks a [`Loads`] for the joint torques `τ` and
@@ -15,7 +16,6 @@
 //! | [`Integrator`]               | one step: [`ExplicitEuler`], [`SemiImplicitEuler`], [`Rk4`], [`ImplicitEuler`] |
 //! | [`ConfigurationUpdate`]      | how `q` moves on its manifold: exponential map or embedded with optional renormalisation |
 //! | [`contact::GroundContact`]   | compliant point contact with the plane z = 0                    |
-//! | [`quadruped`]                | an Aibo-size quadruped, its stance/trot controller and one call per step |
 //!
 //! Every step either returns `Ok` with a finite state or returns the error of
 //! the dynamics (or [`Error::NonFinite`](crate::Error::NonFinite)) and leaves
@@ -25,7 +25,6 @@ pub mod contact;
 pub mod integrator;
 pub mod loads;
 pub mod manifold;
-pub mod quadruped;
 pub mod state;
 
 pub use integrator::{ExplicitEuler, ImplicitEuler, Integrator, Rk4, SemiImplicitEuler};

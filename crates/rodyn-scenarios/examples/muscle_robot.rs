@@ -3,11 +3,11 @@
 //! sensitivity matrix ∂q̈/∂a of the joint accelerations to the muscle
 //! activations printed along the trajectory.
 //!
-//! Run: `cargo run -p rodyn --example muscle_robot`
+//! Run: `cargo run -p rodyn-scenarios --example muscle_robot`
 //! (plots of the same run: `cargo run -p rodyn-drive-plots --release`).
 
-use rodyn::drive::muscle_robot::{self as robot, NU, NV};
 use rodyn::Data;
+use rodyn_scenarios::muscle_robot::{self as robot, NU, NV};
 
 /// Excitations in [0, 1]: m1 and m2 alternate at the shoulder, m3 pulses
 /// the elbow, m4 holds a steady tone.
@@ -30,8 +30,8 @@ struct State {
 }
 
 fn main() -> Result<(), rodyn::Error> {
-    let model = robot::model::<f64>();
-    let muscles = robot::muscles::<f64>();
+    let model = robot::MODEL_F64;
+    let muscles = robot::MUSCLES_F64;
     let mut data = Data::new();
     let mut forces = robot::RobotForces::new();
 
