@@ -3,21 +3,19 @@
 //! The `agreement` firmware example (run in QEMU by `cargo xtask test`)
 //! prints seeded random inputs and its f32 results of RNEA and ABA. This
 //! test reads that log, recomputes both in f64 on the host from the same
-//! inputs and the same model parameters (the firmware's own `models.rs`,
-//! cast to f64), and bounds the norm-wise relative difference
+//! inputs and the same model parameters (the f32 models that
+//! `rodyn-scenarios` generates from `models/` for the firmware, cast to
+//! f64), and bounds the norm-wise relative difference
 //! `‖x_f32 − x_f64‖∞ / ‖x_f64‖∞`.
 //!
 //! The log is `firmware/expected/agreement.log` (checked in, produced by the
 //! firmware in QEMU), or the file named by `RODYN_AGREEMENT_LOG`, which
 //! `cargo xtask test` sets to the log of the run it just made.
 
-#[allow(dead_code)]
-#[path = "../../firmware/src/models.rs"]
-mod models;
-
 use rodyn::algorithm::aba::aba;
 use rodyn::algorithm::rnea::rnea;
 use rodyn::{Data, Model};
+use rodyn_scenarios::{aibo, panda, pendulum};
 use std::collections::HashMap;
 
 /// Bound on RNEA's relative difference: 32 f32 epsilons (3.8e-6).
@@ -119,12 +117,12 @@ fn firmware_f32_results_agree_with_host_f64() {
     for (name, (rnea_err, aba_err, count)) in [
         (
             "pendulum",
-            check_model("pendulum", &models::PENDULUM, &states),
+            check_model("pendulum", &pendulum::MODEL_F32, &states),
         ),
-        ("panda", check_model("panda", &models::PANDA, &states)),
+        ("panda", check_model("panda", &panda::MODEL_F32, &states)),
         (
             "quadruped",
-            check_model("quadruped", &models::QUADRUPED, &states),
+            check_model("quadruped", &aibo::MODEL_F32, &states),
         ),
     ] {
         println!("{name}: {count} states, max relative difference RNEA {rnea_err:.2e}, ABA {aba_err:.2e}");

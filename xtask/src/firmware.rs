@@ -32,6 +32,10 @@ pub const EXAMPLES: &[Example] = &[
         about: "the seed pendulum with its return spring, simulated in real time",
     },
     Example {
+        name: "quadruped",
+        about: "the Aibo-size quadruped lands, stands and trots, with ground contact, in f32",
+    },
+    Example {
         name: "cost_probe",
         about: "instructions and stack bytes per call, per model and algorithm",
     },

@@ -77,6 +77,8 @@ fn test() -> Result<()> {
         "build",
         "-p",
         "rodyn",
+        "-p",
+        "rodyn-scenarios",
         "--no-default-features",
         "--features",
         "libm",

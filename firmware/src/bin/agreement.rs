@@ -14,7 +14,9 @@ use rodyn::algorithm::aba::aba;
 use rodyn::algorithm::rnea::rnea;
 use rodyn::{Data, Model};
 use rodyn_firmware::exit::exit_with;
-use rodyn_firmware::models::{PANDA, PENDULUM, QUADRUPED};
+use rodyn_firmware::models::aibo::MODEL_F32 as QUADRUPED;
+use rodyn_firmware::models::panda::MODEL_F32 as PANDA;
+use rodyn_firmware::models::pendulum::MODEL_F32 as PENDULUM;
 use rodyn_firmware::rng::XorShift32;
 
 /// Random states per model.

@@ -16,7 +16,8 @@ use rodyn_firmware::control::{ComputedTorque, CosineTrajectory, Gains};
 use rodyn_firmware::drivers::{AbsoluteEncoder, TorqueDrive};
 use rodyn_firmware::exit::{exit, exit_with, CHECK_FAILED};
 use rodyn_firmware::measure::InstructionCounter;
-use rodyn_firmware::models::{PANDA, PANDA_READY, PANDA_TORQUE_LIMITS};
+use rodyn_firmware::models::panda::MODEL_F32 as PANDA;
+use rodyn_firmware::models::{PANDA_READY, PANDA_TORQUE_LIMITS};
 use rodyn_firmware::simulated::{ArmPlant, Signals, SimulatedEncoderSpi, SimulatedPwm};
 
 /// Control period (s): 1 kHz.
@@ -86,7 +87,7 @@ fn main() -> ! {
         max_tick_instructions = max_tick_instructions.max(instructions);
         // Errors after the first 100 ms, once the rate filter has settled.
         if tick >= 100 {
-            for ((worst, q), q_ref) in max_error.iter_mut().zip(plant.q).zip(reference.q) {
+            for ((worst, q), q_ref) in max_error.iter_mut().zip(plant.state.q).zip(reference.q) {
                 let e = (q - q_ref).abs();
                 *worst = worst.max(e);
                 squared_error += e * e;

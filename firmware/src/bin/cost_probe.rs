@@ -17,7 +17,10 @@ use rodyn::space::Space;
 use rodyn::{Data, Model, Scalar};
 use rodyn_firmware::exit::{exit, exit_with, CHECK_FAILED};
 use rodyn_firmware::measure::{stack_bytes, InstructionCounter};
-use rodyn_firmware::models::{PANDA, PENDULUM, PENDULUM_PLANAR, QUADRUPED};
+use rodyn_firmware::models::aibo::MODEL_F32 as QUADRUPED;
+use rodyn_firmware::models::panda::MODEL_F32 as PANDA;
+use rodyn_firmware::models::pendulum::MODEL_F32 as PENDULUM;
+use rodyn_firmware::models::PENDULUM_PLANAR;
 use rodyn_firmware::rng::XorShift32;
 
 /// Random states per model and algorithm.

@@ -18,7 +18,9 @@ use rodyn::algorithm::forward_dynamics::Aba;
 use rodyn::drive::{forward_dynamics_with_drives, DriveForces};
 use rodyn::Data;
 use rodyn_firmware::exit::{exit, exit_with, CHECK_FAILED};
-use rodyn_firmware::models::{PENDULUM, PENDULUM_SPRING};
+use rodyn_firmware::models::pendulum::{
+    MODEL_F32 as PENDULUM, RETURN_SPRING_F32 as PENDULUM_SPRING,
+};
 
 /// SysTick counts per millisecond: mps2-an386's SysTick runs at 25 MHz.
 const TICKS_PER_STEP: u32 = 25_000;

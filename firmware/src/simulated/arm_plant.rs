@@ -3,22 +3,24 @@
 
 use super::{Signals, PWM_PERIOD};
 use crate::drivers::duty_to_torque;
-use rodyn::algorithm::aba::aba;
+use rodyn::algorithm::forward_dynamics::Aba;
+use rodyn::sim::{Integrator, SemiImplicitEuler, State};
+use rodyn::spatial::Force;
 use rodyn::{Data, Model, Result};
 
-/// A fixed-base chain of `N` revolute joints, simulated with semi-implicit
-/// (symplectic) Euler: `v ← v + h q̈(q, v, τ)`, then `q ← q + h v`. It keeps
-/// the energy of an undriven chain bounded, which explicit Euler does not.
+/// A fixed-base chain of `N` revolute joints, simulated by ABA and
+/// `rodyn::sim`'s semi-implicit (symplectic) Euler: `v ← v + h q̈(q, v, τ)`,
+/// then `q ← q + h v`. It keeps the energy of an undriven chain bounded,
+/// which explicit Euler does not.
 #[derive(Debug)]
 pub struct ArmPlant<'m, const N: usize> {
     model: &'m Model<f32, N, N, N>,
     data: Data<f32, N, N>,
-    /// Joint angles (rad).
-    pub q: [f32; N],
-    /// Joint rates (rad/s).
-    pub v: [f32; N],
+    /// Time (s), joint angles `q` (rad) and rates `v` (rad/s).
+    pub state: State<f32, N, N>,
     /// Full-scale torque of each drive (N m).
     limits: [f32; N],
+    integrator: SemiImplicitEuler,
 }
 
 impl<'m, const N: usize> ArmPlant<'m, N> {
@@ -27,9 +29,9 @@ impl<'m, const N: usize> ArmPlant<'m, N> {
         Self {
             model,
             data: Data::new(),
-            q,
-            v: [0.0; N],
+            state: State::new(q, [0.0; N]),
             limits,
+            integrator: SemiImplicitEuler::default(),
         }
     }
 
@@ -48,13 +50,28 @@ impl<'m, const N: usize> ArmPlant<'m, N> {
     /// ABA's errors (a non-finite state after divergence).
     pub fn advance(&mut self, signals: &Signals<N>, dt: f32, substeps: u32) -> Result<()> {
         let tau = self.drive_torques(signals);
+        // The drives hold their torques over the controller tick.
+        let mut loads = |_: &Model<f32, N, N, N>,
+                         _: &mut Data<f32, N, N>,
+                         _: f32,
+                         _: &[f32; N],
+                         _: &[f32; N],
+                         tau_out: &mut [f32; N],
+                         _: &mut [Force<f32>; N]|
+         -> Result<()> {
+            *tau_out = tau;
+            Ok(())
+        };
         let h = dt / substeps as f32;
         for _ in 0..substeps {
-            let ddq = aba(self.model, &mut self.data, &self.q, &self.v, &tau, None)?;
-            for ((q, v), ddq) in self.q.iter_mut().zip(&mut self.v).zip(ddq) {
-                *v += h * ddq;
-                *q += h * *v;
-            }
+            self.integrator.step(
+                Aba,
+                self.model,
+                &mut self.data,
+                &mut self.state,
+                h,
+                &mut loads,
+            )?;
         }
         self.publish(signals);
         Ok(())
@@ -62,7 +79,7 @@ impl<'m, const N: usize> ArmPlant<'m, N> {
 
     /// Writes the joint angles where the simulated encoders read them.
     pub fn publish(&self, signals: &Signals<N>) {
-        for (cell, q) in signals.angles.iter().zip(self.q) {
+        for (cell, q) in signals.angles.iter().zip(self.state.q) {
             cell.set(q);
         }
     }
