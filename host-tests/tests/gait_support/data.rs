@@ -233,7 +233,7 @@ impl GroundReaction {
 
     /// One line of `ground_reaction.csv`.
     #[must_use]
-    pub fn to_csv_line(&self) -> String {
+    pub fn to_csv_line(self) -> String {
         let (r, l) = (self.right, self.left);
         format!(
             "{},{:.4},{:.4},{:.4},{:.5},{:.4},{:.4},{:.5}",
