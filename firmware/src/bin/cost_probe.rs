@@ -13,6 +13,7 @@ use cortex_m_rt::entry;
 use rodyn::algorithm::crba::crba;
 use rodyn::algorithm::forward_dynamics::{Aba, Crba, ForwardDynamics};
 use rodyn::algorithm::rnea::rnea;
+use rodyn::sim::SemiImplicitEuler;
 use rodyn::space::Space;
 use rodyn::{Data, Model, Scalar};
 use rodyn_firmware::exit::{exit, exit_with, CHECK_FAILED};
@@ -20,7 +21,8 @@ use rodyn_firmware::measure::{stack_bytes, InstructionCounter};
 use rodyn_firmware::models::aibo::MODEL_F32 as QUADRUPED;
 use rodyn_firmware::models::panda::MODEL_F32 as PANDA;
 use rodyn_firmware::models::pendulum::MODEL_F32 as PENDULUM;
-use rodyn_firmware::models::PENDULUM_PLANAR;
+use rodyn_firmware::models::quadruped::{self, QuadrupedLoads};
+use rodyn_firmware::models::{muscle_robot as robot, PENDULUM_PLANAR};
 use rodyn_firmware::rng::XorShift32;
 
 /// Random states per model and algorithm.
@@ -56,8 +58,46 @@ struct Cost {
     stack: Option<u32>,
 }
 
-/// Probes every algorithm on `model`, printing one `cost` line each
-/// (`name` without spaces: the xtask splits the line at whitespace).
+impl Cost {
+    const NONE: Self = Self {
+        min: u32::MAX,
+        max: 0,
+        stack: Some(0),
+    };
+
+    fn add(&mut self, instructions: u32, stack: Option<u32>) {
+        self.min = self.min.min(instructions);
+        self.max = self.max.max(instructions);
+        self.stack = match (self.stack, stack) {
+            (Some(a), Some(b)) => Some(a.max(b)),
+            _ => None,
+        };
+    }
+
+    /// One `cost` line (`model` and `algorithm` without spaces: the xtask
+    /// splits the line at whitespace).
+    fn report(&self, model: &str, algorithm: &str) {
+        match self.stack {
+            Some(stack) => defmt::println!(
+                "cost model={=str} algorithm={=str} min={} max={} stack={}",
+                model,
+                algorithm,
+                self.min,
+                self.max,
+                stack
+            ),
+            None => defmt::println!(
+                "cost model={=str} algorithm={=str} min={} max={} stack=>16384",
+                model,
+                algorithm,
+                self.min,
+                self.max
+            ),
+        }
+    }
+}
+
+/// Probes every algorithm on `model`, printing one `cost` line each.
 /// Returns false when an algorithm failed.
 fn probe<const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     name: &str,
@@ -67,11 +107,7 @@ fn probe<const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     let mut data = Data::<f32, NB, NV, G>::new();
     for algorithm in Algorithm::ALL {
         let mut rng = XorShift32::new(SEED);
-        let mut cost = Cost {
-            min: u32::MAX,
-            max: 0,
-            stack: Some(0),
-        };
+        let mut cost = Cost::NONE;
         for _ in 0..STATES {
             let mut q = [0.0f32; NQ];
             rng.fill_symmetric(&mut q, core::f32::consts::PI);
@@ -102,32 +138,123 @@ fn probe<const NB: usize, const NQ: usize, const NV: usize, G: Space>(
                 );
                 return false;
             }
-            cost.min = cost.min.min(instructions);
-            cost.max = cost.max.max(instructions);
-            cost.stack = match (cost.stack, stack) {
-                (Some(a), Some(b)) => Some(a.max(b)),
-                _ => None,
-            };
+            cost.add(instructions, stack);
         }
-        match cost.stack {
-            Some(stack) => defmt::println!(
-                "cost model={=str} algorithm={=str} min={} max={} stack={}",
-                name,
-                algorithm.name(),
-                cost.min,
-                cost.max,
-                stack
-            ),
-            None => defmt::println!(
-                "cost model={=str} algorithm={=str} min={} max={} stack=>16384",
-                name,
-                algorithm.name(),
-                cost.min,
-                cost.max
-            ),
-        }
+        cost.report(name, algorithm.name());
     }
     true
+}
+
+/// Probes one scene-level call on [`STATES`] random inputs: `draw` makes
+/// an input (not counted), `call` runs on it (counted, then run again on a
+/// fresh copy for its stack). Returns false when a call failed.
+fn probe_scene<T: Clone>(
+    model: &str,
+    algorithm: &str,
+    counter: &InstructionCounter,
+    mut draw: impl FnMut(&mut XorShift32) -> T,
+    mut call: impl FnMut(&mut T) -> bool,
+) -> bool {
+    let mut rng = XorShift32::new(SEED);
+    let mut cost = Cost::NONE;
+    for _ in 0..STATES {
+        let input = draw(&mut rng);
+        let mut first = input.clone();
+        let (ok, instructions) = counter.count(|| call(&mut first));
+        let mut second = input;
+        let (ok_again, stack) = stack_bytes(|| call(&mut second));
+        if !(ok && ok_again) {
+            defmt::error!(
+                "{=str} {=str}: the call returned an error",
+                model,
+                algorithm
+            );
+            return false;
+        }
+        cost.add(instructions, stack);
+    }
+    cost.report(model, algorithm);
+    true
+}
+
+/// The muscle robot (`models/two_link_muscles.toml`): forward dynamics with
+/// its four muscles, and the same plus the full sensitivity matrix
+/// `∂q̈/∂a` (2 × 4), at random angles (±1 rad), rates (±2 rad/s) and
+/// activations (0 to 1).
+fn probe_muscle_robot(counter: &InstructionCounter) -> bool {
+    use robot::{NU, NV};
+    let draw = |rng: &mut XorShift32| {
+        let (mut q, mut v) = ([0.0f32; NV], [0.0f32; NV]);
+        rng.fill_symmetric(&mut q, 1.0);
+        rng.fill_symmetric(&mut v, 2.0);
+        let a: [f32; NU] = core::array::from_fn(|_| rng.uniform(0.0, 1.0));
+        (q, v, a)
+    };
+    let mut data = robot::RobotData::new();
+    let mut forces = robot::RobotForces::new();
+    let forward = probe_scene(
+        "muscle-robot",
+        "FD+4-muscles",
+        counter,
+        draw,
+        |(q, v, a)| {
+            robot::forward_dynamics(
+                &robot::MODEL_F32,
+                &robot::MUSCLES_F32,
+                &mut data,
+                q,
+                v,
+                a,
+                &mut forces,
+            )
+            .is_ok()
+        },
+    );
+    let mut d_ddq_d_a = [[0.0f32; NU]; NV];
+    let sensitivity = probe_scene("muscle-robot", "FD+dqdd/da", counter, draw, |(q, v, a)| {
+        robot::sensitivity(
+            &robot::MODEL_F32,
+            &robot::MUSCLES_F32,
+            &mut data,
+            q,
+            v,
+            a,
+            &mut forces,
+            &mut d_ddq_d_a,
+        )
+        .is_ok()
+    });
+    forward & sensitivity
+}
+
+/// The quadruped (`models/aibo.toml`): one semi-implicit Euler step of the
+/// trot with ground contact at the four feet (contact forces, the PD
+/// controller, ABA, the configuration update), from the stance pose with
+/// the joints perturbed by up to ±0.2 rad, the trunk within ±1 cm of its
+/// stance height (some feet in the ground, some above), rates up to ±0.5,
+/// at a random time of the stride.
+fn probe_quadruped_step(counter: &InstructionCounter) -> bool {
+    let trot = QuadrupedLoads::<f32>::trotting();
+    let draw = |rng: &mut XorShift32| {
+        let mut state = trot.initial_state(trot.stance_height() + rng.uniform(-0.01, 0.01));
+        for x in &mut state.q[7..] {
+            *x += rng.uniform(-0.2, 0.2);
+        }
+        rng.fill_symmetric(&mut state.v, 0.5);
+        state.t = rng.uniform(0.0, 1.0);
+        (state, trot)
+    };
+    let mut data = Data::new();
+    let mut euler = SemiImplicitEuler::default();
+    probe_scene(
+        "quadruped-contact",
+        "step(SIE,ABA)",
+        counter,
+        draw,
+        |(state, loads)| {
+            quadruped::step(&mut euler, Aba, &QUADRUPED, &mut data, loads, state, 5.0e-4).is_ok()
+        },
+    )
 }
 
 /// One f32 `sin_cos` as rodyn's scalar computes it without std (libm): every
@@ -162,6 +289,8 @@ fn main() -> ! {
     let passed = probe("pendulum", &PENDULUM, &counter)
         & probe("pendulum-planar", &PENDULUM_PLANAR, &counter)
         & probe("panda-7dof", &PANDA, &counter)
-        & probe("quadruped-floating", &QUADRUPED, &counter);
+        & probe("quadruped-floating", &QUADRUPED, &counter)
+        & probe_muscle_robot(&counter)
+        & probe_quadruped_step(&counter);
     exit_with(passed)
 }

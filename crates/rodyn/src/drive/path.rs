@@ -64,9 +64,7 @@ impl<S: Scalar, G: PointGeometry, const K: usize> Path<S, G, K> {
         for p in &self.points {
             if let Some(body) = p.body {
                 if body >= nb {
-                    return Err(Error::InvalidDrive {
-                        problem: DriveProblem::BodyOutOfRange { body },
-                    });
+                    return Err(body_out_of_range(body));
                 }
             }
         }
@@ -88,14 +86,21 @@ impl<S: Scalar, G: PointGeometry, const K: usize> Path<S, G, K> {
         let mut points = [G::point_zero::<S>(); K];
         let mut velocities = [G::point_zero::<S>(); K];
         for (k, endpoint) in self.points.iter().enumerate() {
-            points[k] = endpoint.world_position(&data.o_m_i);
-            if let Some(b) = endpoint.body {
-                // The body's velocity seen in the world frame is the velocity
-                // of the body point at the world origin, so the point's
-                // velocity follows from its world position.
-                let v_world = data.o_m_i[b].act_motion(&data.v[b]);
-                velocities[k] = G::point_velocity(&v_world, &points[k]);
-            }
+            let Some(b) = endpoint.body else {
+                points[k] = endpoint.position;
+                continue;
+            };
+            // `get`, not indexing: `check` has vetted `b`, and a bounds-check
+            // panic would link core's number formatting into firmware images.
+            let (Some(pose), Some(twist)) = (data.o_m_i.get(b), data.v.get(b)) else {
+                return Err(body_out_of_range(b));
+            };
+            points[k] = pose.act_point(&endpoint.position);
+            // The body's velocity seen in the world frame is the velocity
+            // of the body point at the world origin, so the point's
+            // velocity follows from its world position.
+            let v_world = pose.act_motion(twist);
+            velocities[k] = G::point_velocity(&v_world, &points[k]);
         }
         let min_length = S::from_f64(MIN_SEGMENT_LENGTH);
         let mut length = S::ZERO;
@@ -142,7 +147,11 @@ impl<S: Scalar, G: PointGeometry, const K: usize> Path<S, G, K> {
             if let Some(b) = endpoint.body {
                 let f = G::point_scale(&kinematics.unit_forces[k], tension);
                 let f_world = G::force_at_point(&f, &kinematics.points[k]);
-                f_ext[b] += data.o_m_i[b].act_inv_force(&f_world);
+                // `get` for the reason given in `kinematics`.
+                let (Some(pose), Some(f_body)) = (data.o_m_i.get(b), f_ext.get_mut(b)) else {
+                    return Err(body_out_of_range(b));
+                };
+                *f_body += pose.act_inv_force(&f_world);
             }
         }
         Ok(())
@@ -157,5 +166,12 @@ impl<S: Scalar, G: PointGeometry, const K: usize> Path<S, G, K> {
                 position: G::cast_point(&self.points[k].position),
             }),
         }
+    }
+}
+
+/// The error of an endpoint on a body the model does not have.
+fn body_out_of_range(body: usize) -> Error {
+    Error::InvalidDrive {
+        problem: DriveProblem::BodyOutOfRange { body },
     }
 }
