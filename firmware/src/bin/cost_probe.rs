@@ -108,6 +108,7 @@ fn probe<const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     for algorithm in Algorithm::ALL {
         let mut rng = XorShift32::new(SEED);
         let mut cost = Cost::NONE;
+        let mut refused = 0;
         for _ in 0..STATES {
             let mut q = [0.0f32; NQ];
             rng.fill_symmetric(&mut q, core::f32::consts::PI);
@@ -130,15 +131,28 @@ fn probe<const NB: usize, const NQ: usize, const NV: usize, G: Space>(
             };
             let (ok, instructions) = counter.count(&mut call);
             let (ok_again, stack) = stack_bytes(&mut call);
-            if !(ok && ok_again) {
-                defmt::error!(
-                    "{=str} {=str}: the algorithm returned an error",
-                    name,
-                    algorithm.name()
-                );
-                return false;
+            if ok && ok_again {
+                cost.add(instructions, stack);
+            } else {
+                // A reported failure (in f32, CRBA's factorisation refuses
+                // a few states of the light-legged quadruped as not
+                // positive definite): counted, and kept out of the costs,
+                // since an early return is cheaper than a full call.
+                refused += 1;
             }
-            cost.add(instructions, stack);
+        }
+        if refused > 0 {
+            defmt::println!(
+                "refused model={=str} algorithm={=str} states={} of {}",
+                name,
+                algorithm.name(),
+                refused,
+                STATES
+            );
+        }
+        if refused == STATES {
+            defmt::error!("{=str} {=str}: every state failed", name, algorithm.name());
+            return false;
         }
         cost.report(name, algorithm.name());
     }
