@@ -22,6 +22,13 @@ pub struct Topology<const NB: usize, const NV: usize> {
     pub lambda_v: [Option<usize>; NV],
     /// The body each velocity coordinate belongs to.
     pub body_of_v: [usize; NV],
+    /// Where the unbroken stretch of λ ending at coordinate k starts:
+    /// `lambda_v[m] = Some(m - 1)` for every m in `chain_start_v[k] + 1 ..= k`.
+    /// The coordinates that support k (k included) are therefore the
+    /// contiguous range `chain_start_v[k] ..= k`, then those supporting
+    /// `lambda_v[chain_start_v[k]]`: a chain is one range, a branched tree
+    /// a few. The sparse factorisation walks these ranges as slices.
+    pub chain_start_v: [usize; NV],
 }
 
 impl<const NB: usize, const NV: usize> Topology<NB, NV> {
@@ -86,6 +93,15 @@ impl<const NB: usize, const NV: usize> Topology<NB, NV> {
         if v != NV {
             panic!("rodyn model: the joints' velocity coordinates do not add up to NV");
         }
+        let mut chain_start_v = [0; NV];
+        let mut k = 0;
+        while k < NV {
+            chain_start_v[k] = match lambda_v[k] {
+                Some(l) if l + 1 == k => chain_start_v[l],
+                _ => k,
+            };
+            k += 1;
+        }
         Self {
             parents,
             idx_q,
@@ -94,6 +110,7 @@ impl<const NB: usize, const NV: usize> Topology<NB, NV> {
             nv,
             lambda_v,
             body_of_v,
+            chain_start_v,
         }
     }
 
