@@ -18,18 +18,6 @@ pub struct ArticulatedInertia6<S> {
     pub c: Sym3<S>,
 }
 
-/// `[p×] m`: each column of `m` crossed with `p` from the left.
-fn cross_mul<S: Scalar>(p: &Vec3<S>, m: &Mat3<S>) -> Mat3<S> {
-    let mut r = Mat3::ZERO;
-    for j in 0..3 {
-        let col = p.cross(&m.column(j));
-        r.m[0][j] = col.x;
-        r.m[1][j] = col.y;
-        r.m[2][j] = col.z;
-    }
-    r
-}
-
 /// `[p×]` as a matrix.
 fn cross_matrix<S: Scalar>(p: &Vec3<S>) -> Mat3<S> {
     let z = S::ZERO;
@@ -102,18 +90,22 @@ impl<S: Scalar> ArticulatedInertia<S> for ArticulatedInertia6<S> {
         self.c -= Sym3::outer_sym(&u.lin, &w.lin, s);
     }
     fn act(&self, x: &Transform<S>) -> Self {
-        // Rotate every block into a, then shift by p = x.trans:
-        // A_a = A' - (B'P) - (B'P)ᵀ - P C' P, B_a = B' + P C', C_a = C'.
+        // Rotate every block into a, then shift the reference point by
+        // p = x.trans, with P = [p×] (so Pᵀ = -P):
+        // B_a = B' + P C',  A_a = A' - B'P - (B'P)ᵀ - P C' P,  C_a = C'.
         let r = &x.rot;
         let p = &x.trans;
         let a = self.a.rotate(r);
-        let b = r.mul_mat(&self.b).mul_mat(&r.transpose());
+        let b = r.mul_mat(&self.b).mul_mat_tr(r);
         let c = self.c.rotate(r);
-        let pc = cross_mul(p, &c.to_mat3());
+        let pc = Mat3::cross_mul(p, &c.to_mat3());
         let bp = b.mul_cross(p);
-        let pcp = pc.mul_cross(p);
+        // P C' P is symmetric: row i is (P C')_i × p, and only its upper
+        // triangle is formed.
+        let (r0, r1, r2) = (pc.row(0).cross(p), pc.row(1).cross(p), pc.row(2).cross(p));
+        let pcp = Sym3::new(r0.x, r0.y, r0.z, r1.y, r1.z, r2.z);
         Self {
-            a: a - bp.sym_sum() - Sym3::from_upper(&pcp),
+            a: a - bp.sym_sum() - pcp,
             b: b + pc,
             c,
         }

@@ -108,14 +108,26 @@ impl<S: Scalar> Mat3<S> {
     /// `self * o`.
     #[must_use]
     pub fn mul_mat(&self, o: &Self) -> Self {
-        let mut r = Self::ZERO;
-        for i in 0..3 {
-            for j in 0..3 {
-                r.m[i][j] =
-                    self.m[i][0] * o.m[0][j] + self.m[i][1] * o.m[1][j] + self.m[i][2] * o.m[2][j];
-            }
-        }
-        r
+        // Written out rather than looped: at the firmware's size-optimised
+        // level a loop over nine entries is not unrolled, and its index
+        // arithmetic costs as much as the products.
+        let (a, b) = (&self.m, &o.m);
+        let entry = |r: &[S; 3], j: usize| r[0] * b[0][j] + r[1] * b[1][j] + r[2] * b[2][j];
+        Self::from_rows([
+            [entry(&a[0], 0), entry(&a[0], 1), entry(&a[0], 2)],
+            [entry(&a[1], 0), entry(&a[1], 1), entry(&a[1], 2)],
+            [entry(&a[2], 0), entry(&a[2], 1), entry(&a[2], 2)],
+        ])
+    }
+    /// `self * oᵀ`: every entry a dot product of two rows, no transpose formed.
+    #[must_use]
+    pub fn mul_mat_tr(&self, o: &Self) -> Self {
+        let (a, b) = (&self.m, &o.m);
+        Self::from_rows([
+            [dot3(&a[0], &b[0]), dot3(&a[0], &b[1]), dot3(&a[0], &b[2])],
+            [dot3(&a[1], &b[0]), dot3(&a[1], &b[1]), dot3(&a[1], &b[2])],
+            [dot3(&a[2], &b[0]), dot3(&a[2], &b[1]), dot3(&a[2], &b[2])],
+        ])
     }
     /// `self * Rₖ(θ)` for a rotation about coordinate axis `k` given `sin θ`
     /// and `cos θ`: the same as `self.mul_mat(&Mat3::from_axis_index(k, s, c))`.
@@ -159,11 +171,22 @@ impl<S: Scalar> Mat3<S> {
     #[must_use]
     pub fn mul_cross(&self, p: &Vec3<S>) -> Self {
         // Row i of M [p×] is M_iᵀ [p×] = (M_i × p)ᵀ.
-        let mut r = Self::ZERO;
-        for i in 0..3 {
-            r.m[i] = self.row(i).cross(p).to_array();
-        }
-        r
+        Self::from_rows([
+            self.row(0).cross(p).to_array(),
+            self.row(1).cross(p).to_array(),
+            self.row(2).cross(p).to_array(),
+        ])
+    }
+    /// `[p×] self`, the product with the cross-product matrix of `p` on the left.
+    #[must_use]
+    pub fn cross_mul(p: &Vec3<S>, m: &Self) -> Self {
+        // Column j of [p×] M is p × M_j; written by rows of the result.
+        let (c0, c1, c2) = (
+            p.cross(&m.column(0)),
+            p.cross(&m.column(1)),
+            p.cross(&m.column(2)),
+        );
+        Self::from_rows([[c0.x, c1.x, c2.x], [c0.y, c1.y, c2.y], [c0.z, c1.z, c2.z]])
     }
     /// The symmetric part `(self + selfᵀ)`: twice the symmetric part.
     #[must_use]
@@ -189,6 +212,12 @@ impl<S: Scalar> Mat3<S> {
         }
         r
     }
+}
+
+/// The dot product of two rows.
+#[inline]
+pub(crate) fn dot3<S: Scalar>(a: &[S; 3], b: &[S; 3]) -> S {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
 }
 
 impl<S: Scalar> core::ops::Add for Mat3<S> {

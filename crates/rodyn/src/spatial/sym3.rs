@@ -1,5 +1,6 @@
 //! Symmetric 3x3 matrices: rotational inertias and articulated-inertia blocks.
 
+use super::mat3::dot3;
 use super::{Mat3, Vec3};
 use crate::Scalar;
 use core::ops::{Add, AddAssign, Sub, SubAssign};
@@ -98,12 +99,18 @@ impl<S: Scalar> Sym3<S> {
     /// `R self Rᵀ`: the same tensor seen from a frame rotated by `R`.
     #[must_use]
     pub fn rotate(&self, r: &Mat3<S>) -> Self {
-        // (R S) first, then the upper triangle of (R S) Rᵀ.
-        let rs = r.mul_mat(&self.to_mat3());
-        let e = |i: usize, j: usize| {
-            rs.m[i][0] * r.m[j][0] + rs.m[i][1] * r.m[j][1] + rs.m[i][2] * r.m[j][2]
-        };
-        Self::new(e(0, 0), e(0, 1), e(0, 2), e(1, 1), e(1, 2), e(2, 2))
+        // T = R S (27 products), then only the upper triangle of T Rᵀ
+        // (18): the lower one is its mirror.
+        let t = r.mul_mat(&self.to_mat3()).m;
+        let r = &r.m;
+        Self::new(
+            dot3(&t[0], &r[0]),
+            dot3(&t[0], &r[1]),
+            dot3(&t[0], &r[2]),
+            dot3(&t[1], &r[1]),
+            dot3(&t[1], &r[2]),
+            dot3(&t[2], &r[2]),
+        )
     }
     /// `Rᵀ self R`: the tensor of `self` brought back through `R`.
     #[must_use]
