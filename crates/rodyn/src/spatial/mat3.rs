@@ -222,25 +222,27 @@ pub(crate) fn dot3<S: Scalar>(a: &[S; 3], b: &[S; 3]) -> S {
 
 impl<S: Scalar> core::ops::Add for Mat3<S> {
     type Output = Self;
+    #[inline]
     fn add(self, o: Self) -> Self {
-        let mut r = self;
-        for i in 0..3 {
-            for j in 0..3 {
-                r.m[i][j] += o.m[i][j];
-            }
-        }
-        r
+        // Row by row, written out for the size-optimised firmware build
+        // (see `mul_mat`).
+        let row = |a: [S; 3], b: [S; 3]| [a[0] + b[0], a[1] + b[1], a[2] + b[2]];
+        Self::from_rows([
+            row(self.m[0], o.m[0]),
+            row(self.m[1], o.m[1]),
+            row(self.m[2], o.m[2]),
+        ])
     }
 }
 impl<S: Scalar> core::ops::Sub for Mat3<S> {
     type Output = Self;
+    #[inline]
     fn sub(self, o: Self) -> Self {
-        let mut r = self;
-        for i in 0..3 {
-            for j in 0..3 {
-                r.m[i][j] -= o.m[i][j];
-            }
-        }
-        r
+        let row = |a: [S; 3], b: [S; 3]| [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+        Self::from_rows([
+            row(self.m[0], o.m[0]),
+            row(self.m[1], o.m[1]),
+            row(self.m[2], o.m[2]),
+        ])
     }
 }
