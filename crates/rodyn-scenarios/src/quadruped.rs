@@ -1,4 +1,4 @@
-//! The Aibo-size quadruped of [`aibo`](crate::aibo) (`models/aibo.toml`):
+//! The Aibo-size quadruped of [`crate::aibo`] (`models/aibo.toml`):
 //! a PD stance / open-loop trot controller, ground contact at the four
 //! feet, and the one call per step that a firmware makes every tick.
 //!
