@@ -1,3 +1,3 @@
 //! Shared helpers for rodyn's host tests: random states and sample models.
-pub mod random;
 pub mod fixture;
+pub mod random;

@@ -58,9 +58,9 @@ fn check_model<const NB: usize, const NQ: usize, const NV: usize>(
             .collect();
         assert_close("M a + h = RNEA", &m_a_plus_h, &tau, 1e-10);
 
-        for r in 0..NV {
-            for c in 0..NV {
-                assert_eq!(m[r][c], m[c][r], "M not symmetric at ({r}, {c})");
+        for (r, row) in m.iter().enumerate() {
+            for (c, entry) in row.iter().enumerate() {
+                assert_eq!(*entry, m[c][r], "M not symmetric at ({r}, {c})");
             }
         }
         let eigen = nalgebra::DMatrix::from_fn(NV, NV, |r, c| m[r][c]).symmetric_eigen();

@@ -17,8 +17,16 @@ const ARM: Model<f64, 2, 2, 2> = Model::new(
         Transform::from_translation(Vec3::new(0.4, 0.0, 0.0)),
     ],
     [
-        Inertia::new(2.0, Vec3::new(0.2, 0.0, 0.0), Sym3::diagonal(0.002, 0.03, 0.03)),
-        Inertia::new(1.2, Vec3::new(0.15, 0.0, 0.0), Sym3::diagonal(0.001, 0.01, 0.01)),
+        Inertia::new(
+            2.0,
+            Vec3::new(0.2, 0.0, 0.0),
+            Sym3::diagonal(0.002, 0.03, 0.03),
+        ),
+        Inertia::new(
+            1.2,
+            Vec3::new(0.15, 0.0, 0.0),
+            Sym3::diagonal(0.001, 0.01, 0.01),
+        ),
     ],
     Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
 );
@@ -30,7 +38,10 @@ fn main() -> Result<(), Error> {
 
     let tau = *rnea(&ARM, &mut data, &q, &v, &a, None)?;
     println!("RNEA torques for a = {a:?}: {tau:.6?} N m");
-    println!("gravity torques: {:.6?} N m", gravity_torques(&ARM, &mut data, &q)?);
+    println!(
+        "gravity torques: {:.6?} N m",
+        gravity_torques(&ARM, &mut data, &q)?
+    );
     println!("mass matrix: {:.6?}", crba(&ARM, &mut data, &q)?);
 
     // Swap the method by changing one type ...
