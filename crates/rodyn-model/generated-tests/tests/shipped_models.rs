@@ -168,7 +168,9 @@ fn a_payload_changes_the_gravity_torques_by_its_weight() {
 
     // Expected change: tau_j += -(z_j x (p - o_j)) . (m g) for each revolute
     // joint j, with z_j the world axis and o_j the world origin of joint j.
+    // Body poses come from forward kinematics (RNEA does not compute them).
     use rodyn::space::RigidTransform;
+    rodyn::algorithm::kinematics::forward_kinematics(&model, &mut data, &q).unwrap();
     let g = Vec3::new(0.0, 0.0, -9.81);
     let p = data.o_m_i[last].act_point(&payload_at);
     for j in 0..panda::NV {

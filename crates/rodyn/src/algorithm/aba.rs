@@ -31,10 +31,12 @@ pub const SINGULAR_PIVOT_EPS: f64 = 64.0;
 /// Joint accelerations `q̈ = M⁻¹ (τ - h)` in O(n).
 ///
 /// Inputs: `q` (NQ), `v` and `tau` (NV), optional external forces per body
-/// (body frame). Returns `data.ddq`. Leaves valid: `li_m_i`, `o_m_i`, `v`,
-/// `c`, `ia` and `pa` (the articulated quantities carried to the parent,
-/// before projection), `u_cols`, `d_inv`, `u`, `a_gf` (acceleration minus
-/// gravity), `ddq`.
+/// (body frame). Returns `data.ddq`. Leaves valid: `li_m_i`, `v`, `c`, `ia`
+/// and `pa` (the articulated quantities carried to the parent, before
+/// projection), `u_cols`, `d_inv`, `u`, `a_gf` (acceleration minus gravity),
+/// `ddq`. `o_m_i` is not written (run
+/// [`forward_kinematics`](crate::algorithm::kinematics::forward_kinematics)
+/// for body poses).
 ///
 /// # Errors
 /// Non-finite inputs, invalid configurations, and

@@ -9,7 +9,8 @@ use crate::Scalar;
 
 /// Kinetic energy `½ Σ vᵢ · Iᵢ vᵢ` (J).
 ///
-/// Inputs: `q` (NQ), `v` (NV). Leaves valid: `li_m_i`, `o_m_i`, `v`, `c`.
+/// Inputs: `q` (NQ), `v` (NV). Leaves valid: `li_m_i`, `v`, `c`; `o_m_i` is
+/// not written.
 ///
 /// # Errors
 /// Invalid or non-finite inputs.

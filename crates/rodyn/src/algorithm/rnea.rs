@@ -31,8 +31,10 @@ pub(crate) fn check_external<S: Scalar, F: VectorOps<S>>(f_ext: Option<&[F]>) ->
 ///
 /// Inputs: `q` (NQ), `v` and `a` (NV), and optionally one external force per
 /// body, acting on that body and expressed in its own frame (Pinocchio's
-/// `fext` convention). Returns `data.tau`. Leaves valid: `li_m_i`, `o_m_i`,
-/// `v`, `c`, `a_gf` (acceleration minus gravity), `f`, `tau`.
+/// `fext` convention). Returns `data.tau`. Leaves valid: `li_m_i`, `v`, `c`,
+/// `a_gf` (acceleration minus gravity), `f`, `tau`. `o_m_i` is not written
+/// (run [`forward_kinematics`](crate::algorithm::kinematics::forward_kinematics)
+/// for body poses).
 ///
 /// # Errors
 /// Non-finite inputs and invalid configurations, naming the entry.
