@@ -48,7 +48,8 @@ fn exact_sin_cos(x: f32) -> (f32, f32) {
 /// `(sin x, cos x)` in single precision.
 #[inline]
 pub(crate) fn sin_cos(x: f32) -> (f32, f32) {
-    if !(x.abs() <= FAST_LIMIT) {
+    // NaN and infinities take the exact path too (they compare false).
+    if x.is_nan() || x.abs() > FAST_LIMIT {
         return exact_sin_cos(x);
     }
     // Nearest multiple k of π/2, rounded half away from zero (as-casts truncate).
