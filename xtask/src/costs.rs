@@ -1,4 +1,4 @@
-//! The cost and size tables of `docs/sections/firmware.md`.
+//! The cost and size tables of `docs/sections/firmware.md` and `README.md`.
 //!
 //! `cargo xtask costs` runs the `cost_probe` firmware (instructions per call
 //! counted with QEMU's `-icount` and SysTick, stack bytes from a painted
@@ -222,17 +222,17 @@ pub fn regenerate() -> Result<()> {
     }
     std::fs::write(sizes_path(), sizes_file)?;
 
-    let doc_path = shell::root().join("docs/sections/firmware.md");
-    let doc = std::fs::read_to_string(&doc_path)
-        .with_context(|| format!("cannot read {}", doc_path.display()))?;
-    let doc = replace_between(&doc, "costs", &cost_table)?;
-    let doc = replace_between(&doc, "sizes", &size_table)?;
-    std::fs::write(&doc_path, doc)?;
-    println!(
-        "wrote {} and {}",
-        doc_path.display(),
-        sizes_path().display()
-    );
+    // The firmware page and the README show the same tables.
+    for doc in ["docs/sections/firmware.md", "README.md"] {
+        let doc_path = shell::root().join(doc);
+        let text = std::fs::read_to_string(&doc_path)
+            .with_context(|| format!("cannot read {}", doc_path.display()))?;
+        let text = replace_between(&text, "costs", &cost_table)?;
+        let text = replace_between(&text, "sizes", &size_table)?;
+        std::fs::write(&doc_path, text)?;
+        println!("wrote {}", doc_path.display());
+    }
+    println!("wrote {}", sizes_path().display());
     Ok(())
 }
 
