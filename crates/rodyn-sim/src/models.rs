@@ -1,7 +1,7 @@
 //! The models the scenarios and experiments run, built in Rust for any scalar.
 
 use rodyn::joint::{Axis, Joint};
-use rodyn::spatial::{Inertia, Mat3, Motion, Sym3, Transform, Vec3};
+use rodyn::spatial::{Inertia, Motion, Sym3, Transform, Vec3};
 use rodyn::{Model, Scalar};
 
 /// Gravity along -z (m/s²).
@@ -18,81 +18,14 @@ fn v3<S: Scalar>(x: f64, y: f64, z: f64) -> Vec3<S> {
     Vec3::new(S::from_f64(x), S::from_f64(y), S::from_f64(z))
 }
 
-/// A 7-DoF arm with the Franka Emika Panda's kinematics and inertias, as
-/// published in its URDF (`models/urdf/panda.urdf`: joint origins, link
-/// masses, centres of mass and inertia tensors of links 1-7; the hand is
-/// left off). Base fixed, gravity along -z, no joint friction or limits.
+/// The 7-DoF Franka Emika Panda of `models/panda.toml` (its URDF, hand
+/// merged into the last link), as `rodyn-scenarios` compiles it, in any
+/// scalar. Base fixed, gravity along -z, no joint friction or limits.
 #[must_use]
 pub fn arm7<S: Scalar>() -> Model<S, 7, 7, 7> {
-    let f = S::from_f64;
-    let half_pi = core::f64::consts::FRAC_PI_2;
-    let about_x = |angle: f64| Mat3::from_axis_index(0, f(angle.sin()), f(angle.cos()));
-    // Joint origins: xyz and roll (rpy has only a roll in the Panda).
-    let origins: [([f64; 3], f64); 7] = [
-        ([0.0, 0.0, 0.333], 0.0),
-        ([0.0, 0.0, 0.0], -half_pi),
-        ([0.0, -0.316, 0.0], half_pi),
-        ([0.0825, 0.0, 0.0], half_pi),
-        ([-0.0825, 0.384, 0.0], -half_pi),
-        ([0.0, 0.0, 0.0], half_pi),
-        ([0.088, 0.0, 0.0], half_pi),
-    ];
-    // mass, com, [ixx ixy ixz iyy iyz izz].
-    let links: [(f64, [f64; 3], [f64; 6]); 7] = [
-        (
-            4.970684,
-            [0.003875, 0.002081, -0.04762],
-            [0.70337, -0.000139, 0.006772, 0.70661, 0.019169, 0.009117],
-        ),
-        (
-            0.646926,
-            [-0.003141, -0.02872, 0.003495],
-            [0.007962, -0.003925, 0.010254, 0.02811, 0.000704, 0.025995],
-        ),
-        (
-            3.228604,
-            [0.027518, 0.039252, -0.066502],
-            [0.037242, -0.004761, -0.011396, 0.036155, -0.012805, 0.01083],
-        ),
-        (
-            3.587895,
-            [-0.05317, 0.104419, 0.027454],
-            [0.025853, 0.007796, -0.001332, 0.019552, 0.008641, 0.028323],
-        ),
-        (
-            1.225946,
-            [-0.011953, 0.041065, -0.038437],
-            [0.035549, -0.002117, -0.004037, 0.029474, 0.000229, 0.008627],
-        ),
-        (
-            1.666555,
-            [0.060149, -0.014117, -0.010517],
-            [0.001964, 0.000109, -0.001158, 0.004354, 0.000341, 0.005433],
-        ),
-        (
-            0.735522,
-            [0.010517, -0.004252, 0.061597],
-            [
-                0.012516, -0.000428, -0.001196, 0.010027, -0.000741, 0.004815,
-            ],
-        ),
-    ];
-    let placements =
-        origins.map(|(xyz, roll)| Transform::new(about_x(roll), v3(xyz[0], xyz[1], xyz[2])));
-    let inertias = links.map(|(m, c, i)| {
-        Inertia::new(
-            f(m),
-            v3(c[0], c[1], c[2]),
-            Sym3::new(f(i[0]), f(i[1]), f(i[2]), f(i[3]), f(i[4]), f(i[5])),
-        )
-    });
-    Model::new(
-        [None, Some(0), Some(1), Some(2), Some(3), Some(4), Some(5)],
-        [Joint::revolute(Axis::Z); 7],
-        placements,
-        inertias,
-        gravity_z(),
-    )
+    rodyn_scenarios::panda::MODEL_F64
+        .cast()
+        .expect("the Panda has no custom joint, so every scalar conversion succeeds")
 }
 
 /// The arm's release pose (rad): elbow bent, wrist turned; it then swings
