@@ -87,6 +87,13 @@ pub trait JointModel<S: Scalar, G: Space>: Copy + Debug {
     fn integrate(&self, q: &[S], v: &[S], dt: S, out: &mut [S]);
     /// Checks that `q` is a valid configuration (finite, unit quaternion).
     fn check_configuration(&self, q: &[S]) -> Result<(), ConfigurationError>;
+    /// `false` when every finite `q` is a valid configuration, so that
+    /// [`check_configuration`](Self::check_configuration) need not be asked
+    /// once `q` is known to be finite. The default, `true`, always asks.
+    #[inline]
+    fn constrains_configuration(&self) -> bool {
+        true
+    }
     /// Projects `q` back onto the configuration manifold (renormalises quaternions).
     fn normalize(&self, q: &mut [S]);
 }
@@ -247,6 +254,10 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
             Self::FreeFlyer(j) => j.integrate(q, v, dt, out),
             Self::Custom(c) => c.behaviour.integrate(q, v, dt, out),
         }
+    }
+    #[inline]
+    fn constrains_configuration(&self) -> bool {
+        matches!(self, Self::FreeFlyer(_) | Self::Custom(_))
     }
     fn check_configuration(&self, q: &[S]) -> Result<(), ConfigurationError> {
         match self {

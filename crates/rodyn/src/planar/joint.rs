@@ -154,6 +154,11 @@ impl<S: Scalar> JointModel<S, Planar> for PlanarJoint<S> {
             Err(ConfigurationError::NonFinite)
         }
     }
+    /// Every planar joint accepts any finite `q` (angles, not quaternions).
+    #[inline]
+    fn constrains_configuration(&self) -> bool {
+        false
+    }
     fn normalize(&self, _q: &mut [S]) {}
 }
 
