@@ -213,7 +213,7 @@ where
         w: &[S],
         out: &mut DriveForces<S, G, NB, NV>,
     ) -> Result<()> {
-        self.iter().try_for_each(|e| e.add_forces(state, w, out))
+        self.as_slice().add_forces(state, w, out)
     }
     fn add_input_derivative(
         &self,
@@ -222,8 +222,7 @@ where
         input: usize,
         out: &mut DriveForces<S, G, NB, NV>,
     ) -> Result<()> {
-        self.iter()
-            .try_for_each(|e| e.add_input_derivative(state, w, input, out))
+        self.as_slice().add_input_derivative(state, w, input, out)
     }
 }
 
