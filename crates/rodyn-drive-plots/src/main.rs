@@ -8,26 +8,17 @@
 //! `docs/img/drives/muscle_robot_sensitivity.svg`, and prints a summary.
 
 use plotters::prelude::*;
-use rodyn::Data;
-use rodyn_scenarios::muscle_robot::{self as robot, NU, NV};
+use rodyn::algorithm::forward_dynamics::Aba;
+use rodyn_scenarios::muscle_robot::{
+    self as robot, example_excitation, RobotState, RobotWorkspace, Scheme, INITIAL_ACTIVATION, NU,
+    NV,
+};
 use std::path::PathBuf;
 
 /// Simulated time (s) and RK4 step (s), as the core example
 /// `cargo run -p rodyn-scenarios --example muscle_robot`.
 const DURATION: f64 = 2.0;
 const DT: f64 = 1e-3;
-
-/// The example's excitations: m1 and m2 alternate at the shoulder, m3
-/// pulses the elbow, m4 holds a steady tone.
-fn excitation(t: f64) -> [f64; NU] {
-    let s = (std::f64::consts::PI * t).sin();
-    [
-        0.35 + 0.3 * s,
-        0.35 - 0.3 * s,
-        0.1 + 0.06 * (2.0 * std::f64::consts::PI * t).sin(),
-        0.12,
-    ]
-}
 
 /// One recorded instant.
 struct Sample {
@@ -38,64 +29,45 @@ struct Sample {
     sensitivity: [[f64; NU]; NV],
 }
 
-/// RK4 on (q, v, a) with the sensitivity matrix recorded every step.
+/// RK4 on (q, v, a) under the example's excitations, with the sensitivity
+/// matrix recorded every step.
 fn simulate() -> Result<Vec<Sample>, rodyn::Error> {
     let model = robot::MODEL_F64;
     let muscles = robot::MUSCLES_F64;
-    let mut data = Data::new();
-    let mut forces = robot::RobotForces::new();
-    type X = ([f64; NV], [f64; NV], [f64; NU]);
-    let mut f = |t: f64, x: &X| -> Result<X, rodyn::Error> {
-        let ddq =
-            *robot::forward_dynamics(&model, &muscles, &mut data, &x.0, &x.1, &x.2, &mut forces)?;
-        Ok((
-            x.1,
-            ddq,
-            robot::activation_rates(&muscles, &excitation(t), &x.2),
-        ))
-    };
-    let step = |x: &X, h: f64, d: &X| -> X {
-        (
-            std::array::from_fn(|k| x.0[k] + h * d.0[k]),
-            std::array::from_fn(|k| x.1[k] + h * d.1[k]),
-            std::array::from_fn(|k| x.2[k] + h * d.2[k]),
-        )
-    };
-    let mut x: X = ([0.0; NV], [0.0; NV], [0.05; NU]);
+    let mut work = RobotWorkspace::new();
+    let mut x = RobotState::at_rest(INITIAL_ACTIVATION);
     let mut samples = Vec::new();
     let steps = (DURATION / DT).round() as usize;
-    let mut sdata = Data::new();
-    let mut sforces = robot::RobotForces::new();
     for n in 0..=steps {
-        let t = n as f64 * DT;
         let mut sensitivity = [[0.0; NU]; NV];
         robot::sensitivity(
             &model,
             &muscles,
-            &mut sdata,
-            &x.0,
-            &x.1,
-            &x.2,
-            &mut sforces,
+            &mut work.data,
+            &x.q,
+            &x.v,
+            &x.activation,
+            &mut work.forces,
             &mut sensitivity,
         )?;
         samples.push(Sample {
-            t,
-            q: x.0,
-            u: excitation(t),
-            a: x.2,
+            t: x.t,
+            q: x.q,
+            u: example_excitation(x.t),
+            a: x.activation,
             sensitivity,
         });
-        let k1 = f(t, &x)?;
-        let k2 = f(t + 0.5 * DT, &step(&x, 0.5 * DT, &k1))?;
-        let k3 = f(t + 0.5 * DT, &step(&x, 0.5 * DT, &k2))?;
-        let k4 = f(t + DT, &step(&x, DT, &k3))?;
-        let sum = (
-            std::array::from_fn(|k| k1.0[k] + 2.0 * k2.0[k] + 2.0 * k3.0[k] + k4.0[k]),
-            std::array::from_fn(|k| k1.1[k] + 2.0 * k2.1[k] + 2.0 * k3.1[k] + k4.1[k]),
-            std::array::from_fn(|k| k1.2[k] + 2.0 * k2.2[k] + 2.0 * k3.2[k] + k4.2[k]),
-        );
-        x = step(&x, DT / 6.0, &sum);
+        if n < steps {
+            robot::step::<Aba, _>(
+                Scheme::Rk4,
+                &model,
+                &muscles,
+                &mut work,
+                &mut x,
+                DT,
+                &example_excitation,
+            )?;
+        }
     }
     Ok(samples)
 }
