@@ -84,6 +84,42 @@ pub fn rotation_from_rpy(rpy: &Vec3) -> Mat3 {
     ]
 }
 
+/// How close (absolute) an entry must be to 0 or ±1 for
+/// [`snap_signed_permutation`] to round it: far above the 1e-16 that
+/// `cos(π/2)` leaves, far below any deliberate rotation.
+pub const SNAP_TOLERANCE: f64 = 1e-12;
+
+/// `m` with its entries rounded to exactly 0 or ±1 when every entry is within
+/// [`SNAP_TOLERANCE`] of one of them and the result is a rotation (a signed
+/// permutation: one ±1 per row and column, determinant +1); otherwise `None`.
+///
+/// A URDF `rpy` of 0 or ±π/2 gives such a rotation up to 6e-17 entries where
+/// zeros belong; with exact entries rodyn recognises it and applies it by
+/// moving entries instead of multiplying.
+#[must_use]
+pub fn snap_signed_permutation(m: &Mat3) -> Option<Mat3> {
+    let mut out = [[0.0; 3]; 3];
+    for (row, out_row) in m.iter().zip(&mut out) {
+        for (v, o) in row.iter().zip(out_row.iter_mut()) {
+            let snapped = v.round();
+            if (v - snapped).abs() > SNAP_TOLERANCE || snapped.abs() > 1.0 {
+                return None;
+            }
+            // `round` keeps the sign of a tiny negative: write a clean zero.
+            *o = if snapped == 0.0 { 0.0 } else { snapped };
+        }
+    }
+    let one_per_line = (0..3).all(|k| {
+        let row: f64 = out[k].iter().map(|v| v.abs()).sum();
+        let col: f64 = out.iter().map(|r| r[k].abs()).sum();
+        row == 1.0 && col == 1.0
+    });
+    let det = out[0][0] * (out[1][1] * out[2][2] - out[1][2] * out[2][1])
+        - out[0][1] * (out[1][0] * out[2][2] - out[1][2] * out[2][0])
+        + out[0][2] * (out[1][0] * out[2][1] - out[1][1] * out[2][0]);
+    (one_per_line && det == 1.0).then_some(out)
+}
+
 /// A rigid pose `aMb` (rotation, then translation).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Pose {
