@@ -124,12 +124,16 @@ fn label(p: &Point) -> String {
     )
 }
 
-/// Runs the sweep for the arm and the quadruped, writes
+/// Runs the sweep for the arm, the quadruped and the muscle robot, writes
 /// `chart-<scenario>.svg` and `.csv` into `out`, and prints the front and the
 /// 1 kHz candidates.
 pub fn chart_command(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
     std::fs::create_dir_all(out)?;
-    for scenario in [Scenario::ArmSwing, Scenario::QuadrupedStand] {
+    for scenario in [
+        Scenario::ArmSwing,
+        Scenario::QuadrupedStand,
+        Scenario::MuscleRobot,
+    ] {
         let points = sweep(scenario);
         let front = pareto_front(&points);
         let name = scenario.name();

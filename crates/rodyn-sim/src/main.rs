@@ -56,7 +56,7 @@ enum Command {
         #[arg(short, long, default_value = "out")]
         out: PathBuf,
     },
-    /// The speed-versus-accuracy chart for the arm and the quadruped.
+    /// The speed-versus-accuracy chart for the arm, the quadruped and the muscle robot.
     Chart {
         /// Output directory.
         #[arg(short, long, default_value = "docs/img/sim")]

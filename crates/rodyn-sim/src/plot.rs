@@ -129,14 +129,27 @@ fn transform(v: f64, scale: Scale) -> Option<f64> {
     out.is_finite().then_some(out)
 }
 
-fn axis_label(v: f64, scale: Scale) -> String {
+/// A tick label; `span` is the axis length, in the axis's own units.
+fn axis_label(v: f64, scale: Scale, span: f64) -> String {
     match scale {
         Scale::Linear => {
+            // Tick positions are sums of float steps (0.30000000000000004,
+            // -2e-16 for zero): print them to a millionth of the span.
+            let digits = (6.0 - span.abs().log10()).ceil().max(0.0) as usize;
+            let rounded = format!("{v:.digits$}");
+            let v: f64 = rounded.parse().unwrap_or(v);
             let a = v.abs();
             if a != 0.0 && !(1e-3..1e4).contains(&a) {
                 format!("{v:.0e}")
+            } else if rounded.contains('.') {
+                let trimmed = rounded.trim_end_matches('0').trim_end_matches('.');
+                if trimmed == "-0" {
+                    "0".into()
+                } else {
+                    trimmed.into()
+                }
             } else {
-                format!("{v}")
+                rounded
             }
         }
         Scale::Log => {
@@ -202,8 +215,8 @@ pub fn plot(
         .configure_mesh()
         .x_desc(figure.x_label)
         .y_desc(figure.y_label)
-        .x_label_formatter(&|v| axis_label(*v, xs))
-        .y_label_formatter(&|v| axis_label(*v, ys))
+        .x_label_formatter(&|v| axis_label(*v, xs, x1 - x0))
+        .y_label_formatter(&|v| axis_label(*v, ys, y1 - y0))
         .light_line_style(RGBColor(235, 235, 235))
         .draw()?;
     for (s, points) in series.iter().zip(&data) {

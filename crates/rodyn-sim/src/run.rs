@@ -1,6 +1,6 @@
 //! `rodyn-sim run`: one scenario to CSV, SVG plots and a GIF.
 
-use crate::animate::stick_figure_gif;
+use crate::animate::{planar_stick_figure_gif, stick_figure_gif};
 use crate::models::arm7;
 use crate::plot::{plot, Curve, Figure, Mark, Scale, Series};
 use crate::scenario::{run, RunConfig, Scenario};
@@ -10,6 +10,7 @@ use rodyn::space::VectorOps;
 use rodyn::spatial::Force;
 use rodyn::Data;
 use rodyn_scenarios::quadruped::{self, QuadrupedLoads, LEGS, LEG_NAMES};
+use rodyn_scenarios::{muscle_robot, two_link_muscles};
 use std::path::Path;
 
 /// Runs `config`, writes `<scenario>.csv`, `<scenario>.svg` and
@@ -100,6 +101,52 @@ pub fn run_command(config: &RunConfig, out: &Path) -> Result<(), Box<dyn std::er
                 config.scenario == Scenario::QuadrupedTrot,
             )?;
         }
+        Scenario::MuscleRobot => {
+            let names = ["shoulder".to_string(), "elbow".to_string()];
+            trajectory.write_csv(&csv, &names)?;
+            let mut series = vec![
+                Series::new(
+                    "shoulder angle (rad)",
+                    column(&trajectory, 0),
+                    Mark::Line,
+                    0,
+                ),
+                Series::new("elbow angle (rad)", column(&trajectory, 1), Mark::Line, 1),
+            ];
+            for k in 0..muscle_robot::NU {
+                let activation = trajectory
+                    .t
+                    .iter()
+                    .zip(&trajectory.internal)
+                    .map(|(t, a)| (*t, a[k]))
+                    .collect();
+                series.push(Series::new(
+                    format!("activation m{}", k + 1),
+                    activation,
+                    Mark::ThinLine,
+                    2 + k,
+                ));
+            }
+            plot(
+                &plot_path,
+                &figure(
+                    "two-link robot, four muscles, example excitations",
+                    "rad, activation",
+                ),
+                &series,
+            )?;
+            let hand = [two_link_muscles::ENDPOINTS_F64[two_link_muscles::endpoint::HAND]];
+            let muscles = muscle_robot::MUSCLES_F64;
+            let paths: Vec<&[_]> = muscles.iter().map(|m| &m.path.points[..]).collect();
+            planar_stick_figure_gif(
+                &gif,
+                &muscle_robot::MODEL_F64,
+                &hand,
+                &paths,
+                &trajectory,
+                frame,
+            )?;
+        }
     }
     let last_t = trajectory.t.last().copied().unwrap_or(0.0);
     println!(
@@ -112,7 +159,10 @@ pub fn run_command(config: &RunConfig, out: &Path) -> Result<(), Box<dyn std::er
         trajectory.cost_per_simulated_second()
     );
     if let Some(q) = trajectory.q.last() {
-        if config.scenario != Scenario::ArmSwing {
+        if matches!(
+            config.scenario,
+            Scenario::QuadrupedStand | Scenario::QuadrupedTrot
+        ) {
             let q: [f64; quadruped::NQ] = q.as_slice().try_into()?;
             let p = quadruped::trunk_position(&q);
             println!(
@@ -120,6 +170,12 @@ pub fn run_command(config: &RunConfig, out: &Path) -> Result<(), Box<dyn std::er
                 p.x, p.y, p.z
             );
         }
+    }
+    if let (Some(q), Some(a)) = (trajectory.q.last(), trajectory.internal.last()) {
+        println!(
+            "final joint angles {:.4} {:.4} rad, activations {:.3} {:.3} {:.3} {:.3}",
+            q[0], q[1], a[0], a[1], a[2], a[3]
+        );
     }
     if let Some(f) = &trajectory.failure {
         println!("stopped early: {f}");

@@ -11,6 +11,7 @@ use rodyn::sim::{
 };
 use rodyn::spatial::Spatial;
 use rodyn::{Data, Model, Scalar};
+use rodyn_scenarios::muscle_robot::{self, example_excitation, INITIAL_ACTIVATION};
 use rodyn_scenarios::quadruped::{self, QuadrupedLoads};
 use std::time::Instant;
 
@@ -23,6 +24,9 @@ pub enum Scenario {
     QuadrupedStand,
     /// The quadruped trotting open-loop from standing.
     QuadrupedTrot,
+    /// The two-link, four-muscle robot from rest under the example
+    /// excitations, its activations integrated with the joints.
+    MuscleRobot,
 }
 
 /// Forward-dynamics method.
@@ -102,6 +106,7 @@ impl Scenario {
             Self::ArmSwing => "arm-swing",
             Self::QuadrupedStand => "quadruped-stand",
             Self::QuadrupedTrot => "quadruped-trot",
+            Self::MuscleRobot => "muscle-robot",
         }
     }
 }
@@ -159,7 +164,84 @@ fn run_typed<S: Scalar>(config: &RunConfig, progress: Option<&ProgressBar>) -> T
             let state = loads.initial_state(loads.stance_height() + S::from_f64(drop));
             by_integrator(config, &model, loads, state, progress)
         }
+        Scenario::MuscleRobot => match config.method {
+            Method::Aba => simulate_muscle_robot::<Aba, S>(config, progress),
+            Method::Crba => simulate_muscle_robot::<Crba, S>(config, progress),
+        },
     }
+}
+
+impl IntegratorKind {
+    /// The same scheme for the muscle robot's joints-and-activations state.
+    fn muscle_robot_scheme(self) -> muscle_robot::Scheme {
+        match self {
+            Self::ExplicitEuler => muscle_robot::Scheme::ExplicitEuler,
+            Self::SemiImplicitEuler => muscle_robot::Scheme::SemiImplicitEuler,
+            Self::Rk4 => muscle_robot::Scheme::Rk4,
+            Self::ImplicitEuler => muscle_robot::Scheme::ImplicitEuler,
+        }
+    }
+}
+
+/// The muscle robot's stepping loop. Its activations are states beside
+/// `(q, v)`, which `rodyn::sim`'s integrators do not carry, so it steps with
+/// `muscle_robot::step` (the same four schemes) and records the activations
+/// as the trajectory's internal states. Times the steps and the recording,
+/// as [`simulate`] does.
+fn simulate_muscle_robot<M: ForwardDynamics, S: Scalar>(
+    config: &RunConfig,
+    progress: Option<&ProgressBar>,
+) -> Trajectory {
+    // Casting fails only for custom joints, which the model file cannot have.
+    let model = muscle_robot::model::<S>().expect("the muscle robot casts to any scalar");
+    let muscles = muscle_robot::muscles::<S>();
+    let scheme = config.integrator.muscle_robot_scheme();
+    let steps = (config.duration / config.dt).round() as usize;
+    let every = ((config.sample_interval / config.dt).round() as usize).max(1);
+    let dt = S::from_f64(config.dt);
+    let mut work = muscle_robot::RobotWorkspace::new();
+    let mut state = muscle_robot::RobotState::at_rest(S::from_f64(INITIAL_ACTIVATION));
+    let names = (1..=muscle_robot::NU).map(|k| format!("a{k}")).collect();
+    let mut trajectory =
+        Trajectory::with_internal_states(muscle_robot::NV, muscle_robot::NV, names);
+    let record = |trajectory: &mut Trajectory, s: &muscle_robot::RobotState<S>| {
+        let widen = |x: &S| x.to_f64();
+        trajectory.record_with_internal(
+            &State {
+                t: s.t.to_f64(),
+                q: s.q.each_ref().map(widen),
+                v: s.v.each_ref().map(widen),
+            },
+            &s.activation.map(|x| x.to_f64()),
+        );
+    };
+    record(&mut trajectory, &state);
+    let start = Instant::now();
+    for n in 1..=steps {
+        if let Err(e) = muscle_robot::step::<M, S>(
+            scheme,
+            &model,
+            &muscles,
+            &mut work,
+            &mut state,
+            dt,
+            &example_excitation,
+        ) {
+            trajectory.failure = Some(format!("t = {:.4} s: {e}", state.t.to_f64()));
+            break;
+        }
+        if n % every == 0 || n == steps {
+            record(&mut trajectory, &state);
+        }
+        if let Some(bar) = progress {
+            if n % 1000 == 0 {
+                bar.set_position(n as u64);
+            }
+        }
+    }
+    trajectory.wall_time = start.elapsed();
+    trajectory.steps = steps;
+    trajectory
 }
 
 fn by_integrator<S, L, const NB: usize, const NQ: usize, const NV: usize>(

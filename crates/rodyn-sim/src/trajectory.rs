@@ -14,6 +14,11 @@ pub struct Trajectory {
     pub q: Vec<Vec<f64>>,
     /// Velocities, one per sample.
     pub v: Vec<Vec<f64>>,
+    /// First-order states beside `(q, v)` (the muscle robot's activations),
+    /// one row per sample; empty for scenarios without any.
+    pub internal: Vec<Vec<f64>>,
+    /// Names of the internal states, for the CSV header.
+    pub internal_names: Vec<String>,
     /// Why the run stopped early, if it did.
     pub failure: Option<String>,
     /// Host time spent stepping.
@@ -32,6 +37,24 @@ impl Trajectory {
             nv,
             ..Self::default()
         }
+    }
+
+    /// An empty trajectory that also records the internal states `names`.
+    pub fn with_internal_states(nq: usize, nv: usize, names: Vec<String>) -> Self {
+        Self {
+            internal_names: names,
+            ..Self::new(nq, nv)
+        }
+    }
+
+    /// Appends a sample with its internal states.
+    pub fn record_with_internal<const NQ: usize, const NV: usize>(
+        &mut self,
+        s: &State<f64, NQ, NV>,
+        internal: &[f64],
+    ) {
+        self.record(s);
+        self.internal.push(internal.to_vec());
     }
 
     /// Appends a sample.
@@ -71,7 +94,7 @@ impl Trajectory {
         worst
     }
 
-    /// Writes `t, q0.., v0..` as CSV.
+    /// Writes `t, q0.., v0..` and the internal states as CSV.
     pub fn write_csv(&self, path: &Path, q_names: &[String]) -> std::io::Result<()> {
         let mut out = std::io::BufWriter::new(std::fs::File::create(path)?);
         write!(out, "t")?;
@@ -84,10 +107,14 @@ impl Trajectory {
         for k in 0..self.nv {
             write!(out, ",v{k}")?;
         }
+        for name in &self.internal_names {
+            write!(out, ",{name}")?;
+        }
         writeln!(out)?;
-        for ((t, q), v) in self.t.iter().zip(&self.q).zip(&self.v) {
+        for (n, ((t, q), v)) in self.t.iter().zip(&self.q).zip(&self.v).enumerate() {
             write!(out, "{t:.6}")?;
-            for x in q.iter().chain(v) {
+            let internal = self.internal.get(n).map_or(&[][..], Vec::as_slice);
+            for x in q.iter().chain(v).chain(internal) {
                 write!(out, ",{x:.9e}")?;
             }
             writeln!(out)?;
