@@ -545,14 +545,8 @@ fn drives(w: &mut Writer, model: &ModelDescription) {
     contacts(w, model);
 }
 
-/// The slip velocity scale s₀ (m/s) of the emitted contacts' regularised
-/// friction. The model file does not set it: 0.2 m/s keeps a 1 kHz explicit
-/// loop stable for robots of a few kilograms (below s₀ friction acts as a
-/// viscous damper of slope `μ λ / s₀`, the stiffest term of a light leg).
-pub const CONTACT_SLIP_SCALE: f64 = 0.2;
-
 /// Contacts as values of `rodyn::sim::contact::GroundContact` (a linear
-/// spring-damper normal law, the file's friction, [`CONTACT_SLIP_SCALE`]),
+/// spring-damper normal law, the file's friction and slip velocity),
 /// with the endpoint each one acts at, ready for `GroundContact::add_forces`.
 fn contacts(w: &mut Writer, model: &ModelDescription) {
     if model.contacts.is_empty() {
@@ -593,10 +587,7 @@ fn contacts(w: &mut Writer, model: &ModelDescription) {
             .join(", ")
     ));
     w.blank();
-    w.line(&format!(
-        "/// The ground under each contact: `λ = k δ + c δ̇` (N/m, N s/m), Coulomb μ, slip scale {} m/s, in scalar type `$S`.",
-        CONTACT_SLIP_SCALE
-    ));
+    w.line("/// The ground under each contact: `λ = k δ + c δ̇` (N/m, N s/m), Coulomb μ, slip scale s₀ (m/s), in scalar type `$S`.");
     w.open("macro_rules! contacts {");
     w.open("($S:ty) => {");
     w.open("[");
@@ -610,7 +601,7 @@ fn contacts(w: &mut Writer, model: &ModelDescription) {
             literal(c.stiffness),
             literal(c.damping),
             literal(c.friction),
-            literal(CONTACT_SLIP_SCALE)
+            literal(c.slip_velocity)
         ));
     }
     w.close("]");

@@ -142,6 +142,9 @@ struct ContactDecl {
     stiffness: S<f64>,
     damping: S<f64>,
     friction: S<f64>,
+    /// m/s; the slip at which friction reaches tanh(1) ≈ 76 % of Coulomb's.
+    #[serde(default)]
+    slip_velocity: Option<S<f64>>,
 }
 
 /// Unit conversion factors to SI.
@@ -717,6 +720,11 @@ impl Reader<'_> {
                     "the friction coefficient",
                     Sign::NonNegative,
                 )?,
+                // Positive: the friction law divides the slip by it.
+                slip_velocity: match &c.slip_velocity {
+                    Some(v) => self.number(v, "the slip velocity", Sign::Positive)?,
+                    None => Contact::DEFAULT_SLIP_VELOCITY,
+                },
             });
             names.push((c.name.get_ref(), self.at(c.name.span())));
         }
