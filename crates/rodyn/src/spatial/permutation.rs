@@ -56,9 +56,8 @@ impl SignedPermutation {
             "a signed permutation uses each column once"
         );
         // The determinant: the permutation's parity times the signs.
-        let odd_permutation = col[0] == 0 && col[1] == 2
-            || col[0] == 1 && col[1] == 0
-            || col[0] == 2 && col[1] == 1;
+        let odd_permutation =
+            col[0] == 0 && col[1] == 2 || col[0] == 1 && col[1] == 0 || col[0] == 2 && col[1] == 1;
         let negatives = neg[0] as u8 + neg[1] as u8 + neg[2] as u8;
         assert!(
             (negatives % 2 == 1) == odd_permutation,
@@ -238,8 +237,12 @@ mod tests {
             [0.0, 6.123e-17, 1.0],
             [0.0, -1.0, 6.123e-17],
         ]);
-        assert_eq!(PlacementRotation::classify(&near), PlacementRotation::General);
-        let reflection = Mat3::<f64>::from_rows([[0.0, 1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]);
+        assert_eq!(
+            PlacementRotation::classify(&near),
+            PlacementRotation::General
+        );
+        let reflection =
+            Mat3::<f64>::from_rows([[0.0, 1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]);
         assert_eq!(SignedPermutation::from_mat3(&reflection), None);
         assert_eq!(
             PlacementRotation::classify(&Mat3::<f32>::IDENTITY),
