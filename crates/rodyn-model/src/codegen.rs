@@ -60,7 +60,7 @@ pub fn generate(model: &ModelDescription, module: &str, source: &str) -> Result<
     let geometry = if model.planar {
         "use rodyn::planar::{Planar, PlanarInertia, PlanarJoint, PlanarMotion, PlanarTransform, Vec2};"
     } else {
-        "use rodyn::joint::{Axis, Joint};\nuse rodyn::spatial::{\n    Inertia, Mat3, Motion, PlacementRotation, SignedPermutation, Sym3, Transform, Vec3,\n};"
+        "use rodyn::joint::{Axis, Joint};\nuse rodyn::spatial::{Inertia, Mat3, Motion, Sym3, Transform, Vec3};"
     };
     for line in geometry.lines() {
         w.line(line);
@@ -311,15 +311,6 @@ fn model_macro(w: &mut Writer, model: &ModelDescription) -> Result<()> {
         ));
     }
     w.close(")");
-    if !model.planar {
-        // What each placement's rotation lets the algorithms skip, found
-        // here where the rotation is known exactly.
-        w.open(".with_placement_rotations([");
-        for b in &model.bodies {
-            w.line(&format!("{},", placement_rotation(&b.placement)));
-        }
-        w.close("])");
-    }
     w.close("};");
     w.close("}");
     w.blank();
@@ -350,23 +341,6 @@ fn placement(planar: bool, p: &Pose) -> String {
         format!("Transform::from_translation({})", vec3(&p.trans))
     } else {
         format!("Transform::new({}, {})", mat3(&rot), vec3(&p.trans))
-    }
-}
-
-/// The class of a 3-D placement's rotation (see `rodyn::spatial::PlacementRotation`),
-/// for `Model::with_placement_rotations`: a signed permutation after
-/// snapping, written as the column and sign of each row's ±1.
-fn placement_rotation(p: &Pose) -> String {
-    match snap_signed_permutation(&p.rot) {
-        Some(m) => {
-            let col = m.map(|row| row.iter().position(|v| *v != 0.0).unwrap_or(0));
-            let neg = m.map(|row| row.iter().any(|v| *v < 0.0));
-            format!(
-                "PlacementRotation::SignedPermutation(SignedPermutation::new([{}, {}, {}], [{}, {}, {}]))",
-                col[0], col[1], col[2], neg[0], neg[1], neg[2]
-            )
-        }
-        None => "PlacementRotation::General".into(),
     }
 }
 

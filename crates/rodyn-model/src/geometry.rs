@@ -94,8 +94,8 @@ pub const SNAP_TOLERANCE: f64 = 1e-12;
 /// permutation: one ±1 per row and column, determinant +1); otherwise `None`.
 ///
 /// A URDF `rpy` of 0 or ±π/2 gives such a rotation up to 6e-17 entries where
-/// zeros belong; with exact entries rodyn recognises it and applies it by
-/// moving entries instead of multiplying.
+/// zeros belong; exact entries keep the generated source readable and the
+/// products with them exact.
 #[must_use]
 pub fn snap_signed_permutation(m: &Mat3) -> Option<Mat3> {
     let mut out = [[0.0; 3]; 3];
@@ -280,6 +280,32 @@ mod tests {
         let rz90 = rotation_from_rpy(&[0.0, 0.0, core::f64::consts::FRAC_PI_2]);
         let y = mat_vec(&rz90, &[1.0, 0.0, 0.0]);
         assert!((y[1] - 1.0).abs() < 1e-15 && y[0].abs() < 1e-15);
+    }
+
+    #[test]
+    fn quarter_turns_snap_to_exact_signed_permutations_and_nothing_else_does() {
+        let half_pi = core::f64::consts::FRAC_PI_2;
+        let quarter = rotation_from_rpy(&[half_pi, 0.0, -half_pi]);
+        assert!(quarter
+            .iter()
+            .flatten()
+            .any(|v| *v != 0.0 && v.abs() < 1e-15));
+        let snapped = snap_signed_permutation(&quarter).expect("a quarter turn");
+        assert!(snapped
+            .iter()
+            .flatten()
+            .all(|v| [0.0, 1.0, -1.0].contains(v)));
+        for (a, b) in snapped.iter().flatten().zip(quarter.iter().flatten()) {
+            assert!((a - b).abs() < 1e-15);
+        }
+        // A small deliberate rotation is kept as it is.
+        assert_eq!(
+            snap_signed_permutation(&rotation_from_rpy(&[1e-9, 0.0, 0.0])),
+            None
+        );
+        // A reflection is not a rotation.
+        let mirror = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, -1.0]];
+        assert_eq!(snap_signed_permutation(&mirror), None);
     }
 
     #[test]

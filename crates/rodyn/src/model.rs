@@ -15,7 +15,7 @@
 use crate::error::{Error, ModelProblem, Quantity, Result};
 use crate::joint::{Joint, JointModel};
 use crate::space::{BodyInertia, RigidTransform, Space, VectorOps};
-use crate::spatial::{Inertia, Motion, PlacementRotation, Spatial, Transform};
+use crate::spatial::{Inertia, Motion, Spatial, Transform};
 use crate::topology::Topology;
 use crate::Scalar;
 
@@ -26,9 +26,6 @@ pub struct Model<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G
     topology: Topology<NB, NV>,
     joints: [G::Joint<S>; NB],
     placements: [G::Transform<S>; NB],
-    /// What each placement's rotation lets the algorithms skip; always a
-    /// true statement about `placements` (see [`Model::placement_rotation`]).
-    placement_rotations: [PlacementRotation; NB],
     inertias: [G::Inertia<S>; NB],
     gravity: G::Motion<S>,
     armature: [S; NV],
@@ -81,7 +78,6 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, 
             topology: Topology::new(parents, nq, nv, NQ),
             joints,
             placements,
-            placement_rotations: [PlacementRotation::General; NB],
             inertias,
             gravity,
             armature: [S::ZERO; NV],
@@ -106,7 +102,6 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
             topology,
             joints,
             placements,
-            placement_rotations: [PlacementRotation::General; NB],
             inertias,
             gravity,
             armature: [S::ZERO; NV],
@@ -139,42 +134,6 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
     #[must_use]
     pub const fn placement(&self, i: usize) -> &G::Transform<S> {
         &self.placements[i]
-    }
-    /// What the algorithms know about the rotation of joint `i`'s placement.
-    ///
-    /// [`PlacementRotation::SignedPermutation`] marks a placement turned by
-    /// multiples of 90° (as most URDF arms are), whose rotation can be
-    /// applied by moving entries instead of multiplying by a full 3x3
-    /// rotation (not yet used by the algorithms, see
-    /// [`SignedPermutation`](crate::spatial::SignedPermutation)). Models
-    /// from [`Model::new`] start as [`PlacementRotation::General`]; the model
-    /// compiler's output and [`with_classified_placements`](Self::with_classified_placements)
-    /// set the class; [`set_placement`](Self::set_placement) keeps it true.
-    #[must_use]
-    pub const fn placement_rotation(&self, i: usize) -> &PlacementRotation {
-        &self.placement_rotations[i]
-    }
-    /// The model with the given placement rotation classes, usable in
-    /// `const` (the model compiler writes them next to the placements).
-    ///
-    /// A class must describe its placement's rotation exactly; a `const`
-    /// cannot compare floating-point numbers, so
-    /// [`validate`](Self::validate) checks it (a class that does not match
-    /// is reported as [`ModelProblem::RotationNotOrthonormal`]).
-    #[must_use]
-    pub const fn with_placement_rotations(mut self, rotations: [PlacementRotation; NB]) -> Self {
-        self.placement_rotations = rotations;
-        self
-    }
-    /// The model with every placement's rotation classified (see
-    /// [`placement_rotation`](Self::placement_rotation)): a signed
-    /// permutation is recognised only when its entries are exactly 0 and ±1.
-    #[must_use]
-    pub fn with_classified_placements(mut self) -> Self {
-        for (rotation, placement) in self.placement_rotations.iter_mut().zip(&self.placements) {
-            *rotation = G::classify_placement(placement);
-        }
-        self
     }
     /// Body `i`'s inertia in its own frame.
     #[must_use]
@@ -211,7 +170,6 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
         G::validate_transform(&placement)
             .map_err(|problem| Error::InvalidModel { body: i, problem })?;
         self.placements[i] = placement;
-        self.placement_rotations[i] = G::classify_placement(&placement);
         Ok(())
     }
     /// The armature of each velocity coordinate: an inertia (kg m² or kg)
@@ -284,12 +242,6 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
             let err = |problem| Error::InvalidModel { body: i, problem };
             G::validate_inertia(&self.inertias[i]).map_err(err)?;
             G::validate_transform(&self.placements[i]).map_err(err)?;
-            let rotation = self.placement_rotations[i];
-            if rotation != PlacementRotation::General
-                && G::classify_placement(&self.placements[i]) != rotation
-            {
-                return Err(err(ModelProblem::RotationNotOrthonormal));
-            }
             G::validate_joint(&self.joints[i]).map_err(err)?;
         }
         if !self.gravity.is_finite() {
@@ -315,8 +267,6 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
             topology: self.topology,
             joints,
             placements: core::array::from_fn(|i| G::cast_transform(&self.placements[i])),
-            // Entries of exactly 0 and ±1 stay exact in every scalar type.
-            placement_rotations: self.placement_rotations,
             inertias: core::array::from_fn(|i| G::cast_inertia(&self.inertias[i])),
             gravity: G::cast_motion(&self.gravity),
             armature: core::array::from_fn(|k| T::from_f64(self.armature[k].to_f64())),

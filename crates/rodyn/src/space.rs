@@ -19,7 +19,6 @@
 
 use crate::error::ModelProblem;
 use crate::joint::JointModel;
-use crate::spatial::PlacementRotation;
 use crate::Scalar;
 use core::fmt::Debug;
 use core::ops::{Add, AddAssign, Mul, Neg, Sub, SubAssign};
@@ -197,10 +196,4 @@ pub trait Space: Copy + Debug + PartialEq + 'static {
     fn validate_transform<S: Scalar>(x: &Self::Transform<S>) -> Result<(), ModelProblem>;
     /// Checks a joint's own parameters (unit axes).
     fn validate_joint<S: Scalar>(j: &Self::Joint<S>) -> Result<(), ModelProblem>;
-    /// What the algorithms may exploit in a placement's rotation (see
-    /// [`PlacementRotation`]). The default, for geometries without such fast
-    /// paths (the plane), is [`PlacementRotation::General`].
-    fn classify_placement<S: Scalar>(_x: &Self::Transform<S>) -> PlacementRotation {
-        PlacementRotation::General
-    }
 }

@@ -2,14 +2,13 @@
 //!
 //! One concept per file: [`Motion`], [`Force`], [`Transform`], [`Inertia`],
 //! [`ArticulatedInertia6`], and the 3-D building blocks [`Vec3`], [`Mat3`],
-//! [`Sym3`], [`SignedPermutation`]. [`Spatial`] ties them together as a [`Space`].
+//! [`Sym3`]. [`Spatial`] ties them together as a [`Space`].
 
 mod articulated;
 mod force;
 mod inertia;
 mod mat3;
 mod motion;
-mod permutation;
 mod sym3;
 mod transform;
 mod vec3;
@@ -19,7 +18,6 @@ pub use force::Force;
 pub use inertia::Inertia;
 pub use mat3::Mat3;
 pub use motion::Motion;
-pub use permutation::{PlacementRotation, SignedPermutation};
 pub use sym3::Sym3;
 pub use transform::Transform;
 pub use vec3::Vec3;
@@ -63,9 +61,6 @@ impl Space for Spatial {
     }
     fn validate_transform<S: Scalar>(x: &Transform<S>) -> Result<(), ModelProblem> {
         crate::model::validate_transform_3d(x)
-    }
-    fn classify_placement<S: Scalar>(x: &Transform<S>) -> PlacementRotation {
-        PlacementRotation::classify(&x.rot)
     }
     fn validate_joint<S: Scalar>(j: &Joint<S>) -> Result<(), ModelProblem> {
         let axis = match j {
