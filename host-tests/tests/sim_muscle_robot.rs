@@ -1,35 +1,37 @@
-//! The two-link, four-muscle robot stepped with its activations as states
-//! (`rodyn_scenarios::muscle_robot::step`), as `rodyn-sim` runs it for the
-//! speed-against-accuracy chart.
+//! The two-link, four-muscle robot stepped by `rodyn::sim`'s integrators
+//! with its activations as auxiliary states
+//! (`rodyn_scenarios::muscle_robot::RobotLoads`), as `rodyn-sim` runs it for
+//! the speed-against-accuracy chart.
 
 use rodyn::algorithm::forward_dynamics::Aba;
+use rodyn::sim::{ExplicitEuler, ImplicitEuler, Integrator, Rk4, SemiImplicitEuler};
 use rodyn_scenarios::muscle_robot::{
-    self as robot, example_excitation, RobotState, RobotWorkspace, Scheme, INITIAL_ACTIVATION, NU,
-    NV,
+    self as robot, example_excitation, RobotLoads, RobotState, INITIAL_ACTIVATION, NU, NV,
 };
 
-/// Runs `scheme` from rest for `duration` seconds at step `dt` under
+/// Runs `integrator` from rest for `duration` seconds at step `dt` under
 /// `excitation`, checking every state on the way with `inspect`.
-fn simulate(
-    scheme: Scheme,
+fn simulate<I: Integrator>(
+    mut integrator: I,
     dt: f64,
     duration: f64,
-    excitation: &impl Fn(f64) -> [f64; NU],
+    excitation: impl FnMut(f64) -> [f64; NU],
     mut inspect: impl FnMut(&RobotState<f64>),
 ) -> RobotState<f64> {
-    let mut work = RobotWorkspace::new();
-    let mut state = RobotState::at_rest(INITIAL_ACTIVATION);
+    let mut data = rodyn::Data::new();
+    let mut loads = RobotLoads::new(&robot::MUSCLES_F64, excitation);
+    let mut state = robot::rest_state(INITIAL_ACTIVATION);
     for _ in 0..(duration / dt).round() as usize {
-        robot::step::<Aba, f64>(
-            scheme,
-            &robot::MODEL_F64,
-            &robot::MUSCLES_F64,
-            &mut work,
-            &mut state,
-            dt,
-            excitation,
-        )
-        .expect("the muscle robot steps without error from rest");
+        integrator
+            .step(
+                Aba,
+                &robot::MODEL_F64,
+                &mut data,
+                &mut state,
+                dt,
+                &mut loads,
+            )
+            .expect("the muscle robot steps without error from rest");
         inspect(&state);
     }
     state
@@ -47,12 +49,12 @@ fn joint_error(a: &RobotState<f64>, b: &RobotState<f64>) -> f64 {
 fn rk4_is_fourth_order_while_the_dynamics_stay_smooth() {
     let constant = |_t: f64| [0.4, 0.3, 0.2, 0.15];
     let duration = 0.1;
-    let reference = simulate(Scheme::Rk4, 2.5e-5, duration, &constant, |_| {});
+    let reference = simulate(Rk4::default(), 2.5e-5, duration, constant, |_| {});
     let errors: Vec<f64> = [4e-3, 2e-3, 1e-3, 5e-4]
         .into_iter()
         .map(|dt| {
             joint_error(
-                &simulate(Scheme::Rk4, dt, duration, &constant, |_| {}),
+                &simulate(Rk4::default(), dt, duration, constant, |_| {}),
                 &reference,
             )
         })
@@ -74,8 +76,8 @@ fn rk4_is_fourth_order_while_the_dynamics_stay_smooth() {
 /// 2.6e-7 rad at 1 ms, against RK4 at 0.1 ms.
 #[test]
 fn rk4_at_1_ms_follows_the_example_run_to_a_microradian() {
-    let reference = simulate(Scheme::Rk4, 1e-4, 1.0, &example_excitation, |_| {});
-    let at_1_ms = simulate(Scheme::Rk4, 1e-3, 1.0, &example_excitation, |_| {});
+    let reference = simulate(Rk4::default(), 1e-4, 1.0, example_excitation, |_| {});
+    let at_1_ms = simulate(Rk4::default(), 1e-3, 1.0, example_excitation, |_| {});
     let error = joint_error(&at_1_ms, &reference);
     assert!(error < 1e-6, "RK4 at 1 ms is {error:.2e} rad off");
     // The arm has moved: the check is not met trivially by a robot at rest.
@@ -88,27 +90,27 @@ fn rk4_at_1_ms_follows_the_example_run_to_a_microradian() {
 /// 7.5 ms, so even explicit Euler at 5 ms does not overshoot).
 #[test]
 fn activations_stay_between_zero_and_one() {
-    for scheme in [
-        Scheme::ExplicitEuler,
-        Scheme::SemiImplicitEuler,
-        Scheme::Rk4,
-        Scheme::ImplicitEuler,
-    ] {
+    fn check<I: Integrator + Copy>(integrator: I) {
         for dt in [5e-3, 1e-3] {
             let (mut lowest, mut highest) = (f64::INFINITY, f64::NEG_INFINITY);
-            simulate(scheme, dt, 1.0, &example_excitation, |state| {
-                for a in state.activation {
+            simulate(integrator, dt, 1.0, example_excitation, |state| {
+                for a in state.z {
                     lowest = lowest.min(a);
                     highest = highest.max(a);
                 }
             });
+            let name = I::NAME;
             assert!(
                 (0.0..=1.0).contains(&lowest) && (0.0..=1.0).contains(&highest),
-                "{scheme:?} at {dt} s: activations in [{lowest}, {highest}]"
+                "{name} at {dt} s: activations in [{lowest}, {highest}]"
             );
             // The pattern drives m1 up to about 0.65 and m3 down to about
             // 0.04: the range is really exercised.
-            assert!(lowest < 0.06 && highest > 0.6, "{scheme:?} at {dt} s");
+            assert!(lowest < 0.06 && highest > 0.6, "{name} at {dt} s");
         }
     }
+    check(ExplicitEuler::default());
+    check(SemiImplicitEuler::default());
+    check(Rk4::default());
+    check(ImplicitEuler::default());
 }

@@ -9,9 +9,9 @@
 
 use plotters::prelude::*;
 use rodyn::algorithm::forward_dynamics::Aba;
+use rodyn::sim::{Integrator, Rk4};
 use rodyn_scenarios::muscle_robot::{
-    self as robot, example_excitation, RobotState, RobotWorkspace, Scheme, INITIAL_ACTIVATION, NU,
-    NV,
+    self as robot, example_excitation, RobotForces, RobotLoads, INITIAL_ACTIVATION, NU, NV,
 };
 use std::path::PathBuf;
 
@@ -29,13 +29,16 @@ struct Sample {
     sensitivity: [[f64; NU]; NV],
 }
 
-/// RK4 on (q, v, a) under the example's excitations, with the sensitivity
-/// matrix recorded every step.
+/// RK4 (`rodyn::sim::Rk4`, the activations as auxiliary states) under the
+/// example's excitations, with the sensitivity matrix recorded every step.
 fn simulate() -> Result<Vec<Sample>, rodyn::Error> {
     let model = robot::MODEL_F64;
     let muscles = robot::MUSCLES_F64;
-    let mut work = RobotWorkspace::new();
-    let mut x = RobotState::at_rest(INITIAL_ACTIVATION);
+    let mut data = rodyn::Data::new();
+    let mut forces = RobotForces::new();
+    let mut loads = RobotLoads::new(&muscles, example_excitation::<f64>);
+    let mut rk4 = Rk4::default();
+    let mut x = robot::rest_state(INITIAL_ACTIVATION);
     let mut samples = Vec::new();
     let steps = (DURATION / DT).round() as usize;
     for n in 0..=steps {
@@ -43,30 +46,22 @@ fn simulate() -> Result<Vec<Sample>, rodyn::Error> {
         robot::sensitivity(
             &model,
             &muscles,
-            &mut work.data,
+            &mut data,
             &x.q,
             &x.v,
-            &x.activation,
-            &mut work.forces,
+            &x.z,
+            &mut forces,
             &mut sensitivity,
         )?;
         samples.push(Sample {
             t: x.t,
             q: x.q,
             u: example_excitation(x.t),
-            a: x.activation,
+            a: x.z,
             sensitivity,
         });
         if n < steps {
-            robot::step::<Aba, _>(
-                Scheme::Rk4,
-                &model,
-                &muscles,
-                &mut work,
-                &mut x,
-                DT,
-                &example_excitation,
-            )?;
+            rk4.step(Aba, &model, &mut data, &mut x, DT, &mut loads)?;
         }
     }
     Ok(samples)

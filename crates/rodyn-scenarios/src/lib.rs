@@ -15,7 +15,7 @@
 //! | [`two_link_muscles`] | `models/two_link_muscles.toml`| the seed's two-link robot with four Thelen muscles (planar)       |
 //! | [`gait_planar`]      | `models/gait_planar.toml`     | the seed's planar gait model (8 segments, Winter's table)         |
 //! | [`quadruped`]        | [`aibo`]                      | stance / trot PD controller, ground contact, one call per step     |
-//! | [`muscle_robot`]     | [`two_link_muscles`]          | forward dynamics with the muscles and its sensitivity `∂q̈/∂a`     |
+//! | [`muscle_robot`]     | [`two_link_muscles`]          | forward dynamics with the muscles, its sensitivity `∂q̈/∂a`, loads with the activations as auxiliary states |
 //!
 //! Every generated module holds `MODEL_F64` and `MODEL_F32`, the sizes
 //! `NB`, `NQ`, `NV`, `NE`, named indices (`body::`, `joint::`, `q::`, `v::`,

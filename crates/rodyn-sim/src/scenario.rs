@@ -7,11 +7,11 @@ use clap::ValueEnum;
 use indicatif::ProgressBar;
 use rodyn::algorithm::forward_dynamics::{Aba, Crba, ForwardDynamics};
 use rodyn::sim::{
-    ExplicitEuler, ImplicitEuler, Integrator, Loads, NoLoads, Rk4, SemiImplicitEuler, State,
+    AuxiliaryLoads, ConfigurationRate, ExplicitEuler, ImplicitEuler, Integrator, NoLoads, Rk4,
+    SemiImplicitEuler, State,
 };
-use rodyn::spatial::Spatial;
 use rodyn::{Data, Model, Scalar};
-use rodyn_scenarios::muscle_robot::{self, example_excitation, INITIAL_ACTIVATION};
+use rodyn_scenarios::muscle_robot::{self, example_excitation, RobotLoads, INITIAL_ACTIVATION};
 use rodyn_scenarios::quadruped::{self, QuadrupedLoads};
 use std::time::Instant;
 
@@ -144,7 +144,7 @@ fn run_typed<S: Scalar>(config: &RunConfig, progress: Option<&ProgressBar>) -> T
         Scenario::ArmSwing => {
             let model = arm7::<S>();
             let state = State::new(ARM7_RELEASE.map(S::from_f64), [S::ZERO; 7]);
-            by_integrator(config, &model, NoLoads, state, progress)
+            by_integrator(config, &model, NoLoads, state, Vec::new(), progress)
         }
         Scenario::QuadrupedStand | Scenario::QuadrupedTrot => {
             // Casting fails only for custom joints, which the model file cannot have.
@@ -162,185 +162,123 @@ fn run_typed<S: Scalar>(config: &RunConfig, progress: Option<&ProgressBar>) -> T
                 0.0
             };
             let state = loads.initial_state(loads.stance_height() + S::from_f64(drop));
-            by_integrator(config, &model, loads, state, progress)
+            by_integrator(config, &model, loads, state, Vec::new(), progress)
         }
-        Scenario::MuscleRobot => match config.method {
-            Method::Aba => simulate_muscle_robot::<Aba, S>(config, progress),
-            Method::Crba => simulate_muscle_robot::<Crba, S>(config, progress),
-        },
-    }
-}
-
-impl IntegratorKind {
-    /// The same scheme for the muscle robot's joints-and-activations state.
-    fn muscle_robot_scheme(self) -> muscle_robot::Scheme {
-        match self {
-            Self::ExplicitEuler => muscle_robot::Scheme::ExplicitEuler,
-            Self::SemiImplicitEuler => muscle_robot::Scheme::SemiImplicitEuler,
-            Self::Rk4 => muscle_robot::Scheme::Rk4,
-            Self::ImplicitEuler => muscle_robot::Scheme::ImplicitEuler,
+        Scenario::MuscleRobot => {
+            // Casting fails only for custom joints, which the model file cannot have.
+            let model = muscle_robot::model::<S>().expect("the muscle robot casts to any scalar");
+            let muscles = muscle_robot::muscles::<S>();
+            let loads = RobotLoads::new(&muscles, example_excitation::<S>);
+            let state = muscle_robot::rest_state(S::from_f64(INITIAL_ACTIVATION));
+            // The activations are the state's auxiliary states; the
+            // trajectory records them as its internal states.
+            let names = (1..=muscle_robot::NU).map(|k| format!("a{k}")).collect();
+            by_integrator(config, &model, loads, state, names, progress)
         }
     }
 }
 
-/// The muscle robot's stepping loop. Its activations are states beside
-/// `(q, v)`, which `rodyn::sim`'s integrators do not carry, so it steps with
-/// `muscle_robot::step` (the same four schemes) and records the activations
-/// as the trajectory's internal states. Times the steps and the recording,
-/// as [`simulate`] does.
-fn simulate_muscle_robot<M: ForwardDynamics, S: Scalar>(
+/// Picks the integrator. `internal_names` name the state's auxiliary
+/// states `z` (NZ of them) in the trajectory.
+fn by_integrator<S, G, L, const NB: usize, const NQ: usize, const NV: usize, const NZ: usize>(
     config: &RunConfig,
+    model: &Model<S, NB, NQ, NV, G>,
+    loads: L,
+    state: State<S, NQ, NV, NZ>,
+    internal_names: Vec<String>,
     progress: Option<&ProgressBar>,
-) -> Trajectory {
-    // Casting fails only for custom joints, which the model file cannot have.
-    let model = muscle_robot::model::<S>().expect("the muscle robot casts to any scalar");
-    let muscles = muscle_robot::muscles::<S>();
-    let scheme = config.integrator.muscle_robot_scheme();
-    let steps = (config.duration / config.dt).round() as usize;
-    let every = ((config.sample_interval / config.dt).round() as usize).max(1);
-    let dt = S::from_f64(config.dt);
-    let mut work = muscle_robot::RobotWorkspace::new();
-    let mut state = muscle_robot::RobotState::at_rest(S::from_f64(INITIAL_ACTIVATION));
-    let names = (1..=muscle_robot::NU).map(|k| format!("a{k}")).collect();
-    let mut trajectory =
-        Trajectory::with_internal_states(muscle_robot::NV, muscle_robot::NV, names);
-    let record = |trajectory: &mut Trajectory, s: &muscle_robot::RobotState<S>| {
-        let widen = |x: &S| x.to_f64();
-        trajectory.record_with_internal(
-            &State {
-                t: s.t.to_f64(),
-                q: s.q.each_ref().map(widen),
-                v: s.v.each_ref().map(widen),
-            },
-            &s.activation.map(|x| x.to_f64()),
-        );
+) -> Trajectory
+where
+    S: Scalar,
+    G: ConfigurationRate,
+    L: AuxiliaryLoads<S, NB, NQ, NV, NZ, G>,
+{
+    let run = Run {
+        config,
+        model,
+        loads,
+        state,
+        internal_names,
+        progress,
     };
-    record(&mut trajectory, &state);
-    let start = Instant::now();
-    for n in 1..=steps {
-        if let Err(e) = muscle_robot::step::<M, S>(
-            scheme,
-            &model,
-            &muscles,
-            &mut work,
-            &mut state,
-            dt,
-            &example_excitation,
-        ) {
-            trajectory.failure = Some(format!("t = {:.4} s: {e}", state.t.to_f64()));
-            break;
-        }
-        if n % every == 0 || n == steps {
-            record(&mut trajectory, &state);
-        }
-        if let Some(bar) = progress {
-            if n % 1000 == 0 {
-                bar.set_position(n as u64);
-            }
-        }
-    }
-    trajectory.wall_time = start.elapsed();
-    trajectory.steps = steps;
-    trajectory
-}
-
-fn by_integrator<S, L, const NB: usize, const NQ: usize, const NV: usize>(
-    config: &RunConfig,
-    model: &Model<S, NB, NQ, NV, Spatial>,
-    loads: L,
-    state: State<S, NQ, NV>,
-    progress: Option<&ProgressBar>,
-) -> Trajectory
-where
-    S: Scalar,
-    L: Loads<S, NB, NQ, NV, Spatial>,
-{
     match config.integrator {
-        IntegratorKind::ExplicitEuler => by_method(
-            config,
-            model,
-            loads,
-            state,
-            ExplicitEuler::default(),
-            progress,
-        ),
-        IntegratorKind::SemiImplicitEuler => by_method(
-            config,
-            model,
-            loads,
-            state,
-            SemiImplicitEuler::default(),
-            progress,
-        ),
-        IntegratorKind::Rk4 => by_method(config, model, loads, state, Rk4::default(), progress),
-        IntegratorKind::ImplicitEuler => by_method(
-            config,
-            model,
-            loads,
-            state,
-            ImplicitEuler::default(),
-            progress,
-        ),
+        IntegratorKind::ExplicitEuler => run.by_method(ExplicitEuler::default()),
+        IntegratorKind::SemiImplicitEuler => run.by_method(SemiImplicitEuler::default()),
+        IntegratorKind::Rk4 => run.by_method(Rk4::default()),
+        IntegratorKind::ImplicitEuler => run.by_method(ImplicitEuler::default()),
     }
 }
 
-fn by_method<S, L, I, const NB: usize, const NQ: usize, const NV: usize>(
-    config: &RunConfig,
-    model: &Model<S, NB, NQ, NV, Spatial>,
+/// Everything a run needs but the integrator and the method.
+struct Run<
+    'a,
+    S: Scalar,
+    G: ConfigurationRate,
+    L,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    const NZ: usize,
+> {
+    config: &'a RunConfig,
+    model: &'a Model<S, NB, NQ, NV, G>,
     loads: L,
-    state: State<S, NQ, NV>,
-    integrator: I,
-    progress: Option<&ProgressBar>,
-) -> Trajectory
-where
-    S: Scalar,
-    L: Loads<S, NB, NQ, NV, Spatial>,
-    I: Integrator,
-{
-    match config.method {
-        Method::Aba => simulate(Aba, integrator, model, loads, state, config, progress),
-        Method::Crba => simulate(Crba, integrator, model, loads, state, config, progress),
-    }
+    state: State<S, NQ, NV, NZ>,
+    internal_names: Vec<String>,
+    progress: Option<&'a ProgressBar>,
 }
 
-/// The stepping loop: times only the steps and the recording of samples.
-pub fn simulate<F, I, L, S, const NB: usize, const NQ: usize, const NV: usize>(
-    method: F,
-    mut integrator: I,
-    model: &Model<S, NB, NQ, NV, Spatial>,
-    mut loads: L,
-    mut state: State<S, NQ, NV>,
-    config: &RunConfig,
-    progress: Option<&ProgressBar>,
-) -> Trajectory
+impl<S, G, L, const NB: usize, const NQ: usize, const NV: usize, const NZ: usize>
+    Run<'_, S, G, L, NB, NQ, NV, NZ>
 where
-    F: ForwardDynamics + Copy,
-    I: Integrator,
-    L: Loads<S, NB, NQ, NV, Spatial>,
     S: Scalar,
+    G: ConfigurationRate,
+    L: AuxiliaryLoads<S, NB, NQ, NV, NZ, G>,
 {
-    let steps = (config.duration / config.dt).round() as usize;
-    let every = ((config.sample_interval / config.dt).round() as usize).max(1);
-    let dt = S::from_f64(config.dt);
-    let mut data = Data::new();
-    let mut trajectory = Trajectory::new(NQ, NV);
-    trajectory.record(&state.cast::<f64>());
-    let start = Instant::now();
-    for n in 1..=steps {
-        if let Err(e) = integrator.step(method, model, &mut data, &mut state, dt, &mut loads) {
-            trajectory.failure = Some(format!("t = {:.4} s: {e}", state.t.to_f64()));
-            break;
+    fn by_method<I: Integrator>(self, integrator: I) -> Trajectory {
+        match self.config.method {
+            Method::Aba => self.simulate(Aba, integrator),
+            Method::Crba => self.simulate(Crba, integrator),
         }
-        if n % every == 0 || n == steps {
-            trajectory.record(&state.cast::<f64>());
-        }
-        if let Some(bar) = progress {
-            if n % 1000 == 0 {
-                bar.set_position(n as u64);
+    }
+
+    /// The stepping loop: times only the steps and the recording of samples.
+    fn simulate<F, I>(self, method: F, mut integrator: I) -> Trajectory
+    where
+        F: ForwardDynamics + Copy,
+        I: Integrator,
+    {
+        let Self {
+            config,
+            model,
+            mut loads,
+            mut state,
+            internal_names,
+            progress,
+        } = self;
+        let steps = (config.duration / config.dt).round() as usize;
+        let every = ((config.sample_interval / config.dt).round() as usize).max(1);
+        let dt = S::from_f64(config.dt);
+        let mut data = Data::new();
+        let mut trajectory = Trajectory::with_internal_states(NQ, NV, internal_names);
+        trajectory.record(&state.cast::<f64>());
+        let start = Instant::now();
+        for n in 1..=steps {
+            if let Err(e) = integrator.step(method, model, &mut data, &mut state, dt, &mut loads) {
+                trajectory.failure = Some(format!("t = {:.4} s: {e}", state.t.to_f64()));
+                break;
+            }
+            if n % every == 0 || n == steps {
+                trajectory.record(&state.cast::<f64>());
+            }
+            if let Some(bar) = progress {
+                if n % 1000 == 0 {
+                    bar.set_position(n as u64);
+                }
             }
         }
+        trajectory.wall_time = start.elapsed();
+        trajectory.steps = steps;
+        trajectory
     }
-    trajectory.wall_time = start.elapsed();
-    trajectory.steps = steps;
-    trajectory
 }

@@ -47,21 +47,18 @@ impl Trajectory {
         }
     }
 
-    /// Appends a sample with its internal states.
-    pub fn record_with_internal<const NQ: usize, const NV: usize>(
+    /// Appends a sample; its auxiliary states `z`, if it has any, become
+    /// the sample's internal states.
+    pub fn record<const NQ: usize, const NV: usize, const NZ: usize>(
         &mut self,
-        s: &State<f64, NQ, NV>,
-        internal: &[f64],
+        s: &State<f64, NQ, NV, NZ>,
     ) {
-        self.record(s);
-        self.internal.push(internal.to_vec());
-    }
-
-    /// Appends a sample.
-    pub fn record<const NQ: usize, const NV: usize>(&mut self, s: &State<f64, NQ, NV>) {
         self.t.push(s.t);
         self.q.push(s.q.to_vec());
         self.v.push(s.v.to_vec());
+        if NZ > 0 {
+            self.internal.push(s.z.to_vec());
+        }
     }
 
     /// Host seconds per simulated second.

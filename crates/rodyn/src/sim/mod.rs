@@ -9,10 +9,17 @@
 //! method (ABA or CRBA) for `q̈`. Contacts and drives only produce loads;
 //! they never change an integrator or an algorithm.
 //!
+//! Drives with first-order states of their own (muscle activations, motor
+//! currents) put them in the state's `NZ` auxiliary states `z` and
+//! implement [`AuxiliaryLoads`], whose forces may read `z` and which gives
+//! `ż`; every integrator advances `z` with `q` and `v`. A model without
+//! them keeps `NZ = 0`, the default, and pays nothing.
+//!
 //! | item                         | what it is                                                      |
 //! |------------------------------|-----------------------------------------------------------------|
-//! | [`State`]                    | time (s), configuration `q` (NQ), velocity `v` (NV)             |
+//! | [`State`]                    | time (s), configuration `q` (NQ), velocity `v` (NV), auxiliary states `z` (NZ, default 0) |
 //! | [`Loads`]                    | `τ` and `f_ext` from `(t, q, v)`; a closure works               |
+//! | [`AuxiliaryLoads`]           | `τ`, `f_ext` and `ż` from `(t, q, v, z)`; every `Loads` is one with `NZ = 0` |
 //! | [`Integrator`]               | one step: [`ExplicitEuler`], [`SemiImplicitEuler`], [`Rk4`], [`ImplicitEuler`] |
 //! | [`ConfigurationUpdate`]      | how `q` moves on its manifold: exponential map or embedded with optional renormalisation |
 //! | [`contact::GroundContact`]   | compliant point contact with the plane z = 0                    |
@@ -28,6 +35,6 @@ pub mod manifold;
 pub mod state;
 
 pub use integrator::{ExplicitEuler, ImplicitEuler, Integrator, Rk4, SemiImplicitEuler};
-pub use loads::{Loads, NoLoads};
+pub use loads::{AuxiliaryLoads, Loads, NoLoads};
 pub use manifold::{ConfigurationRate, ConfigurationUpdate};
 pub use state::State;

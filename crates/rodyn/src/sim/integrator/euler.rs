@@ -1,16 +1,19 @@
 //! The two first-order Euler schemes.
 
-use super::{acceleration, commit, Integrator};
+use super::{commit, derivatives, Integrator};
 use crate::algorithm::forward_dynamics::ForwardDynamics;
 use crate::data::Data;
 use crate::error::Result;
 use crate::model::Model;
-use crate::sim::loads::Loads;
-use crate::sim::manifold::{displace, for_dynamics, ConfigurationRate, ConfigurationUpdate};
+use crate::sim::loads::AuxiliaryLoads;
+use crate::sim::manifold::{
+    add_scaled, displace, for_dynamics, ConfigurationRate, ConfigurationUpdate,
+};
 use crate::sim::state::State;
 use crate::Scalar;
 
-/// Explicit (forward) Euler: `q₁ = q ⊕ v dt`, `v₁ = v + a(q, v) dt`.
+/// Explicit (forward) Euler: `q₁ = q ⊕ v dt`, `v₁ = v + a(q, v, z) dt`,
+/// `z₁ = z + ż(q, v, z) dt`.
 ///
 /// First order. On an undamped oscillator it multiplies the energy by
 /// `1 + (ω dt)²` every step, so it is unstable at any step size there; it
@@ -32,35 +35,36 @@ impl Default for ExplicitEuler {
 impl Integrator for ExplicitEuler {
     const NAME: &'static str = "explicit-euler";
 
-    fn step<F, L, S, const NB: usize, const NQ: usize, const NV: usize, G>(
+    fn step<F, L, S, const NB: usize, const NQ: usize, const NV: usize, const NZ: usize, G>(
         &mut self,
         method: F,
         model: &Model<S, NB, NQ, NV, G>,
         data: &mut Data<S, NB, NV, G>,
-        state: &mut State<S, NQ, NV>,
+        state: &mut State<S, NQ, NV, NZ>,
         dt: S,
         loads: &mut L,
     ) -> Result<()>
     where
         F: ForwardDynamics,
-        L: Loads<S, NB, NQ, NV, G>,
+        L: AuxiliaryLoads<S, NB, NQ, NV, NZ, G>,
         S: Scalar,
         G: ConfigurationRate,
     {
-        let State { t, q, v } = *state;
+        let State { t, q, v, z } = *state;
         let q_dyn = for_dynamics(model, self.update, &q);
-        let a = acceleration(&method, model, data, loads, t, &q_dyn, &v)?;
+        let (a, z_rate) = derivatives(&method, model, data, loads, t, &q_dyn, &v, &z)?;
         let next = State {
             t: t + dt,
             q: displace(model, self.update, &q, &v, dt),
             v: core::array::from_fn(|k| v[k] + a[k] * dt),
+            z: add_scaled(&z, &z_rate, dt),
         };
         commit(state, next)
     }
 }
 
-/// Semi-implicit (symplectic) Euler: `v₁ = v + a(q, v) dt`, then
-/// `q₁ = q ⊕ v₁ dt`.
+/// Semi-implicit (symplectic) Euler: `v₁ = v + a(q, v, z) dt` and
+/// `z₁ = z + ż(q, v, z) dt`, then `q₁ = q ⊕ v₁ dt`.
 ///
 /// First order, same cost as [`ExplicitEuler`], but symplectic for
 /// conservative systems: the energy error stays bounded instead of growing,
@@ -83,29 +87,33 @@ impl Default for SemiImplicitEuler {
 impl Integrator for SemiImplicitEuler {
     const NAME: &'static str = "semi-implicit-euler";
 
-    fn step<F, L, S, const NB: usize, const NQ: usize, const NV: usize, G>(
+    fn step<F, L, S, const NB: usize, const NQ: usize, const NV: usize, const NZ: usize, G>(
         &mut self,
         method: F,
         model: &Model<S, NB, NQ, NV, G>,
         data: &mut Data<S, NB, NV, G>,
-        state: &mut State<S, NQ, NV>,
+        state: &mut State<S, NQ, NV, NZ>,
         dt: S,
         loads: &mut L,
     ) -> Result<()>
     where
         F: ForwardDynamics,
-        L: Loads<S, NB, NQ, NV, G>,
+        L: AuxiliaryLoads<S, NB, NQ, NV, NZ, G>,
         S: Scalar,
         G: ConfigurationRate,
     {
-        let State { t, q, v } = *state;
+        let State { t, q, v, z } = *state;
         let q_dyn = for_dynamics(model, self.update, &q);
-        let a = acceleration(&method, model, data, loads, t, &q_dyn, &v)?;
+        let (a, z_rate) = derivatives(&method, model, data, loads, t, &q_dyn, &v, &z)?;
         let v_next: [S; NV] = core::array::from_fn(|k| v[k] + a[k] * dt);
         let next = State {
             t: t + dt,
             q: displace(model, self.update, &q, &v_next, dt),
             v: v_next,
+            // The auxiliary states move with `v`, from the rates at the
+            // start of the step: only `q` sees the new velocity, so the
+            // scheme still needs one evaluation per step.
+            z: add_scaled(&z, &z_rate, dt),
         };
         commit(state, next)
     }

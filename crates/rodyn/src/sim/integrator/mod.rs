@@ -1,11 +1,22 @@
-//! Time-stepping schemes for `q̇ = Q(q) v`, `v̇ = FD(q, v, τ, f_ext)`.
+//! Time-stepping schemes for `q̇ = Q(q) v`, `v̇ = FD(q, v, τ, f_ext)` and
+//! the drives' auxiliary states `ż = g(t, q, v, z)`.
 //!
 //! | integrator            | order | dynamics calls per step | stable for                          |
 //! |-----------------------|-------|-------------------------|-------------------------------------|
 //! | [`ExplicitEuler`]     | 1     | 1                       | damped systems only; gains energy on an undamped oscillator |
 //! | [`SemiImplicitEuler`] | 1     | 1                       | oscillators with `ω dt < 2` (symplectic: energy bounded) |
 //! | [`Rk4`]               | 4     | 4                       | oscillators with `ω dt < 2.78`      |
-//! | [`ImplicitEuler`]     | 1     | 2 NV + 1 and an NV x NV solve | stiff springs, dampers and contacts at any step (A-stable, dissipative) |
+//! | [`ImplicitEuler`]     | 1     | 2 NV + NZ + 1, an NZ x NZ and an NV x NV solve | stiff springs, dampers, contacts and fast auxiliary states at any step (A-stable, dissipative) |
+//!
+//! How each scheme moves the auxiliary states `z` (see
+//! [`AuxiliaryLoads`]):
+//!
+//! * [`ExplicitEuler`] and [`SemiImplicitEuler`]: `z₁ = z + ż(t, q, v, z) dt`
+//!   from the one evaluation at the start, like `v`; the semi-implicit
+//!   scheme's implicit part is the configuration update with `v₁` only.
+//! * [`Rk4`]: `z` is one more block of the ODE, with the same four stages.
+//! * [`ImplicitEuler`]: `z` is in the linearisation, so a stiff `ż` (a fast
+//!   activation) is as stable as a stiff spring.
 //!
 //! Each is a value implementing [`Integrator`]; the forward-dynamics method
 //! is a type parameter given by value (`Aba` or `Crba`):
@@ -35,7 +46,7 @@ pub use euler::{ExplicitEuler, SemiImplicitEuler};
 pub use implicit_euler::ImplicitEuler;
 pub use rk4::Rk4;
 
-use super::loads::Loads;
+use super::loads::AuxiliaryLoads;
 use super::manifold::ConfigurationRate;
 use super::state::State;
 use crate::algorithm::forward_dynamics::ForwardDynamics;
@@ -50,8 +61,9 @@ pub trait Integrator {
     /// A short name for reports ("RK4").
     const NAME: &'static str;
 
-    /// Advances `state` by `dt` seconds under `loads`, with forward dynamics
-    /// by `method` (ABA or CRBA).
+    /// Advances `state` (with its `NZ` auxiliary states; `NZ = 0` for a
+    /// plain [`Loads`](crate::sim::Loads)) by `dt` seconds under `loads`,
+    /// with forward dynamics by `method` (ABA or CRBA).
     ///
     /// Leaves `data` as the last dynamics evaluation left it (not
     /// necessarily at the new state).
@@ -62,25 +74,35 @@ pub trait Integrator {
     /// configuration off its manifold), or [`Error::NonFinite`](crate::Error::NonFinite)
     /// when the new state would not be finite. On error `state` is unchanged.
     #[allow(clippy::too_many_arguments)]
-    fn step<F, L, S, const NB: usize, const NQ: usize, const NV: usize, G>(
+    fn step<F, L, S, const NB: usize, const NQ: usize, const NV: usize, const NZ: usize, G>(
         &mut self,
         method: F,
         model: &Model<S, NB, NQ, NV, G>,
         data: &mut Data<S, NB, NV, G>,
-        state: &mut State<S, NQ, NV>,
+        state: &mut State<S, NQ, NV, NZ>,
         dt: S,
         loads: &mut L,
     ) -> Result<()>
     where
         F: ForwardDynamics,
-        L: Loads<S, NB, NQ, NV, G>,
+        L: AuxiliaryLoads<S, NB, NQ, NV, NZ, G>,
         S: Scalar,
         G: ConfigurationRate;
 }
 
-/// `q̈` at `(t, q, v)`: the loads, then the forward dynamics.
+/// `q̈` and `ż` at `(t, q, v, z)`: the loads and rates, then the forward
+/// dynamics.
 #[allow(clippy::too_many_arguments)]
-pub(crate) fn acceleration<F, L, S, const NB: usize, const NQ: usize, const NV: usize, G>(
+pub(crate) fn derivatives<
+    F,
+    L,
+    S,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    const NZ: usize,
+    G,
+>(
     _method: &F,
     model: &Model<S, NB, NQ, NV, G>,
     data: &mut Data<S, NB, NV, G>,
@@ -88,24 +110,27 @@ pub(crate) fn acceleration<F, L, S, const NB: usize, const NQ: usize, const NV: 
     t: S,
     q: &[S; NQ],
     v: &[S; NV],
-) -> Result<[S; NV]>
+    z: &[S; NZ],
+) -> Result<([S; NV], [S; NZ])>
 where
     F: ForwardDynamics,
-    L: Loads<S, NB, NQ, NV, G>,
+    L: AuxiliaryLoads<S, NB, NQ, NV, NZ, G>,
     S: Scalar,
     G: Space,
 {
     let mut tau = [S::ZERO; NV];
     let mut f_ext = [<G::Force<S> as VectorOps<S>>::ZERO; NB];
-    loads.loads(model, data, t, q, v, &mut tau, &mut f_ext)?;
-    Ok(*F::forward_dynamics(model, data, q, v, &tau, Some(&f_ext))?)
+    let mut z_rate = [S::ZERO; NZ];
+    loads.loads_and_rates(model, data, t, q, v, z, &mut tau, &mut f_ext, &mut z_rate)?;
+    let acceleration = *F::forward_dynamics(model, data, q, v, &tau, Some(&f_ext))?;
+    Ok((acceleration, z_rate))
 }
 
 /// Writes the new state only when it is finite.
 #[inline]
-pub(crate) fn commit<S: Scalar, const NQ: usize, const NV: usize>(
-    state: &mut State<S, NQ, NV>,
-    next: State<S, NQ, NV>,
+pub(crate) fn commit<S: Scalar, const NQ: usize, const NV: usize, const NZ: usize>(
+    state: &mut State<S, NQ, NV, NZ>,
+    next: State<S, NQ, NV, NZ>,
 ) -> Result<()> {
     next.check_finite()?;
     *state = next;

@@ -1,11 +1,11 @@
 //! The classical fourth-order Runge-Kutta scheme.
 
-use super::{acceleration, commit, Integrator};
+use super::{commit, derivatives, Integrator};
 use crate::algorithm::forward_dynamics::ForwardDynamics;
 use crate::data::Data;
 use crate::error::Result;
 use crate::model::Model;
-use crate::sim::loads::Loads;
+use crate::sim::loads::AuxiliaryLoads;
 use crate::sim::manifold::{
     add_scaled, configuration_rate, for_dynamics, ConfigurationRate, ConfigurationUpdate,
 };
@@ -13,6 +13,10 @@ use crate::sim::state::State;
 use crate::Scalar;
 
 /// Classical RK4: four evaluations per step, fourth order.
+///
+/// The auxiliary states `z` are one more block of the ODE: each stage
+/// evaluates `ż` with the forces, and `z` is displaced and combined with
+/// the same weights as `v`, so they keep the fourth order.
 ///
 /// Stages at `t`, `t + dt/2` (twice) and `t + dt` with weights
 /// `1/6, 1/3, 1/3, 1/6`. With the default
@@ -43,38 +47,42 @@ impl Default for Rk4 {
 impl Integrator for Rk4 {
     const NAME: &'static str = "rk4";
 
-    fn step<F, L, S, const NB: usize, const NQ: usize, const NV: usize, G>(
+    fn step<F, L, S, const NB: usize, const NQ: usize, const NV: usize, const NZ: usize, G>(
         &mut self,
         method: F,
         model: &Model<S, NB, NQ, NV, G>,
         data: &mut Data<S, NB, NV, G>,
-        state: &mut State<S, NQ, NV>,
+        state: &mut State<S, NQ, NV, NZ>,
         dt: S,
         loads: &mut L,
     ) -> Result<()>
     where
         F: ForwardDynamics,
-        L: Loads<S, NB, NQ, NV, G>,
+        L: AuxiliaryLoads<S, NB, NQ, NV, NZ, G>,
         S: Scalar,
         G: ConfigurationRate,
     {
-        let State { t, q, v } = *state;
+        let State { t, q, v, z } = *state;
         let half = dt * S::from_f64(0.5);
         let embedded = matches!(self.update, ConfigurationUpdate::Embedded { .. });
-        // Stage k: configuration q_k, velocity v_k; its derivatives are the
-        // acceleration a_k and, when embedded, the configuration rate r_k.
+        // Stage k: configuration q_k, velocity v_k, auxiliary states z_k; its
+        // derivatives are the acceleration a_k, the auxiliary rates zr_k and,
+        // when embedded, the configuration rate r_k.
         let mut q_k = q;
         let mut v_k = v;
+        let mut z_k = z;
         let mut sum_v = [S::ZERO; NV];
         let mut sum_a = [S::ZERO; NV];
         let mut sum_r = [S::ZERO; NQ];
+        let mut sum_zr = [S::ZERO; NZ];
         for (stage, (offset, weight)) in [(S::ZERO, 1.0), (half, 2.0), (half, 2.0), (dt, 1.0)]
             .into_iter()
             .enumerate()
         {
             let weight = S::from_f64(weight);
             let q_dyn = for_dynamics(model, self.update, &q_k);
-            let a_k = acceleration(&method, model, data, loads, t + offset, &q_dyn, &v_k)?;
+            let (a_k, zr_k) =
+                derivatives(&method, model, data, loads, t + offset, &q_dyn, &v_k, &z_k)?;
             let r_k = if embedded {
                 configuration_rate(model, &q_k, &v_k)
             } else {
@@ -86,6 +94,9 @@ impl Integrator for Rk4 {
             }
             for k in 0..NQ {
                 sum_r[k] += r_k[k] * weight;
+            }
+            for k in 0..NZ {
+                sum_zr[k] += zr_k[k] * weight;
             }
             // The next stage starts from the state displaced along this
             // stage's derivatives by the next stage's offset.
@@ -99,7 +110,8 @@ impl Integrator for Rk4 {
                 } else {
                     model.integrate(&q, &v_k, next_offset)
                 };
-                v_k = core::array::from_fn(|k| v[k] + a_k[k] * next_offset);
+                v_k = add_scaled(&v, &a_k, next_offset);
+                z_k = add_scaled(&z, &zr_k, next_offset);
             }
         }
         let sixth = dt / S::from_f64(6.0);
@@ -119,7 +131,8 @@ impl Integrator for Rk4 {
         let next = State {
             t: t + dt,
             q: q_next,
-            v: core::array::from_fn(|k| v[k] + sum_a[k] * sixth),
+            v: add_scaled(&v, &sum_a, sixth),
+            z: add_scaled(&z, &sum_zr, sixth),
         };
         commit(state, next)
     }
