@@ -243,12 +243,12 @@ fn implicit_euler_is_stable_on_a_lag_much_faster_than_the_step() {
         }
     }
     let failure = failure.expect("explicit Euler must report the blow-up");
-    // The non-finite entry is z, named after q (index NQ + 0 = 1).
+    // The non-finite entry is the lag's state z[0].
     assert_eq!(
         failure,
         Error::NonFinite {
-            quantity: Quantity::Configuration,
-            index: 1
+            quantity: Quantity::AuxiliaryState,
+            index: 0
         }
     );
     assert!(explicit.t < 2.0, "blew up only at t = {}", explicit.t);
@@ -324,14 +324,17 @@ fn a_failing_step_leaves_the_state_unchanged() {
         }
     }
     // A NaN rate is caught where it first shows: by the final check of a
-    // one-stage scheme (z after q: index NQ + 0 = 1), by the dynamics when
+    // one-stage scheme (the auxiliary state z[0]), by the dynamics when
     // RK4's next stage turns it into a NaN force, and by the pivot of the
     // implicit scheme's z block (index NV + 0 = 1).
     let nan_in = |quantity, index| Error::NonFinite { quantity, index };
-    check(ExplicitEuler::default(), nan_in(Quantity::Configuration, 1));
+    check(
+        ExplicitEuler::default(),
+        nan_in(Quantity::AuxiliaryState, 0),
+    );
     check(
         SemiImplicitEuler::default(),
-        nan_in(Quantity::Configuration, 1),
+        nan_in(Quantity::AuxiliaryState, 0),
     );
     check(Rk4::default(), nan_in(Quantity::Torque, 0));
     check(ImplicitEuler::default(), nan_in(Quantity::Acceleration, 1));

@@ -19,6 +19,8 @@ pub enum Quantity {
     ExternalForce,
     /// A model parameter (inertia, placement, gravity).
     ModelParameter,
+    /// An auxiliary state of a simulation, such as a muscle activation.
+    AuxiliaryState,
 }
 
 /// What is wrong with a model parameter.

@@ -57,9 +57,8 @@ impl<S: Scalar, const NQ: usize, const NV: usize, const NZ: usize> State<S, NQ, 
     ///
     /// # Errors
     /// [`Error::NonFinite`] naming the first bad entry: of `q`
-    /// ([`Quantity::Configuration`], index `0..NQ`), of `z` (also
-    /// [`Quantity::Configuration`], counted after `q`: index `NQ + k` for
-    /// `z[k]`) or of `v` ([`Quantity::Velocity`]).
+    /// ([`Quantity::Configuration`]), of `z` ([`Quantity::AuxiliaryState`])
+    /// or of `v` ([`Quantity::Velocity`]).
     pub fn check_finite(&self) -> Result<()> {
         if let Some(index) = self.q.iter().position(|x| !x.is_finite()) {
             return Err(Error::NonFinite {
@@ -67,10 +66,10 @@ impl<S: Scalar, const NQ: usize, const NV: usize, const NZ: usize> State<S, NQ, 
                 index,
             });
         }
-        if let Some(k) = self.z.iter().position(|x| !x.is_finite()) {
+        if let Some(index) = self.z.iter().position(|x| !x.is_finite()) {
             return Err(Error::NonFinite {
-                quantity: Quantity::Configuration,
-                index: NQ + k,
+                quantity: Quantity::AuxiliaryState,
+                index,
             });
         }
         if let Some(index) = self.v.iter().position(|x| !x.is_finite()) {
