@@ -233,3 +233,37 @@ fn unphysical_parameters_are_rejected_with_the_body() {
         })
     );
 }
+
+#[test]
+fn a_tree_built_at_run_time_reports_its_inconsistency() {
+    use rodyn::topology::{Topology, TopologyError};
+    let ok = Topology::<3, 3>::try_new([None, Some(0), Some(0)], [1; 3], [1; 3], 3).unwrap();
+    assert_eq!(ok.lambda_v, [None, Some(0), Some(0)]);
+    assert_eq!(
+        Topology::<3, 3>::try_new([None, Some(2), Some(0)], [1; 3], [1; 3], 3),
+        Err(TopologyError::ParentAfterChild { body: 1 })
+    );
+    assert_eq!(
+        Topology::<2, 7>::try_new([None, Some(0)], [7, 1], [6, 1], 7),
+        Err(TopologyError::ConfigurationCount {
+            declared: 7,
+            found: 8
+        })
+    );
+    let too_many = Topology::<2, 6>::try_new([None, Some(0)], [7, 1], [6, 1], 8).unwrap_err();
+    assert_eq!(
+        too_many,
+        TopologyError::VelocityCount {
+            declared: 6,
+            found: 7
+        }
+    );
+    assert!(
+        too_many.to_string().contains("declared 6, joints give 7"),
+        "{too_many}"
+    );
+    assert_eq!(
+        Topology::<1, 7>::try_new([None], [7], [7], 7),
+        Err(TopologyError::TooManyJointDofs { body: 0 })
+    );
+}

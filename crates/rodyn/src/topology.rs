@@ -4,6 +4,82 @@
 //! (`parent[i] < i`); every pass of every algorithm is then a plain index
 //! loop, forwards or backwards, with no recursion.
 
+#[cfg(feature = "std")]
+extern crate std;
+
+/// What is inconsistent in a tree's layout.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum TopologyError {
+    /// A body's parent does not come before it (`parent[i] < i` fails).
+    ParentAfterChild {
+        /// The body.
+        body: usize,
+    },
+    /// A joint with more than [`MAX_JOINT_NV`](crate::joint::MAX_JOINT_NV)
+    /// degrees of freedom.
+    TooManyJointDofs {
+        /// The body the joint moves.
+        body: usize,
+    },
+    /// The joints' configuration coordinates do not add up to `NQ`.
+    ConfigurationCount {
+        /// The declared `NQ`.
+        declared: usize,
+        /// The joints' sum.
+        found: usize,
+    },
+    /// The joints' velocity coordinates do not add up to `NV`.
+    VelocityCount {
+        /// The declared `NV`.
+        declared: usize,
+        /// The joints' sum.
+        found: usize,
+    },
+}
+
+impl TopologyError {
+    /// A one-sentence explanation; also the compile error of a `const` model.
+    #[must_use]
+    pub const fn message(&self) -> &'static str {
+        match self {
+            Self::ParentAfterChild { .. } => {
+                "rodyn model: every body's parent must come before it (parent[i] < i); reorder the bodies"
+            }
+            Self::TooManyJointDofs { .. } => {
+                "rodyn model: a joint has more than 6 degrees of freedom"
+            }
+            Self::ConfigurationCount { .. } => {
+                "rodyn model: the joints' configuration coordinates do not add up to NQ"
+            }
+            Self::VelocityCount { .. } => {
+                "rodyn model: the joints' velocity coordinates do not add up to NV"
+            }
+        }
+    }
+}
+
+impl core::fmt::Display for TopologyError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            Self::ParentAfterChild { body } | Self::TooManyJointDofs { body } => {
+                write!(f, "{} (body {body})", self.message())
+            }
+            Self::ConfigurationCount { declared, found }
+            | Self::VelocityCount { declared, found } => {
+                write!(
+                    f,
+                    "{} (declared {declared}, joints give {found})",
+                    self.message()
+                )
+            }
+        }
+    }
+}
+
+#[cfg(feature = "std")]
+impl std::error::Error for TopologyError {}
+
 /// Where each body's coordinates start, and the tree over velocity coordinates.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Topology<const NB: usize, const NV: usize> {
@@ -34,6 +110,7 @@ pub struct Topology<const NB: usize, const NV: usize> {
 impl<const NB: usize, const NV: usize> Topology<NB, NV> {
     /// Lays out the coordinates of a tree and checks it; a `const` evaluation
     /// of an inconsistent tree fails to compile with the panic's message.
+    /// For trees built at run time (from a file, say), use [`Self::try_new`].
     ///
     /// # Panics
     /// When a parent index is not smaller than its child's, when the joints'
@@ -46,6 +123,25 @@ impl<const NB: usize, const NV: usize> Topology<NB, NV> {
         nv: [usize; NB],
         nq_total: usize,
     ) -> Self {
+        match Self::try_new(parents, nq, nv, nq_total) {
+            Ok(topology) => topology,
+            Err(error) => panic!("{}", error.message()),
+        }
+    }
+
+    /// Lays out the coordinates of a tree, or says what is inconsistent.
+    ///
+    /// `parents[i]` is body i's parent (`None`: the world), `nq[i]` and
+    /// `nv[i]` its joint's coordinate counts, `nq_total` the model's `NQ`.
+    ///
+    /// # Errors
+    /// The first [`TopologyError`] found, naming the body where it applies.
+    pub const fn try_new(
+        parents: [Option<usize>; NB],
+        nq: [usize; NB],
+        nv: [usize; NB],
+        nq_total: usize,
+    ) -> Result<Self, TopologyError> {
         let mut idx_q = [0; NB];
         let mut idx_v = [0; NB];
         let mut lambda_v = [None; NV];
@@ -57,11 +153,11 @@ impl<const NB: usize, const NV: usize> Topology<NB, NV> {
         while i < NB {
             if let Some(p) = parents[i] {
                 if p >= i {
-                    panic!("rodyn model: every body's parent must come before it (parent[i] < i); reorder the bodies");
+                    return Err(TopologyError::ParentAfterChild { body: i });
                 }
             }
             if nv[i] > crate::joint::MAX_JOINT_NV {
-                panic!("rodyn model: a joint has more than 6 degrees of freedom");
+                return Err(TopologyError::TooManyJointDofs { body: i });
             }
             idx_q[i] = q;
             idx_v[i] = v;
@@ -72,7 +168,10 @@ impl<const NB: usize, const NV: usize> Topology<NB, NV> {
             let mut k = 0;
             while k < nv[i] {
                 if v + k >= NV {
-                    panic!("rodyn model: the joints have more velocity coordinates than NV");
+                    return Err(TopologyError::VelocityCount {
+                        declared: NV,
+                        found: velocity_count(&nv),
+                    });
                 }
                 lambda_v[v + k] = if k == 0 { inherited } else { Some(v + k - 1) };
                 body_of_v[v + k] = i;
@@ -88,10 +187,16 @@ impl<const NB: usize, const NV: usize> Topology<NB, NV> {
             i += 1;
         }
         if q != nq_total {
-            panic!("rodyn model: the joints' configuration coordinates do not add up to NQ");
+            return Err(TopologyError::ConfigurationCount {
+                declared: nq_total,
+                found: q,
+            });
         }
         if v != NV {
-            panic!("rodyn model: the joints' velocity coordinates do not add up to NV");
+            return Err(TopologyError::VelocityCount {
+                declared: NV,
+                found: v,
+            });
         }
         let mut chain_start_v = [0; NV];
         let mut k = 0;
@@ -102,7 +207,7 @@ impl<const NB: usize, const NV: usize> Topology<NB, NV> {
             };
             k += 1;
         }
-        Self {
+        Ok(Self {
             parents,
             idx_q,
             nq,
@@ -111,7 +216,7 @@ impl<const NB: usize, const NV: usize> Topology<NB, NV> {
             lambda_v,
             body_of_v,
             chain_start_v,
-        }
+        })
     }
 
     /// `true` when body `ancestor` is `body` or supports it.
@@ -129,4 +234,14 @@ impl<const NB: usize, const NV: usize> Topology<NB, NV> {
         }
         false
     }
+}
+
+/// The sum of the joints' velocity coordinates, for error reports.
+const fn velocity_count<const NB: usize>(nv: &[usize; NB]) -> usize {
+    let (mut sum, mut i) = (0, 0);
+    while i < NB {
+        sum += nv[i];
+        i += 1;
+    }
+    sum
 }
