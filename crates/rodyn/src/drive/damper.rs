@@ -37,13 +37,4 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
         self.path
             .add_tension(&kin, tension, state.data, &mut out.f_ext)
     }
-    fn add_input_derivative(
-        &self,
-        _state: &DriveState<'_, S, G, NB, NV>,
-        _w: &[S],
-        _input: usize,
-        _out: &mut DriveForces<S, G, NB, NV>,
-    ) -> Result<()> {
-        Ok(())
-    }
 }

@@ -45,10 +45,7 @@
 //!         }
 //!         Ok(())
 //!     }
-//!     fn add_input_derivative(&self, _: &DriveState<'_, f64, G, NB, NV>, _: &[f64], _: usize,
-//!                             _: &mut DriveForces<f64, G, NB, NV>) -> rodyn::Result<()> {
-//!         Ok(()) // reads no input
-//!     }
+//!     // Reads no input: the default `add_input_derivative` (adds nothing) fits.
 //! }
 //!
 //! const PENDULUM: Model<f64, 1, 1, 1> = Model::new(
@@ -154,17 +151,20 @@ pub trait ForceElement<S: Scalar, G: Space, const NB: usize, const NV: usize> {
 
     /// Adds the partial derivative of the element's forces with respect to
     /// input `w[input]` at fixed state; adds nothing when the element does
-    /// not read that input.
+    /// not read that input. The default is for passive elements (springs,
+    /// dampers), which read no input at all.
     ///
     /// # Errors
     /// As [`add_forces`](Self::add_forces).
     fn add_input_derivative(
         &self,
-        state: &DriveState<'_, S, G, NB, NV>,
-        w: &[S],
-        input: usize,
-        out: &mut DriveForces<S, G, NB, NV>,
-    ) -> Result<()>;
+        _state: &DriveState<'_, S, G, NB, NV>,
+        _w: &[S],
+        _input: usize,
+        _out: &mut DriveForces<S, G, NB, NV>,
+    ) -> Result<()> {
+        Ok(())
+    }
 }
 
 /// Reads `w[input]` or says which input is missing.

@@ -56,15 +56,6 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
         self.path
             .add_tension(&kin, self.tension(kin.length), state.data, &mut out.f_ext)
     }
-    fn add_input_derivative(
-        &self,
-        _state: &DriveState<'_, S, G, NB, NV>,
-        _w: &[S],
-        _input: usize,
-        _out: &mut DriveForces<S, G, NB, NV>,
-    ) -> Result<()> {
-        Ok(())
-    }
 }
 
 /// A hardening spring along a path: `T = k δ + k₃ δ³` with `δ = L - L₀`,
@@ -123,14 +114,5 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
         let kin = self.path.kinematics(state.data)?;
         self.path
             .add_tension(&kin, self.tension(kin.length), state.data, &mut out.f_ext)
-    }
-    fn add_input_derivative(
-        &self,
-        _state: &DriveState<'_, S, G, NB, NV>,
-        _w: &[S],
-        _input: usize,
-        _out: &mut DriveForces<S, G, NB, NV>,
-    ) -> Result<()> {
-        Ok(())
     }
 }
