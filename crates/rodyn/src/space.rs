@@ -140,6 +140,12 @@ pub trait ArticulatedInertia<S: Scalar>: Copy + Debug {
     fn sub_outer_sym(&mut self, a: &Self::Force, b: &Self::Force, s: S);
     /// `ᵃX_b* self ᵇX_a`: the same inertia seen from frame a, given `aMb`.
     fn act(&self, x: &Self::Transform) -> Self;
+    /// `self += ᵃX_b* o ᵇX_a`: adds `o`, given in frame b, to this inertia of
+    /// frame a. A geometry overrides it to avoid forming the intermediate.
+    #[inline]
+    fn add_act(&mut self, o: &Self, x: &Self::Transform) {
+        self.add_assign(&o.act(x));
+    }
     /// The trace, a scale for the positivity tests of ABA.
     fn trace(&self) -> S;
 }

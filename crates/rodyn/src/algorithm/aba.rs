@@ -15,13 +15,15 @@
 //! Pass 3 (root to leaves): `q̈ᵢ = D⁻¹ (u - Uᵀ a')`, `aᵢ = a' + S q̈ᵢ`, with
 //! `a₀ = -g`.
 
-use crate::algorithm::kinematics::{check_state, velocity_pass};
+use crate::algorithm::kinematics::{body_transform, check_state, joint_velocity};
 use crate::algorithm::rnea::check_external;
 use crate::data::Data;
 use crate::error::{Error, Quantity, Result};
 use crate::joint::{JointModel, MAX_JOINT_NV};
 use crate::model::{check_finite, Model};
-use crate::space::{ArticulatedInertia, BodyInertia, MotionVector, RigidTransform, Space};
+use crate::space::{
+    ArticulatedInertia, BodyInertia, MotionVector, RigidTransform, Space, VectorOps,
+};
 use crate::Scalar;
 
 /// `D` below this fraction of `trace(Iᴬ)`, in units of the scalar's epsilon,
@@ -31,10 +33,10 @@ pub const SINGULAR_PIVOT_EPS: f64 = 64.0;
 /// Joint accelerations `q̈ = M⁻¹ (τ - h)` in O(n).
 ///
 /// Inputs: `q` (NQ), `v` and `tau` (NV), optional external forces per body
-/// (body frame). Returns `data.ddq`. Leaves valid: `li_m_i`, `v`, `c`, `ia`
-/// and `pa` (the articulated quantities carried to the parent, before
-/// projection), `u_cols`, `d_inv`, `u`, `a_gf` (acceleration minus gravity),
-/// `ddq`. `o_m_i` is not written (run
+/// (body frame). Returns `data.ddq`. Leaves valid: `li_m_i`, `v`, `c`,
+/// `ia` (each body's `Iᵃ`, the inertia handed to its parent, or `Iᴬ` at a
+/// root), `pa` (`pᴬ`, before projection), `u_cols`, `d_inv`, `u`, `a_gf`
+/// (acceleration minus gravity), `ddq`. `o_m_i` is not written (run
 /// [`forward_kinematics`](crate::algorithm::kinematics::forward_kinematics)
 /// for body poses).
 ///
@@ -53,22 +55,55 @@ pub fn aba<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: 
     check_state(model, q, Some(v))?;
     check_finite(tau, Quantity::Torque)?;
     check_external(f_ext.map(|f| &f[..]))?;
-    velocity_pass(model, data, q, v);
-    for i in 0..NB {
-        let inertia = model.inertia(i);
-        data.ia[i] = G::Articulated::<S>::from_rigid(inertia);
-        let mut p_a = data.v[i].cross_force(&inertia.mul_motion(&data.v[i]));
-        if let Some(f_ext) = f_ext {
-            p_a -= f_ext[i];
-        }
-        data.pa[i] = p_a;
-    }
+    velocity_and_bias_pass(model, data, q, v, f_ext);
     backward_pass(model, data, tau)?;
     forward_acceleration_pass(model, data);
     Ok(&data.ddq)
 }
 
+/// Pass 1: `ˡⁱMᵢ`, `vᵢ`, `cᵢ`, `Iᴬᵢ = Iᵢ` and `pᴬᵢ = vᵢ ×* Iᵢ vᵢ - fᵉˣᵗᵢ`.
+///
+/// One loop, as in RNEA's forward pass: each body's velocity stays in
+/// registers for its bias force.
+#[inline]
+fn velocity_and_bias_pass<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    q: &[S; NQ],
+    v: &[S; NV],
+    f_ext: Option<&[G::Force<S>; NB]>,
+) {
+    for i in 0..NB {
+        let li_m_i = body_transform(model, i, q);
+        let v_j = joint_velocity(model, i, v);
+        let v_i = match model.parent(i) {
+            Some(p) => li_m_i.act_inv_motion(&data.v[p]) + v_j,
+            None => v_j,
+        };
+        let inertia = model.inertia(i);
+        let mut p_a = v_i.cross_force(&inertia.mul_motion(&v_i));
+        if let Some(f_ext) = f_ext {
+            p_a -= f_ext[i];
+        }
+        data.c[i] = v_i.cross_motion(&v_j);
+        data.v[i] = v_i;
+        data.li_m_i[i] = li_m_i;
+        data.ia[i] = G::Articulated::<S>::from_rigid(inertia);
+        data.pa[i] = p_a;
+    }
+}
+
 /// Pass 2: articulated inertias and bias forces, leaves to root.
+///
+/// Each body's `Iᴬ` is projected in place (`data.ia[i]` ends as `Iᵃ`, the
+/// inertia its parent receives; a root keeps `Iᴬ`) and added to the
+/// parent's through one fused transform.
 pub(crate) fn backward_pass<
     S: Scalar,
     const NB: usize,
@@ -85,34 +120,50 @@ pub(crate) fn backward_pass<
     for i in (0..NB).rev() {
         let (iv, nv) = (t.idx_v[i], t.nv[i]);
         let joint = model.joint(i);
-        joint.articulated_columns(&data.ia[i], &mut data.u_cols[iv..iv + nv]);
-        joint.project_force(&data.pa[i], &mut st_pa[..nv]);
+        let (ancestors, rest) = data.ia.split_at_mut(i);
+        let i_a = &mut rest[0];
+        let mut p_a = data.pa[i];
+        if nv == 1 {
+            // The common case, without the loops over the joint's columns.
+            let mut u_col = [G::Force::<S>::ZERO];
+            joint.articulated_columns(i_a, &mut u_col);
+            let u_col = u_col[0];
+            let mut s_t = [S::ZERO];
+            joint.project_force(&u_col, &mut s_t);
+            // The armature adds to D = Sᵀ I^A S (Pinocchio's convention).
+            let d = s_t[0] + model.armature()[iv];
+            check_pivot(i, d, i_a.trace())?;
+            let d_inv = S::ONE / d;
+            joint.project_force(&p_a, &mut s_t);
+            let u = tau[iv] - s_t[0];
+            data.u_cols[iv] = u_col;
+            data.d_inv[iv][0] = d_inv;
+            data.u[iv] = u;
+            if let Some(p) = t.parents[i] {
+                // I^a = I^A - U D⁻¹ Uᵀ, p^a = p^A + I^a c + U D⁻¹ u.
+                i_a.sub_outer(&u_col, d_inv);
+                p_a += u_col * (d_inv * u) + i_a.mul_motion(&data.c[i]);
+                ancestors[p].add_act(i_a, &data.li_m_i[i]);
+                data.pa[p] += data.li_m_i[i].act_force(&p_a);
+            }
+            continue;
+        }
+        joint.articulated_columns(i_a, &mut data.u_cols[iv..iv + nv]);
+        joint.project_force(&p_a, &mut st_pa[..nv]);
         for k in 0..nv {
             data.u[iv + k] = tau[iv + k] - st_pa[k];
         }
-        if nv == 1 {
-            let d = {
-                let mut d = [S::ZERO];
-                joint.project_force(&data.u_cols[iv], &mut d);
-                // The armature adds to D = Sᵀ I^A S (Pinocchio's convention).
-                d[0] + model.armature()[iv]
-            };
-            check_pivot(i, d, data.ia[i].trace())?;
-            data.d_inv[iv][0] = S::ONE / d;
-        } else if nv > 1 {
+        if nv > 1 {
             invert_joint_d(
                 i,
                 joint,
                 &data.u_cols[iv..iv + nv],
                 &model.armature()[iv..iv + nv],
-                data.ia[i].trace(),
+                i_a.trace(),
                 &mut data.d_inv[iv..iv + nv],
             )?;
         }
         if let Some(p) = t.parents[i] {
-            let mut i_a = data.ia[i];
-            // p^a = p^A + I^a c + U D⁻¹ u, with I^a = I^A - U D⁻¹ Uᵀ.
-            let mut p_a = data.pa[i];
             for k in 0..nv {
                 let mut dinv_u = S::ZERO;
                 for l in 0..nv {
@@ -129,10 +180,8 @@ pub(crate) fn backward_pass<
                 }
             }
             p_a += i_a.mul_motion(&data.c[i]);
-            let li_m_i = data.li_m_i[i];
-            let ia_parent = i_a.act(&li_m_i);
-            data.ia[p].add_assign(&ia_parent);
-            data.pa[p] += li_m_i.act_force(&p_a);
+            ancestors[p].add_act(i_a, &data.li_m_i[i]);
+            data.pa[p] += data.li_m_i[i].act_force(&p_a);
         }
     }
     Ok(())
@@ -159,6 +208,13 @@ pub(crate) fn forward_acceleration_pass<
             None => minus_g,
         };
         let a_prime = data.li_m_i[i].act_inv_motion(&a_parent) + data.c[i];
+        let joint = model.joint(i);
+        if nv == 1 {
+            let ddq = data.d_inv[iv][0] * (data.u[iv] - a_prime.dot(&data.u_cols[iv]));
+            data.ddq[iv] = ddq;
+            data.a_gf[i] = a_prime + joint.motion(&[ddq]);
+            continue;
+        }
         for k in 0..nv {
             ut_a[k] = data.u[iv + k] - a_prime.dot(&data.u_cols[iv + k]);
         }
@@ -169,7 +225,6 @@ pub(crate) fn forward_acceleration_pass<
             }
             data.ddq[iv + k] = ddq;
         }
-        let joint = model.joint(i);
         data.a_gf[i] = a_prime + joint.motion(&data.ddq[iv..iv + nv]);
     }
 }

@@ -34,6 +34,63 @@ fn outer<S: Scalar>(a: &Vec3<S>, b: &Vec3<S>, s: S) -> Mat3<S> {
     ])
 }
 
+/// `u × v` on arrays.
+#[inline(always)]
+fn cross<S: Scalar>(u: &[S; 3], v: &Vec3<S>) -> [S; 3] {
+    [
+        u[1] * v.z - u[2] * v.y,
+        u[2] * v.x - u[0] * v.z,
+        u[0] * v.y - u[1] * v.x,
+    ]
+}
+
+/// The rows of a symmetric matrix.
+#[inline(always)]
+fn sym_rows<S: Scalar>(s: &Sym3<S>) -> [[S; 3]; 3] {
+    [[s.xx, s.xy, s.xz], [s.xy, s.yy, s.yz], [s.xz, s.yz, s.zz]]
+}
+
+/// `r · u` for rows of equal length 3.
+#[inline(always)]
+fn dot<S: Scalar>(u: &[S; 3], v: &[S; 3]) -> S {
+    u[0] * v[0] + u[1] * v[1] + u[2] * v[2]
+}
+
+/// `R S Rᵀ` for symmetric `S`: `T = S Rᵀ` (27 products), then the upper
+/// triangle of `R T` (18).
+#[inline(always)]
+fn rotate_sym<S: Scalar>(s: &Sym3<S>, r: &[[S; 3]; 3]) -> Sym3<S> {
+    let m = sym_rows(s);
+    // tᵀ rows: t_col_j = S r_j (row j of R), so (R T)[i][j] = r_i · (S r_j).
+    let t0 = [dot(&m[0], &r[0]), dot(&m[1], &r[0]), dot(&m[2], &r[0])];
+    let t1 = [dot(&m[0], &r[1]), dot(&m[1], &r[1]), dot(&m[2], &r[1])];
+    let t2 = [dot(&m[0], &r[2]), dot(&m[1], &r[2]), dot(&m[2], &r[2])];
+    Sym3::new(
+        dot(&r[0], &t0),
+        dot(&r[0], &t1),
+        dot(&r[0], &t2),
+        dot(&r[1], &t1),
+        dot(&r[1], &t2),
+        dot(&r[2], &t2),
+    )
+}
+
+/// `R B Rᵀ` for a general `B` (54 products).
+#[inline(always)]
+fn rotate_mat<S: Scalar>(b: &[[S; 3]; 3], r: &[[S; 3]; 3]) -> [[S; 3]; 3] {
+    // Column j of B Rᵀ is B r_j.
+    let t = [
+        [dot(&b[0], &r[0]), dot(&b[1], &r[0]), dot(&b[2], &r[0])],
+        [dot(&b[0], &r[1]), dot(&b[1], &r[1]), dot(&b[2], &r[1])],
+        [dot(&b[0], &r[2]), dot(&b[1], &r[2]), dot(&b[2], &r[2])],
+    ];
+    [
+        [dot(&r[0], &t[0]), dot(&r[0], &t[1]), dot(&r[0], &t[2])],
+        [dot(&r[1], &t[0]), dot(&r[1], &t[1]), dot(&r[1], &t[2])],
+        [dot(&r[2], &t[0]), dot(&r[2], &t[1]), dot(&r[2], &t[2])],
+    ]
+}
+
 impl<S: Scalar> ArticulatedInertia6<S> {
     /// Entry (i, j) of the 6x6 matrix, angular rows and columns first.
     #[must_use]
@@ -90,25 +147,60 @@ impl<S: Scalar> ArticulatedInertia<S> for ArticulatedInertia6<S> {
         self.c -= Sym3::outer_sym(&u.lin, &w.lin, s);
     }
     fn act(&self, x: &Transform<S>) -> Self {
+        let mut out = Self::ZERO;
+        out.add_act(self, x);
+        out
+    }
+    #[inline]
+    fn add_act(&mut self, o: &Self, x: &Transform<S>) {
         // Rotate every block into a, then shift the reference point by
         // p = x.trans, with P = [p×] (so Pᵀ = -P):
         // B_a = B' + P C',  A_a = A' - B'P - (B'P)ᵀ - P C' P,  C_a = C'.
-        let r = &x.rot;
+        // Written out on scalars (about 190 products): the intermediates
+        // stay in registers and nothing is copied through memory.
+        let r = &x.rot.m;
         let p = &x.trans;
-        let a = self.a.rotate(r);
-        let b = r.mul_mat(&self.b).mul_mat_tr(r);
-        let c = self.c.rotate(r);
-        let pc = Mat3::cross_mul(p, &c.to_mat3());
-        let bp = b.mul_cross(p);
-        // P C' P is symmetric: row i is (P C')_i × p, and only its upper
-        // triangle is formed.
-        let (r0, r1, r2) = (pc.row(0).cross(p), pc.row(1).cross(p), pc.row(2).cross(p));
-        let pcp = Sym3::new(r0.x, r0.y, r0.z, r1.y, r1.z, r2.z);
-        Self {
-            a: a - bp.sym_sum() - pcp,
-            b: b + pc,
-            c,
+        let a = rotate_sym(&o.a, r);
+        let c = rotate_sym(&o.c, r);
+        let b = rotate_mat(&o.b.m, r);
+        // P C': column j of C' crossed by p, (p × c_j).
+        let cm = sym_rows(&c);
+        let pc = [
+            [
+                p.y * cm[2][0] - p.z * cm[1][0],
+                p.y * cm[2][1] - p.z * cm[1][1],
+                p.y * cm[2][2] - p.z * cm[1][2],
+            ],
+            [
+                p.z * cm[0][0] - p.x * cm[2][0],
+                p.z * cm[0][1] - p.x * cm[2][1],
+                p.z * cm[0][2] - p.x * cm[2][2],
+            ],
+            [
+                p.x * cm[1][0] - p.y * cm[0][0],
+                p.x * cm[1][1] - p.y * cm[0][1],
+                p.x * cm[1][2] - p.y * cm[0][2],
+            ],
+        ];
+        // B'P: row i is b_i × p.
+        let bp = [cross(&b[0], p), cross(&b[1], p), cross(&b[2], p)];
+        // P C' P is symmetric: row i is (P C')_i × p; its upper triangle.
+        let pcp0 = cross(&pc[0], p);
+        let pcp1y = pc[1][2] * p.x - pc[1][0] * p.z;
+        let pcp1z = pc[1][0] * p.y - pc[1][1] * p.x;
+        let pcp2z = pc[2][0] * p.y - pc[2][1] * p.x;
+        self.a.xx += a.xx - (bp[0][0] + bp[0][0]) - pcp0[0];
+        self.a.xy += a.xy - (bp[0][1] + bp[1][0]) - pcp0[1];
+        self.a.xz += a.xz - (bp[0][2] + bp[2][0]) - pcp0[2];
+        self.a.yy += a.yy - (bp[1][1] + bp[1][1]) - pcp1y;
+        self.a.yz += a.yz - (bp[1][2] + bp[2][1]) - pcp1z;
+        self.a.zz += a.zz - (bp[2][2] + bp[2][2]) - pcp2z;
+        for ((row, b), pc) in self.b.m.iter_mut().zip(&b).zip(&pc) {
+            row[0] += b[0] + pc[0];
+            row[1] += b[1] + pc[1];
+            row[2] += b[2] + pc[2];
         }
+        self.c += c;
     }
     #[inline]
     fn trace(&self) -> S {
