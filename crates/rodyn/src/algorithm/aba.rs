@@ -21,9 +21,7 @@ use crate::data::Data;
 use crate::error::{Error, Quantity, Result};
 use crate::joint::{JointModel, MAX_JOINT_NV};
 use crate::model::{check_finite, Model};
-use crate::space::{
-    ArticulatedInertia, BodyInertia, MotionVector, RigidTransform, Space, VectorOps,
-};
+use crate::space::{ArticulatedInertia, BodyInertia, MotionVector, RigidTransform, Space};
 use crate::Scalar;
 
 /// `D` below this fraction of `trace(Iᴬ)`, in units of the scalar's epsilon,
@@ -125,9 +123,8 @@ pub(crate) fn backward_pass<
         let mut p_a = data.pa[i];
         if nv == 1 {
             // The common case, without the loops over the joint's columns.
-            let mut u_col = [G::Force::<S>::ZERO];
-            joint.articulated_columns(i_a, &mut u_col);
-            let u_col = u_col[0];
+            joint.articulated_columns(i_a, &mut data.u_cols[iv..=iv]);
+            let u_col = data.u_cols[iv];
             let mut s_t = [S::ZERO];
             joint.project_force(&u_col, &mut s_t);
             // The armature adds to D = Sᵀ I^A S (Pinocchio's convention).
@@ -136,7 +133,6 @@ pub(crate) fn backward_pass<
             let d_inv = S::ONE / d;
             joint.project_force(&p_a, &mut s_t);
             let u = tau[iv] - s_t[0];
-            data.u_cols[iv] = u_col;
             data.d_inv[iv][0] = d_inv;
             data.u[iv] = u;
             if let Some(p) = t.parents[i] {

@@ -194,7 +194,7 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
             _ => placement.compose(&self.transform(q)),
         }
     }
-    #[inline]
+    #[inline(always)]
     fn motion(&self, qd: &[S]) -> Motion<S> {
         match self {
             Self::Revolute(j) => j.motion(qd[0]),
@@ -214,7 +214,7 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
             Self::Custom(c) => c.behaviour.subspace_column(k),
         }
     }
-    #[inline]
+    #[inline(always)]
     fn project_force(&self, f: &Force<S>, out: &mut [S]) {
         match self {
             Self::Revolute(j) => out[0] = j.project_force(f),
@@ -224,7 +224,7 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
             Self::Custom(c) => c.behaviour.project_force(f, out),
         }
     }
-    #[inline]
+    #[inline(always)]
     fn articulated_columns(&self, ia: &ArticulatedInertia6<S>, u: &mut [Force<S>]) {
         match self {
             Self::Revolute(j) => u[0] = j.articulated_column(ia),

@@ -138,17 +138,22 @@ impl<S: Scalar> Mat3<S> {
     #[inline]
     #[must_use]
     pub fn mul_axis_rotation(&self, k: usize, s: S, c: S) -> Self {
-        // Columns i and j span the plane of the rotation, in right-handed order.
-        let (i, j) = match k {
-            0 => (1, 2),
-            1 => (2, 0),
-            _ => (0, 1),
-        };
+        // Columns i and j span the plane of the rotation, in right-handed
+        // order; one arm per axis, so that the indices are constants.
+        match k {
+            0 => self.mul_plane_rotation::<1, 2>(s, c),
+            1 => self.mul_plane_rotation::<2, 0>(s, c),
+            _ => self.mul_plane_rotation::<0, 1>(s, c),
+        }
+    }
+    /// `self` with columns `I` and `J` turned by the angle of `(s, c)`.
+    #[inline(always)]
+    fn mul_plane_rotation<const I: usize, const J: usize>(&self, s: S, c: S) -> Self {
         let mut r = *self;
         for row in &mut r.m {
-            let (a, b) = (row[i], row[j]);
-            row[i] = a * c + b * s;
-            row[j] = b * c - a * s;
+            let (a, b) = (row[I], row[J]);
+            row[I] = a * c + b * s;
+            row[J] = b * c - a * s;
         }
         r
     }
