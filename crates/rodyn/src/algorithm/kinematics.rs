@@ -33,7 +33,7 @@ pub(crate) fn body_transform<
 }
 
 /// The joint velocity `v_J = S qd` of body `i`.
-#[inline]
+#[inline(always)]
 pub(crate) fn joint_velocity<
     S: Scalar,
     const NB: usize,
