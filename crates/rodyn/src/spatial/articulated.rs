@@ -158,11 +158,12 @@ impl<S: Scalar> ArticulatedInertia<S> for ArticulatedInertia6<S> {
         // B_a = B' + P C',  A_a = A' - B'P - (B'P)ᵀ - P C' P,  C_a = C'.
         // Written out on scalars (about 190 products): the intermediates
         // stay in registers and nothing is copied through memory.
+        // Block by block, each added to `self` as soon as it is complete,
+        // so that few intermediates are alive at once (fewer spills).
         let r = &x.rot.m;
         let p = &x.trans;
-        let a = rotate_sym(&o.a, r);
         let c = rotate_sym(&o.c, r);
-        let b = rotate_mat(&o.b.m, r);
+        self.c += c;
         // P C': column j of C' crossed by p, (p × c_j).
         let cm = sym_rows(&c);
         let pc = [
@@ -182,25 +183,32 @@ impl<S: Scalar> ArticulatedInertia<S> for ArticulatedInertia6<S> {
                 p.x * cm[1][2] - p.y * cm[0][2],
             ],
         ];
-        // B'P: row i is b_i × p.
-        let bp = [cross(&b[0], p), cross(&b[1], p), cross(&b[2], p)];
         // P C' P is symmetric: row i is (P C')_i × p; its upper triangle.
         let pcp0 = cross(&pc[0], p);
         let pcp1y = pc[1][2] * p.x - pc[1][0] * p.z;
         let pcp1z = pc[1][0] * p.y - pc[1][1] * p.x;
         let pcp2z = pc[2][0] * p.y - pc[2][1] * p.x;
-        self.a.xx += a.xx - (bp[0][0] + bp[0][0]) - pcp0[0];
-        self.a.xy += a.xy - (bp[0][1] + bp[1][0]) - pcp0[1];
-        self.a.xz += a.xz - (bp[0][2] + bp[2][0]) - pcp0[2];
-        self.a.yy += a.yy - (bp[1][1] + bp[1][1]) - pcp1y;
-        self.a.yz += a.yz - (bp[1][2] + bp[2][1]) - pcp1z;
-        self.a.zz += a.zz - (bp[2][2] + bp[2][2]) - pcp2z;
+        self.a.xx -= pcp0[0];
+        self.a.xy -= pcp0[1];
+        self.a.xz -= pcp0[2];
+        self.a.yy -= pcp1y;
+        self.a.yz -= pcp1z;
+        self.a.zz -= pcp2z;
+        let b = rotate_mat(&o.b.m, r);
         for ((row, b), pc) in self.b.m.iter_mut().zip(&b).zip(&pc) {
             row[0] += b[0] + pc[0];
             row[1] += b[1] + pc[1];
             row[2] += b[2] + pc[2];
         }
-        self.c += c;
+        // B'P: row i is b_i × p.
+        let bp = [cross(&b[0], p), cross(&b[1], p), cross(&b[2], p)];
+        self.a.xx -= bp[0][0] + bp[0][0];
+        self.a.xy -= bp[0][1] + bp[1][0];
+        self.a.xz -= bp[0][2] + bp[2][0];
+        self.a.yy -= bp[1][1] + bp[1][1];
+        self.a.yz -= bp[1][2] + bp[2][1];
+        self.a.zz -= bp[2][2] + bp[2][2];
+        self.a += rotate_sym(&o.a, r);
     }
     #[inline]
     fn trace(&self) -> S {
