@@ -15,13 +15,17 @@
 //! Pass 3 (root to leaves): `q̈ᵢ = D⁻¹ (u - Uᵀ a')`, `aᵢ = a' + S q̈ᵢ`, with
 //! `a₀ = -g`.
 
-use crate::algorithm::kinematics::{body_transform, check_state, joint_velocity};
+use crate::algorithm::kinematics::{
+    add_joint_motion, body_transform, check_state, joint_velocity_product,
+};
 use crate::algorithm::rnea::check_external;
 use crate::data::Data;
 use crate::error::{Error, Quantity, Result};
 use crate::joint::{JointModel, MAX_JOINT_NV};
 use crate::model::{check_finite, Model};
-use crate::space::{ArticulatedInertia, BodyInertia, MotionVector, RigidTransform, Space};
+use crate::space::{
+    ArticulatedInertia, BodyInertia, MotionVector, RigidTransform, Space, VectorOps,
+};
 use crate::Scalar;
 
 /// `D` below this fraction of `trace(Iᴬ)`, in units of the scalar's epsilon,
@@ -79,17 +83,17 @@ fn velocity_and_bias_pass<
 ) {
     for i in 0..NB {
         let li_m_i = body_transform(model, i, q);
-        let v_j = joint_velocity(model, i, v);
-        let v_i = match model.parent(i) {
-            Some(p) => li_m_i.act_inv_motion(&data.v[p]) + v_j,
-            None => v_j,
+        let v_parent = match model.parent(i) {
+            Some(p) => li_m_i.act_inv_motion(&data.v[p]),
+            None => G::Motion::<S>::ZERO,
         };
+        let v_i = add_joint_motion(model, i, &v_parent, v);
         let inertia = model.inertia(i);
         let mut p_a = v_i.cross_force(&inertia.mul_motion(&v_i));
         if let Some(f_ext) = f_ext {
             p_a -= f_ext[i];
         }
-        data.c[i] = v_i.cross_motion(&v_j);
+        data.c[i] = joint_velocity_product(model, i, &v_i, v);
         data.v[i] = v_i;
         data.li_m_i[i] = li_m_i;
         data.ia[i] = G::Articulated::<S>::from_rigid(inertia);
@@ -208,7 +212,7 @@ pub(crate) fn forward_acceleration_pass<
         if nv == 1 {
             let ddq = data.d_inv[iv][0] * (data.u[iv] - a_prime.dot(&data.u_cols[iv]));
             data.ddq[iv] = ddq;
-            data.a_gf[i] = a_prime + joint.motion(&[ddq]);
+            data.a_gf[i] = joint.add_motion(&a_prime, &[ddq]);
             continue;
         }
         for k in 0..nv {

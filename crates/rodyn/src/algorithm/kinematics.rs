@@ -9,7 +9,7 @@ use crate::data::Data;
 use crate::error::{Quantity, Result};
 use crate::joint::JointModel;
 use crate::model::{check_finite, Model};
-use crate::space::{MotionVector, RigidTransform, Space, VectorOps};
+use crate::space::{RigidTransform, Space, VectorOps};
 use crate::Scalar;
 
 /// Joint transform and placement of body `i`: `ˡⁱMᵢ = placement · jMi(q)`.
@@ -32,9 +32,10 @@ pub(crate) fn body_transform<
         .placed_transform(model.placement(i), &q[iq..iq + t.nq[i]])
 }
 
-/// The joint velocity `v_J = S qd` of body `i`.
+/// `m + S q̇ᵢ`: a motion plus the joint velocity of body `i` (`v` holds
+/// the rates of every joint). A coordinate-axis joint adds one component.
 #[inline(always)]
-pub(crate) fn joint_velocity<
+pub(crate) fn add_joint_motion<
     S: Scalar,
     const NB: usize,
     const NQ: usize,
@@ -43,11 +44,32 @@ pub(crate) fn joint_velocity<
 >(
     model: &Model<S, NB, NQ, NV, G>,
     i: usize,
+    m: &G::Motion<S>,
     v: &[S; NV],
 ) -> G::Motion<S> {
     let t = model.topology();
     let iv = t.idx_v[i];
-    model.joint(i).motion(&v[iv..iv + t.nv[i]])
+    model.joint(i).add_motion(m, &v[iv..iv + t.nv[i]])
+}
+
+/// `vᵢ × (S q̇ᵢ)`: the velocity-product acceleration `cᵢ` of body `i`'s
+/// joint, given the body's velocity `v_i` (`v` holds every joint's rate).
+#[inline(always)]
+pub(crate) fn joint_velocity_product<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    i: usize,
+    v_i: &G::Motion<S>,
+    v: &[S; NV],
+) -> G::Motion<S> {
+    let t = model.topology();
+    let iv = t.idx_v[i];
+    model.joint(i).cross_motion(v_i, &v[iv..iv + t.nv[i]])
 }
 
 /// Checks `q` (finite, unit quaternions) and `v` (finite).
@@ -163,7 +185,7 @@ pub fn forward_kinematics_acceleration<
             Some(p) => data.li_m_i[i].act_inv_motion(&data.a[p]),
             None => G::Motion::<S>::ZERO,
         };
-        data.a[i] = a_parent + joint_velocity(model, i, a) + data.c[i];
+        data.a[i] = add_joint_motion(model, i, &(a_parent + data.c[i]), a);
     }
     Ok(())
 }
@@ -190,12 +212,12 @@ pub(crate) fn velocity_pass<
 ) {
     for i in 0..NB {
         let li_m_i = body_transform(model, i, q);
-        let v_j = joint_velocity(model, i, v);
-        let v_i = match model.parent(i) {
-            Some(p) => li_m_i.act_inv_motion(&data.v[p]) + v_j,
-            None => v_j,
+        let v_parent = match model.parent(i) {
+            Some(p) => li_m_i.act_inv_motion(&data.v[p]),
+            None => G::Motion::<S>::ZERO,
         };
-        data.c[i] = v_i.cross_motion(&v_j);
+        let v_i = add_joint_motion(model, i, &v_parent, v);
+        data.c[i] = joint_velocity_product(model, i, &v_i, v);
         data.v[i] = v_i;
         data.li_m_i[i] = li_m_i;
     }

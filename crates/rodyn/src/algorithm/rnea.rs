@@ -5,7 +5,9 @@
 //! force `fᵢ = Iᵢ aᵢ + vᵢ ×* Iᵢ vᵢ - fᵢᵉˣᵗ`. Backward pass: `τᵢ = Sᵀ fᵢ`,
 //! `f_λ += ᵏX_ᵢ* fᵢ`.
 
-use crate::algorithm::kinematics::{body_transform, check_state, joint_velocity};
+use crate::algorithm::kinematics::{
+    add_joint_motion, body_transform, check_state, joint_velocity_product,
+};
 use crate::data::Data;
 use crate::error::{Quantity, Result};
 use crate::joint::JointModel;
@@ -75,14 +77,13 @@ fn forward_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
     let minus_g = -*model.gravity();
     for i in 0..NB {
         let li_m_i = body_transform(model, i, q);
-        let v_j = joint_velocity(model, i, v);
         let (v_parent, a_parent) = match model.parent(i) {
             Some(p) => (li_m_i.act_inv_motion(&data.v[p]), data.a_gf[p]),
             None => (G::Motion::<S>::ZERO, minus_g),
         };
-        let v_i = v_parent + v_j;
-        let c_i = v_i.cross_motion(&v_j);
-        let a_i = li_m_i.act_inv_motion(&a_parent) + joint_velocity(model, i, a) + c_i;
+        let v_i = add_joint_motion(model, i, &v_parent, v);
+        let c_i = joint_velocity_product(model, i, &v_i, v);
+        let a_i = add_joint_motion(model, i, &(li_m_i.act_inv_motion(&a_parent) + c_i), a);
         let inertia = model.inertia(i);
         let mut f_i = inertia.mul_motion(&a_i) + v_i.cross_force(&inertia.mul_motion(&v_i));
         if let Some(f_ext) = f_ext {

@@ -54,6 +54,30 @@ impl<S: Scalar> Axis<S> {
             Self::Unit(a) => a.dot(v),
         }
     }
+    /// `v + s axis`: one component for a coordinate axis.
+    #[inline]
+    #[must_use]
+    pub fn add_scaled(&self, v: &Vec3<S>, s: S) -> Vec3<S> {
+        let mut out = *v;
+        match self {
+            Self::X => out.x += s,
+            Self::Y => out.y += s,
+            Self::Z => out.z += s,
+            Self::Unit(a) => out += *a * s,
+        }
+        out
+    }
+    /// `w × (s axis)`: two products for a coordinate axis.
+    #[inline]
+    #[must_use]
+    pub fn cross_scaled(&self, w: &Vec3<S>, s: S) -> Vec3<S> {
+        match self {
+            Self::X => Vec3::new(S::ZERO, w.z * s, -(w.y * s)),
+            Self::Y => Vec3::new(-(w.z * s), S::ZERO, w.x * s),
+            Self::Z => Vec3::new(w.y * s, -(w.x * s), S::ZERO),
+            Self::Unit(a) => w.cross(&(*a * s)),
+        }
+    }
     /// Converts the scalar type.
     #[must_use]
     pub fn cast<T: Scalar>(&self) -> Axis<T> {

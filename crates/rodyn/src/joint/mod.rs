@@ -70,6 +70,18 @@ pub trait JointModel<S: Scalar, G: Space>: Copy + Debug {
     }
     /// The joint velocity `S qd`.
     fn motion(&self, qd: &[S]) -> G::Motion<S>;
+    /// `m + S qd`. Coordinate-axis joints override it to touch one component.
+    #[inline]
+    fn add_motion(&self, m: &G::Motion<S>, qd: &[S]) -> G::Motion<S> {
+        *m + self.motion(qd)
+    }
+    /// `v × (S qd)`, the velocity-product acceleration of a joint moving at
+    /// `qd` in a body moving at `v`. Coordinate-axis joints override it.
+    #[inline]
+    fn cross_motion(&self, v: &G::Motion<S>, qd: &[S]) -> G::Motion<S> {
+        use crate::space::MotionVector;
+        v.cross_motion(&self.motion(qd))
+    }
     /// Column `k` of the motion subspace `S`.
     fn subspace_column(&self, k: usize) -> G::Motion<S>;
     /// The generalised force `Sᵀ f`, written to `out[..nv]`.
@@ -202,6 +214,25 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
             Self::Fixed => crate::space::VectorOps::ZERO,
             Self::FreeFlyer(j) => j.motion(qd),
             Self::Custom(c) => c.behaviour.motion(qd),
+        }
+    }
+    #[inline(always)]
+    fn add_motion(&self, m: &Motion<S>, qd: &[S]) -> Motion<S> {
+        match self {
+            Self::Revolute(j) => j.add_motion(m, qd[0]),
+            Self::Prismatic(j) => j.add_motion(m, qd[0]),
+            Self::Fixed => *m,
+            _ => *m + self.motion(qd),
+        }
+    }
+    #[inline(always)]
+    fn cross_motion(&self, v: &Motion<S>, qd: &[S]) -> Motion<S> {
+        use crate::space::MotionVector;
+        match self {
+            Self::Revolute(j) => j.cross_motion(v, qd[0]),
+            Self::Prismatic(j) => j.cross_motion(v, qd[0]),
+            Self::Fixed => crate::space::VectorOps::ZERO,
+            _ => v.cross_motion(&self.motion(qd)),
         }
     }
     #[inline]

@@ -26,6 +26,18 @@ impl<S: Scalar> Prismatic<S> {
     pub fn motion(&self, qd: S) -> Motion<S> {
         Motion::new(Vec3::ZERO, self.axis.vector() * qd)
     }
+    /// `m + S qd`.
+    #[inline]
+    #[must_use]
+    pub fn add_motion(&self, m: &Motion<S>, qd: S) -> Motion<S> {
+        Motion::new(m.ang, self.axis.add_scaled(&m.lin, qd))
+    }
+    /// `v × (S qd) = [0; ω × a qd]`.
+    #[inline]
+    #[must_use]
+    pub fn cross_motion(&self, v: &Motion<S>, qd: S) -> Motion<S> {
+        Motion::new(Vec3::ZERO, self.axis.cross_scaled(&v.ang, qd))
+    }
     /// `Sᵀ f`: the force along the axis.
     #[inline]
     #[must_use]

@@ -47,6 +47,21 @@ impl<S: Scalar> Revolute<S> {
     pub fn motion(&self, qd: S) -> Motion<S> {
         Motion::new(self.axis.vector() * qd, Vec3::ZERO)
     }
+    /// `m + S qd`.
+    #[inline]
+    #[must_use]
+    pub fn add_motion(&self, m: &Motion<S>, qd: S) -> Motion<S> {
+        Motion::new(self.axis.add_scaled(&m.ang, qd), m.lin)
+    }
+    /// `v × (S qd) = [ω × a qd; v_lin × a qd]`.
+    #[inline]
+    #[must_use]
+    pub fn cross_motion(&self, v: &Motion<S>, qd: S) -> Motion<S> {
+        Motion::new(
+            self.axis.cross_scaled(&v.ang, qd),
+            self.axis.cross_scaled(&v.lin, qd),
+        )
+    }
     /// `Sᵀ f`: the moment about the axis.
     #[inline]
     #[must_use]
