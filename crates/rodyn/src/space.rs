@@ -104,6 +104,17 @@ pub trait BodyInertia<S: Scalar>: Copy + Debug {
     fn com(&self) -> <Self::Transform as RigidTransform<S>>::Point;
     /// Momentum `I v`.
     fn mul_motion(&self, v: &Self::Motion) -> Self::Force;
+    /// The net force `I a + v ×* I v` that gives the body the acceleration
+    /// `a` at the velocity `v` (the Newton-Euler equations).
+    #[inline]
+    fn net_force(&self, v: &Self::Motion, a: &Self::Motion) -> Self::Force {
+        self.mul_motion(a) + v.cross_force(&self.mul_motion(v))
+    }
+    /// The velocity-product force `v ×* I v` (the net force at zero acceleration).
+    #[inline]
+    fn velocity_product_force(&self, v: &Self::Motion) -> Self::Force {
+        v.cross_force(&self.mul_motion(v))
+    }
     /// The same inertia expressed in frame a, given `aMb` with `self` in b.
     fn act(&self, x: &Self::Transform) -> Self;
     /// The inertia of the two bodies rigidly joined (both in the same frame).

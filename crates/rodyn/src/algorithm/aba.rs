@@ -89,7 +89,7 @@ fn velocity_and_bias_pass<
         };
         let v_i = add_joint_motion(model, i, &v_parent, v);
         let inertia = model.inertia(i);
-        let mut p_a = v_i.cross_force(&inertia.mul_motion(&v_i));
+        let mut p_a = inertia.velocity_product_force(&v_i);
         if let Some(f_ext) = f_ext {
             p_a -= f_ext[i];
         }

@@ -12,7 +12,7 @@ use crate::data::Data;
 use crate::error::{Quantity, Result};
 use crate::joint::JointModel;
 use crate::model::{check_finite, Model};
-use crate::space::{BodyInertia, MotionVector, RigidTransform, Space, VectorOps};
+use crate::space::{BodyInertia, RigidTransform, Space, VectorOps};
 use crate::Scalar;
 
 /// Checks that external forces are finite.
@@ -85,7 +85,7 @@ fn forward_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
         let c_i = joint_velocity_product(model, i, &v_i, v);
         let a_i = add_joint_motion(model, i, &(li_m_i.act_inv_motion(&a_parent) + c_i), a);
         let inertia = model.inertia(i);
-        let mut f_i = inertia.mul_motion(&a_i) + v_i.cross_force(&inertia.mul_motion(&v_i));
+        let mut f_i = inertia.net_force(&v_i, &a_i);
         if let Some(f_ext) = f_ext {
             f_i -= f_ext[i];
         }
