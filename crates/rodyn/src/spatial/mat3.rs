@@ -149,13 +149,16 @@ impl<S: Scalar> Mat3<S> {
     /// `self` with columns `I` and `J` turned by the angle of `(s, c)`.
     #[inline(always)]
     fn mul_plane_rotation<const I: usize, const J: usize>(&self, s: S, c: S) -> Self {
-        let mut r = *self;
-        for row in &mut r.m {
-            let (a, b) = (row[I], row[J]);
-            row[I] = a * c + b * s;
-            row[J] = b * c - a * s;
-        }
-        r
+        // Row by row, written out: a loop here is not unrolled at the
+        // firmware's size-optimised level and goes through a stack copy.
+        let m = &self.m;
+        let turn = |row: &[S; 3]| {
+            let mut out = *row;
+            out[I] = row[I] * c + row[J] * s;
+            out[J] = row[J] * c - row[I] * s;
+            out
+        };
+        Self::from_rows([turn(&m[0]), turn(&m[1]), turn(&m[2])])
     }
     /// `selfᵀ * o`.
     #[must_use]
