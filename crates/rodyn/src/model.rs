@@ -29,6 +29,10 @@ pub struct Model<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G
     inertias: [G::Inertia<S>; NB],
     gravity: G::Motion<S>,
     armature: [S; NV],
+    /// `false` when no joint restricts a finite configuration (no
+    /// quaternion, no custom rule), so that a finite `q` needs no further
+    /// check. Set by the constructors that know their joints at compile time.
+    constrained_configuration: bool,
 }
 
 /// Standard gravity, 9.80665 m/s².
@@ -68,10 +72,13 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, 
     ) -> Self {
         let mut nq = [0; NB];
         let mut nv = [0; NB];
+        let mut constrained_configuration = false;
         let mut i = 0;
         while i < NB {
             nq[i] = joints[i].const_nq();
             nv[i] = joints[i].const_nv();
+            constrained_configuration |=
+                matches!(joints[i], Joint::FreeFlyer(_) | Joint::Custom(_));
             i += 1;
         }
         Self {
@@ -81,6 +88,7 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, 
             inertias,
             gravity,
             armature: [S::ZERO; NV],
+            constrained_configuration,
         }
     }
 }
@@ -105,7 +113,16 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
             inertias,
             gravity,
             armature: [S::ZERO; NV],
+            // Trait methods cannot run in a `const fn`: ask every joint.
+            constrained_configuration: true,
         }
+    }
+
+    /// Declares that no joint restricts a finite configuration, for the
+    /// geometry constructors that know it.
+    pub(crate) const fn with_unconstrained_configuration(mut self) -> Self {
+        self.constrained_configuration = false;
+        self
     }
 
     /// Number of bodies.
@@ -270,6 +287,7 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
             inertias: core::array::from_fn(|i| G::cast_inertia(&self.inertias[i])),
             gravity: G::cast_motion(&self.gravity),
             armature: core::array::from_fn(|k| T::from_f64(self.armature[k].to_f64())),
+            constrained_configuration: self.constrained_configuration,
         })
     }
 
@@ -285,6 +303,9 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
         // Cortex-M4. A non-finite `q` takes the joint-by-joint walk below,
         // which names the joint exactly as before.
         if q.iter().all(|x| x.is_finite()) {
+            if !self.constrained_configuration {
+                return Ok(());
+            }
             for (i, joint) in self.joints.iter().enumerate() {
                 if joint.constrains_configuration() {
                     let iq = self.topology.idx_q[i];

@@ -33,8 +33,9 @@ pub(crate) fn check_external<S: Scalar, F: VectorOps<S>>(f_ext: Option<&[F]>) ->
 ///
 /// Inputs: `q` (NQ), `v` and `a` (NV), and optionally one external force per
 /// body, acting on that body and expressed in its own frame (Pinocchio's
-/// `fext` convention). Returns `data.tau`. Leaves valid: `li_m_i`, `v`, `c`,
-/// `a_gf` (acceleration minus gravity), `f`, `tau`. `o_m_i` is not written
+/// `fext` convention). Returns `data.tau`. Leaves valid: `li_m_i`, `v`,
+/// `a_gf` (acceleration minus gravity), `f`, `tau`. `c` and `o_m_i` are not
+/// written
 /// (run [`forward_kinematics`](crate::algorithm::kinematics::forward_kinematics)
 /// for body poses).
 ///
@@ -52,14 +53,11 @@ pub fn rnea<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
     check_finite(a, Quantity::Acceleration)?;
     check_external(f_ext.map(|f| &f[..]))?;
     forward_pass(model, data, q, v, a, f_ext);
-    backward_force_pass(model, data);
-    for ((tau, armature), a) in data.tau.iter_mut().zip(model.armature()).zip(a) {
-        *tau += *armature * *a;
-    }
+    backward_force_pass(model, data, a);
     Ok(&data.tau)
 }
 
-/// The forward pass: `ˡⁱMᵢ`, `vᵢ`, `cᵢ`, `aᵢ - g` and `fᵢ` for every body.
+/// The forward pass: `ˡⁱMᵢ`, `vᵢ`, `aᵢ - g` and `fᵢ` for every body.
 ///
 /// One loop rather than the shared [`velocity_pass`](crate::algorithm::kinematics)
 /// and a second one for forces: each body's transform, velocity and `c`
@@ -91,30 +89,28 @@ fn forward_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
         }
         data.li_m_i[i] = li_m_i;
         data.v[i] = v_i;
-        data.c[i] = c_i;
         data.a_gf[i] = a_i;
         data.f[i] = f_i;
     }
 }
 
-/// `τᵢ = Sᵀ fᵢ` and `f_λ += ˡⁱXᵢ* fᵢ`, leaves to root.
+/// `τᵢ = Sᵀ fᵢ + armatureᵢ q̈ᵢ` and `f_λ += ˡⁱXᵢ* fᵢ`, leaves to root.
 #[inline]
-pub(crate) fn backward_force_pass<
-    S: Scalar,
-    const NB: usize,
-    const NQ: usize,
-    const NV: usize,
-    G: Space,
->(
+fn backward_force_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     model: &Model<S, NB, NQ, NV, G>,
     data: &mut Data<S, NB, NV, G>,
+    a: &[S; NV],
 ) {
     let t = model.topology();
+    let armature = model.armature();
     for i in (0..NB).rev() {
-        let iv = t.idx_v[i];
-        model
-            .joint(i)
-            .project_force(&data.f[i], &mut data.tau[iv..iv + t.nv[i]]);
+        let (iv, nv) = (t.idx_v[i], t.nv[i]);
+        let tau = &mut data.tau[iv..iv + nv];
+        model.joint(i).project_force(&data.f[i], tau);
+        // Rotor inertias act on the joint coordinates alone.
+        for ((tau, armature), a) in tau.iter_mut().zip(&armature[iv..]).zip(&a[iv..]) {
+            *tau += *armature * *a;
+        }
         if let Some(p) = model.parent(i) {
             let f_p = data.li_m_i[i].act_force(&data.f[i]);
             data.f[p] += f_p;

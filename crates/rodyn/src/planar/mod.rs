@@ -113,6 +113,7 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, 
             nv[i] = joints[i].const_nv();
             i += 1;
         }
+        // Planar joints are angles and displacements: any finite q is valid.
         Self::from_parts(
             Topology::new(parents, nq, nv, NQ),
             joints,
@@ -120,5 +121,6 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, 
             inertias,
             gravity,
         )
+        .with_unconstrained_configuration()
     }
 }
