@@ -213,4 +213,35 @@ pub trait Space: Copy + Debug + PartialEq + 'static {
     fn validate_transform<S: Scalar>(x: &Self::Transform<S>) -> Result<(), ModelProblem>;
     /// Checks a joint's own parameters (unit axes).
     fn validate_joint<S: Scalar>(j: &Self::Joint<S>) -> Result<(), ModelProblem>;
+
+    // Aligned frames, as CRBA uses them: frames that differ by a translation
+    // alone. Each function reads only the rotation `R` or only the
+    // translation `t` of its transform.
+
+    /// `(R_x R_y, R_x t_y)`: `x * y` with the translation of `x` dropped.
+    fn rotate_transform<S: Scalar>(
+        x: &Self::Transform<S>,
+        y: &Self::Transform<S>,
+    ) -> Self::Transform<S>;
+    /// The inertia `i` seen through the rotation of `x` alone (`R i Rᵀ`).
+    fn rotate_inertia<S: Scalar>(i: &Self::Inertia<S>, x: &Self::Transform<S>) -> Self::Inertia<S>;
+    /// Column `k` of joint `j`'s motion subspace, rotated by the rotation of
+    /// `x` alone (`R S_k`).
+    fn rotate_subspace_column<S: Scalar>(
+        j: &Self::Joint<S>,
+        k: usize,
+        x: &Self::Transform<S>,
+    ) -> Self::Motion<S>;
+    /// The force `f` moved through the translation of `x` alone: `n + t × f`.
+    /// With `t` the offset of frame b's origin from frame a's, both with the
+    /// same axes, it re-expresses a force about b's origin about a's.
+    fn translate_force<S: Scalar>(f: &Self::Force<S>, x: &Self::Transform<S>) -> Self::Force<S>;
+    /// `acc` plus the inertia `i` moved through the translation of `x`
+    /// alone (its centre of mass shifts by `t`): the composite of the two
+    /// bodies, in `acc`'s frame.
+    fn add_translated_inertia<S: Scalar>(
+        acc: &mut Self::Inertia<S>,
+        i: &Self::Inertia<S>,
+        x: &Self::Transform<S>,
+    );
 }

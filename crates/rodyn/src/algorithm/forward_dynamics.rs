@@ -18,7 +18,8 @@
 //! ABA is O(n). Which is faster depends on the model and the scalar type:
 //! the workspace README charts the crossover.
 
-use crate::algorithm::{aba::aba, crba::crba, ltdl, rnea::nonlinear_effects};
+use crate::algorithm::kinematics::check_state;
+use crate::algorithm::{aba::aba, crba, ltdl, rnea::nonlinear_effects};
 use crate::data::Data;
 use crate::error::{Quantity, Result};
 use crate::model::{check_finite, Model};
@@ -88,7 +89,9 @@ impl ForwardDynamics for Aba {
 impl ForwardDynamics for Crba {
     const NAME: &'static str = "CRBA";
     /// Leaves valid: everything [`rnea`](crate::algorithm::rnea::rnea) and
-    /// [`crba`] leave, `h` (bias forces), `ltdl`, `ddq`.
+    /// [`crba`](crba::crba) leave, except the upper triangle of
+    /// `mass_matrix` (zero: only the lower one is formed), and `h` (bias
+    /// forces), `ltdl`, `ddq`.
     fn forward_dynamics<
         'd,
         S: Scalar,
@@ -106,7 +109,9 @@ impl ForwardDynamics for Crba {
     ) -> Result<&'d [S; NV]> {
         check_finite(tau, Quantity::Torque)?;
         data.h = *nonlinear_effects(model, data, q, v, f_ext)?;
-        crba(model, data, q)?;
+        check_state(model, q, None)?;
+        // The factorisation reads the lower triangle only: no mirroring.
+        crba::crba_lower(model, data, q);
         ltdl::ltdl_factor(model, data)?;
         let mut rhs = [S::ZERO; NV];
         for (k, r) in rhs.iter_mut().enumerate() {

@@ -89,6 +89,51 @@ impl Space for Planar {
             _ => Ok(()),
         }
     }
+    #[inline(always)]
+    fn rotate_transform<S: Scalar>(
+        x: &PlanarTransform<S>,
+        y: &PlanarTransform<S>,
+    ) -> PlanarTransform<S> {
+        PlanarTransform::from_cos_sin(
+            x.cos * y.cos - x.sin * y.sin,
+            x.sin * y.cos + x.cos * y.sin,
+            x.rotate(&y.trans),
+        )
+    }
+    #[inline(always)]
+    fn rotate_inertia<S: Scalar>(i: &PlanarInertia<S>, x: &PlanarTransform<S>) -> PlanarInertia<S> {
+        PlanarInertia::new(i.mass, x.rotate(&i.com), i.izz)
+    }
+    #[inline(always)]
+    fn rotate_subspace_column<S: Scalar>(
+        j: &PlanarJoint<S>,
+        k: usize,
+        x: &PlanarTransform<S>,
+    ) -> PlanarMotion<S> {
+        use crate::joint::JointModel;
+        // Rotations about z leave the angular component alone.
+        let s = j.subspace_column(k);
+        PlanarMotion::new(s.ang, x.rotate(&s.lin))
+    }
+    #[inline(always)]
+    fn translate_force<S: Scalar>(f: &PlanarForce<S>, x: &PlanarTransform<S>) -> PlanarForce<S> {
+        PlanarForce::new(f.ang + x.trans.cross(&f.lin), f.lin)
+    }
+    #[inline(always)]
+    fn add_translated_inertia<S: Scalar>(
+        acc: &mut PlanarInertia<S>,
+        i: &PlanarInertia<S>,
+        x: &PlanarTransform<S>,
+    ) {
+        // As `PlanarInertia::combine`, with `i`'s centre of mass moved by `t`.
+        let com_i = i.com + x.trans;
+        let mass = acc.mass + i.mass;
+        let inv = S::ONE / mass.max(S::from_f64(S::EPSILON));
+        let d = acc.com - com_i;
+        acc.izz = acc.izz + i.izz + acc.mass * i.mass * inv * d.norm_squared();
+        acc.com = (acc.com * acc.mass + com_i * i.mass) * inv;
+        acc.mass = mass;
+    }
 }
 
 impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, NQ, NV, Planar> {
