@@ -144,26 +144,44 @@ impl Scalar for f32 {
 
 /// `f32` square root: the FPU instruction on Cortex-M4F/M7, never libm's
 /// bit-by-bit software loop (hundreds of instructions per call on the MCU).
+///
+/// The test is the hard-float ABI (`target_abi = "eabihf"`): every such Arm
+/// target has a single-precision VSQRT. The FPU's `target_feature` names are
+/// not visible to `cfg` on stable Rust, and inline `asm!` cannot name S
+/// registers on a single-precision FPU, so the instruction sits in a
+/// two-instruction function: the hard-float ABI passes and returns the value
+/// in `s0`.
 #[inline]
 fn sqrt_f32(x: f32) -> f32 {
-    #[cfg(all(not(feature = "std"), target_arch = "arm", target_feature = "vfp2"))]
+    #[cfg(all(not(feature = "std"), target_arch = "arm", target_abi = "eabihf"))]
     {
-        let root: f32;
-        // SAFETY: VSQRT.F32 reads one S register and writes another; it has no
-        // memory or flag side effects. Measured reason: libm's sqrtf is a
-        // software loop, VSQRT is 14 cycles (see the firmware cost probe).
-        unsafe {
-            core::arch::asm!(
-                "vsqrt.f32 {r}, {x}",
-                r = lateout(sreg) root,
-                x = in(sreg) x,
-                options(pure, nomem, nostack, preserves_flags)
-            );
-        }
-        root
+        // SAFETY: `rodyn_vsqrt_f32` (below) reads s0, writes s0 and returns;
+        // it touches no memory and follows the AAPCS-VFP calling convention.
+        unsafe { rodyn_vsqrt_f32(x) }
     }
-    #[cfg(not(all(not(feature = "std"), target_arch = "arm", target_feature = "vfp2")))]
+    #[cfg(not(all(not(feature = "std"), target_arch = "arm", target_abi = "eabihf")))]
     {
         float_fn!(sqrt, libm::sqrtf, x)
     }
 }
+
+#[cfg(all(not(feature = "std"), target_arch = "arm", target_abi = "eabihf"))]
+unsafe extern "C" {
+    /// VSQRT.F32 on s0 (defined in the `global_asm!` below).
+    fn rodyn_vsqrt_f32(x: f32) -> f32;
+}
+
+#[cfg(all(not(feature = "std"), target_arch = "arm", target_abi = "eabihf"))]
+core::arch::global_asm!(
+    ".section .text.rodyn_vsqrt_f32,\"ax\",%progbits",
+    ".globl rodyn_vsqrt_f32",
+    ".type rodyn_vsqrt_f32,%function",
+    ".thumb_func",
+    // The assembler is not told the target's FPU; the M4F's is named here
+    // (VSQRT.F32 has the same encoding on every VFP unit).
+    ".fpu fpv4-sp-d16",
+    "rodyn_vsqrt_f32:",
+    "vsqrt.f32 s0, s0",
+    "bx lr",
+    ".size rodyn_vsqrt_f32, . - rodyn_vsqrt_f32",
+);
