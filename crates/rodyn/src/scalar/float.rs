@@ -39,14 +39,8 @@ impl Scalar for f64 {
     }
     #[inline]
     fn sin_cos(self) -> (Self, Self) {
-        #[cfg(feature = "std")]
-        {
-            self.sin_cos()
-        }
-        #[cfg(all(not(feature = "std"), feature = "libm"))]
-        {
-            libm::sincos(self)
-        }
+        // One reduction for both, with or without std (see sin_cos_f64).
+        super::sin_cos_f64::sin_cos(self)
     }
     #[inline]
     fn atan2(self, x: Self) -> Self {

@@ -15,6 +15,7 @@ mod dual;
 mod float;
 #[cfg(any(feature = "libm", test))]
 mod sin_cos_f32;
+mod sin_cos_f64;
 
 pub use dual::Dual;
 
