@@ -157,6 +157,16 @@ pub trait ArticulatedInertia<S: Scalar>: Copy + Debug {
     fn add_act(&mut self, o: &Self, x: &Self::Transform) {
         self.add_assign(&o.act(x));
     }
+    /// [`add_act`](Self::add_act) for an `o` from which a one-DoF joint was
+    /// just projected out without armature (`o S = 0`): `revolute_axis` is
+    /// `Some(k)` for a revolute joint about coordinate axis k, whose
+    /// angular row and column k of `o` then vanish, and a geometry may skip
+    /// them. The default ignores the hint.
+    #[inline]
+    fn add_act_projected(&mut self, o: &Self, x: &Self::Transform, revolute_axis: Option<usize>) {
+        let _ = revolute_axis;
+        self.add_act(o, x);
+    }
     /// The trace, a scale for the positivity tests of ABA.
     fn trace(&self) -> S;
 }

@@ -143,7 +143,14 @@ pub(crate) fn backward_pass<
                 // I^a = I^A - U D⁻¹ Uᵀ, p^a = p^A + I^a c + U D⁻¹ u.
                 i_a.sub_outer(&u_col, d_inv);
                 p_a += u_col * (d_inv * u) + i_a.mul_motion(&data.c[i]);
-                ancestors[p].add_act(i_a, &data.li_m_i[i]);
+                // Without armature, Iᵃ S = 0 and a coordinate-axis revolute
+                // joint's row and column of Iᵃ are skipped.
+                let axis = if model.armature()[iv] == S::ZERO {
+                    joint.revolute_axis_index()
+                } else {
+                    None
+                };
+                ancestors[p].add_act_projected(i_a, &data.li_m_i[i], axis);
                 data.pa[p] += data.li_m_i[i].act_force(&p_a);
             }
             continue;

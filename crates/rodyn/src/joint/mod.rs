@@ -84,6 +84,13 @@ pub trait JointModel<S: Scalar, G: Space>: Copy + Debug {
     }
     /// Column `k` of the motion subspace `S`.
     fn subspace_column(&self, k: usize) -> G::Motion<S>;
+    /// `Some(k)` for a revolute joint about coordinate axis k (`S = eₖ`,
+    /// angular): a hint that lets ABA skip the entries its projection
+    /// zeroes. The default, `None`, never skips.
+    #[inline]
+    fn revolute_axis_index(&self) -> Option<usize> {
+        None
+    }
     /// The generalised force `Sᵀ f`, written to `out[..nv]`.
     fn project_force(&self, f: &G::Force<S>, out: &mut [S]);
     /// The columns of `U = I^A S`, written to `u[..nv]`.
@@ -214,6 +221,13 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
             Self::Fixed => crate::space::VectorOps::ZERO,
             Self::FreeFlyer(j) => j.motion(qd),
             Self::Custom(c) => c.behaviour.motion(qd),
+        }
+    }
+    #[inline]
+    fn revolute_axis_index(&self) -> Option<usize> {
+        match self {
+            Self::Revolute(j) => j.axis.index(),
+            _ => None,
         }
     }
     #[inline(always)]
