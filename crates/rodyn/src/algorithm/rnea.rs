@@ -108,8 +108,12 @@ fn backward_force_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: us
         let tau = &mut data.tau[iv..iv + nv];
         model.joint(i).project_force(&data.f[i], tau);
         // Rotor inertias act on the joint coordinates alone.
-        for ((tau, armature), a) in tau.iter_mut().zip(&armature[iv..]).zip(&a[iv..]) {
-            *tau += *armature * *a;
+        if nv == 1 {
+            tau[0] += armature[iv] * a[iv];
+        } else {
+            for ((tau, armature), a) in tau.iter_mut().zip(&armature[iv..]).zip(&a[iv..]) {
+                *tau += *armature * *a;
+            }
         }
         if let Some(p) = model.parent(i) {
             let f_p = data.li_m_i[i].act_force(&data.f[i]);
