@@ -147,6 +147,24 @@ pub trait ArticulatedInertia<S: Scalar>: Copy + Debug {
     fn add_assign(&mut self, o: &Self);
     /// `self -= s a aᵀ`.
     fn sub_outer(&mut self, a: &Self::Force, s: S);
+    /// Projects a one-DoF joint out of `self` (`self -= d⁻¹ U Uᵀ`, `U` the
+    /// joint's column `u = self S`) and returns `self m` with the projected
+    /// inertia. `revolute_axis` is `Some(k)` for a revolute joint about
+    /// coordinate axis k without armature: the projection then zeroes the
+    /// angular row and column k exactly, and a geometry may set them to
+    /// zero rather than compute rounding residue.
+    #[inline]
+    fn project_mul_motion(
+        &mut self,
+        u: &Self::Force,
+        d_inv: S,
+        m: &Self::Motion,
+        revolute_axis: Option<usize>,
+    ) -> Self::Force {
+        let _ = revolute_axis;
+        self.sub_outer(u, d_inv);
+        self.mul_motion(m)
+    }
     /// `self -= s (a bᵀ + b aᵀ)`.
     fn sub_outer_sym(&mut self, a: &Self::Force, b: &Self::Force, s: S);
     /// `ᵃX_b* self ᵇX_a`: the same inertia seen from frame a, given `aMb`.

@@ -140,16 +140,16 @@ pub(crate) fn backward_pass<
             data.d_inv[iv][0] = d_inv;
             data.u[iv] = u;
             if let Some(p) = t.parents[i] {
-                // I^a = I^A - U D⁻¹ Uᵀ, p^a = p^A + I^a c + U D⁻¹ u.
-                i_a.sub_outer(&u_col, d_inv);
-                p_a += u_col * (d_inv * u) + i_a.mul_motion(&data.c[i]);
-                // Without armature, Iᵃ S = 0 and a coordinate-axis revolute
-                // joint's row and column of Iᵃ are skipped.
+                // Without armature, Iᵃ S = 0: a coordinate-axis revolute
+                // joint's row and column of Iᵃ are zero and skipped.
                 let axis = if model.armature()[iv] == S::ZERO {
                     joint.revolute_axis_index()
                 } else {
                     None
                 };
+                // I^a = I^A - U D⁻¹ Uᵀ, p^a = p^A + I^a c + U D⁻¹ u.
+                let ia_c = i_a.project_mul_motion(&u_col, d_inv, &data.c[i], axis);
+                p_a += u_col * (d_inv * u) + ia_c;
                 ancestors[p].add_act_projected(i_a, &data.li_m_i[i], axis);
                 data.pa[p] += data.li_m_i[i].act_force(&p_a);
             }

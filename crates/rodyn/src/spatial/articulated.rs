@@ -201,6 +201,65 @@ impl<S: Scalar> ArticulatedInertia6<S> {
         self.add_rotated_shifted(o, x, rotated_b, rotated_a);
     }
 
+    /// [`project_mul_motion`](ArticulatedInertia::project_mul_motion) for a
+    /// revolute joint about axis K, normal to the plane of I and J, without
+    /// armature: `u = (A eₖ, Bᵀ eₖ)`, and the projection leaves the angular
+    /// row and column K of `A` and the row K of `B` zero (set exactly), so
+    /// only the other 15 entries are updated and enter the product.
+    #[inline(always)]
+    fn project_plane<const I: usize, const J: usize>(
+        &mut self,
+        u: &Force<S>,
+        d_inv: S,
+        m: &Motion<S>,
+    ) -> Force<S> {
+        let k = 3 - I - J;
+        let (ua, ul) = (u.ang.to_array(), u.lin.to_array());
+        let (w, v) = (m.ang.to_array(), m.lin.to_array());
+        let (sa_i, sa_j) = (ua[I] * d_inv, ua[J] * d_inv);
+        // A: the I-J block; row and column K zero.
+        let a_ii = self.a.get(I, I) - sa_i * ua[I];
+        let a_ij = self.a.get(I, J) - sa_i * ua[J];
+        let a_jj = self.a.get(J, J) - sa_j * ua[J];
+        *self.a.get_mut(I, I) = a_ii;
+        *self.a.get_mut(I, J) = a_ij;
+        *self.a.get_mut(J, J) = a_jj;
+        *self.a.get_mut(k, k) = S::ZERO;
+        *self.a.get_mut(k, I) = S::ZERO;
+        *self.a.get_mut(k, J) = S::ZERO;
+        // B: rows I and J; row K zero. Written out: at opt-level "s" a
+        // three-step loop is not unrolled.
+        let b = &mut self.b.m;
+        b[I] = [
+            b[I][0] - sa_i * ul[0],
+            b[I][1] - sa_i * ul[1],
+            b[I][2] - sa_i * ul[2],
+        ];
+        b[J] = [
+            b[J][0] - sa_j * ul[0],
+            b[J][1] - sa_j * ul[1],
+            b[J][2] - sa_j * ul[2],
+        ];
+        b[k] = [S::ZERO; 3];
+        // C: every entry.
+        let sl = [ul[0] * d_inv, ul[1] * d_inv, ul[2] * d_inv];
+        let c = &mut self.c;
+        c.xx -= sl[0] * ul[0];
+        c.xy -= sl[0] * ul[1];
+        c.xz -= sl[0] * ul[2];
+        c.yy -= sl[1] * ul[1];
+        c.yz -= sl[1] * ul[2];
+        c.zz -= sl[2] * ul[2];
+        // The product, skipping the zero row and column.
+        let bv = |r: usize| b[r][0] * v[0] + b[r][1] * v[1] + b[r][2] * v[2];
+        let mut ang = [S::ZERO; 3];
+        ang[I] = a_ii * w[I] + a_ij * w[J] + bv(I);
+        ang[J] = a_ij * w[I] + a_jj * w[J] + bv(J);
+        let cm = sym_rows(c);
+        let lin = |q: usize| b[I][q] * w[I] + b[J][q] * w[J] + dot(&cm[q], &v);
+        Force::new(Vec3::from_array(ang), Vec3::new(lin(0), lin(1), lin(2)))
+    }
+
     /// Entry (i, j) of the 6x6 matrix, angular rows and columns first.
     #[must_use]
     pub fn get(&self, i: usize, j: usize) -> S {
@@ -224,10 +283,22 @@ impl<S: Scalar> ArticulatedInertia<S> for ArticulatedInertia6<S> {
         c: Sym3::ZERO,
     };
 
+    #[inline]
     fn from_rigid(i: &Inertia<S>) -> Self {
+        // A = I_c + m ([c]ₓ[c]ₓᵀ), formed from h = m c: 9 products, not 15.
+        let (c, h) = (&i.com, i.com.scale(i.mass));
+        let r = &i.rot_inertia;
+        let a = Sym3::new(
+            r.xx + (h.y * c.y + h.z * c.z),
+            r.xy - h.x * c.y,
+            r.xz - h.x * c.z,
+            r.yy + (h.x * c.x + h.z * c.z),
+            r.yz - h.y * c.z,
+            r.zz + (h.x * c.x + h.y * c.y),
+        );
         Self {
-            a: i.rot_inertia_at_origin(),
-            b: cross_matrix(&i.com.scale(i.mass)),
+            a,
+            b: cross_matrix(&h),
             c: Sym3::identity_scaled(i.mass),
         }
     }
@@ -264,6 +335,24 @@ impl<S: Scalar> ArticulatedInertia<S> for ArticulatedInertia6<S> {
     fn add_act(&mut self, o: &Self, x: &Transform<S>) {
         let r = &x.rot.m;
         self.add_rotated_shifted(o, x, || rotate_mat(&o.b.m, r), || rotate_sym(&o.a, r));
+    }
+    #[inline]
+    fn project_mul_motion(
+        &mut self,
+        u: &Force<S>,
+        d_inv: S,
+        m: &Motion<S>,
+        revolute_axis: Option<usize>,
+    ) -> Force<S> {
+        match revolute_axis {
+            Some(0) => self.project_plane::<1, 2>(u, d_inv, m),
+            Some(1) => self.project_plane::<2, 0>(u, d_inv, m),
+            Some(2) => self.project_plane::<0, 1>(u, d_inv, m),
+            _ => {
+                self.sub_outer(u, d_inv);
+                self.mul_motion(m)
+            }
+        }
     }
     #[inline]
     fn add_act_projected(&mut self, o: &Self, x: &Transform<S>, revolute_axis: Option<usize>) {

@@ -76,6 +76,18 @@ impl<S: Scalar> Sym3<S> {
             _ => self.zz,
         }
     }
+    /// Entry (i, j) for writing (the same storage as (j, i)).
+    #[inline]
+    pub fn get_mut(&mut self, i: usize, j: usize) -> &mut S {
+        match (i.min(j), i.max(j)) {
+            (0, 0) => &mut self.xx,
+            (0, 1) => &mut self.xy,
+            (0, 2) => &mut self.xz,
+            (1, 1) => &mut self.yy,
+            (1, 2) => &mut self.yz,
+            _ => &mut self.zz,
+        }
+    }
     /// Column `k` (equal to row `k`).
     #[inline]
     #[must_use]
