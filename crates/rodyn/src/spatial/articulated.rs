@@ -336,7 +336,7 @@ impl<S: Scalar> ArticulatedInertia<S> for ArticulatedInertia6<S> {
         let r = &x.rot.m;
         self.add_rotated_shifted(o, x, || rotate_mat(&o.b.m, r), || rotate_sym(&o.a, r));
     }
-    #[inline]
+    #[inline(always)]
     fn project_mul_motion(
         &mut self,
         u: &Force<S>,
@@ -354,7 +354,7 @@ impl<S: Scalar> ArticulatedInertia<S> for ArticulatedInertia6<S> {
             }
         }
     }
-    #[inline]
+    #[inline(always)]
     fn add_act_projected(&mut self, o: &Self, x: &Transform<S>, revolute_axis: Option<usize>) {
         // Iᵃ S = 0 for the joint just projected out: about coordinate axis
         // k, the angular row and column k of A and the row k of B vanish
