@@ -17,6 +17,19 @@ mod float;
 mod sin_cos_f32;
 mod sin_cos_f64;
 
+/// `(sin x, cos x)` for `x = k · π/2 + y`, given `(s, c) = (sin y, cos y)`
+/// and `quadrant = k mod 4`: the reduced pair turned by a quarter turn per
+/// quadrant.
+#[inline(always)]
+fn turn_by_quadrant<T: Copy + core::ops::Neg<Output = T>>(quadrant: u8, s: T, c: T) -> (T, T) {
+    match quadrant & 3 {
+        0 => (s, c),
+        1 => (c, -s),
+        2 => (-s, -c),
+        _ => (-c, s),
+    }
+}
+
 pub use dual::Dual;
 
 use core::fmt::Debug;

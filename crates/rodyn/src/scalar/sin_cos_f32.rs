@@ -113,13 +113,7 @@ fn reduce_large(x: f32) -> (i32, f32) {
 /// `(sin x, cos x)` from `x = k · π/2 + y`, |y| ≤ π/4.
 #[inline(always)]
 fn from_quadrant(k: i32, y: f32) -> (f32, f32) {
-    let (s, c) = (sin_kernel(y), cos_kernel(y));
-    match k & 3 {
-        0 => (s, c),
-        1 => (c, -s),
-        2 => (-s, -c),
-        _ => (-c, s),
-    }
+    super::turn_by_quadrant((k & 3) as u8, sin_kernel(y), cos_kernel(y))
 }
 
 /// The slow path, kept out of line so that the fast path stays short.

@@ -73,13 +73,7 @@ pub(crate) fn sin_cos(x: f64) -> (f64, f64) {
     let k = (kf + if kf >= 0.0 { 0.5 } else { -0.5 }) as i64;
     let k_f = k as f64;
     let y = ((x - k_f * PIO2_1) - k_f * PIO2_2) - k_f * PIO2_3;
-    let (s, c) = (sin_kernel(y), cos_kernel(y));
-    match k & 3 {
-        0 => (s, c),
-        1 => (c, -s),
-        2 => (-s, -c),
-        _ => (-c, s),
-    }
+    super::turn_by_quadrant((k & 3) as u8, sin_kernel(y), cos_kernel(y))
 }
 
 #[cfg(all(test, feature = "std"))]
