@@ -210,3 +210,23 @@ fn bad_indices_are_reported() {
     assert!(m.set_armature(0, -0.1).is_err());
     assert!(m.set_armature(0, f64::NAN).is_err());
 }
+
+/// ABA skips the row and column a coordinate-axis revolute joint projects
+/// out only when that joint has no armature; with armature on some joints
+/// and not on others, both paths run in one call and must still invert RNEA.
+#[test]
+fn armature_on_some_joints_only_keeps_aba_the_inverse_of_rnea() {
+    use rodyn::algorithm::forward_dynamics::ForwardDynamics;
+    let (q, v, a) = ([0.3, -0.6, 1.1], [0.4, -1.2, 0.7], [1.5, -0.3, 2.0]);
+    for armature in [[0.0, 0.05, 0.0], [0.2, 0.0, 0.01], [0.0, 0.0, 0.0]] {
+        let model = arm().with_armature(armature);
+        let tau = *rnea(&model, &mut Data::new(), &q, &v, &a, None).unwrap();
+        let by_aba = *Aba::forward_dynamics(&model, &mut Data::new(), &q, &v, &tau, None).unwrap();
+        let by_crba =
+            *Crba::forward_dynamics(&model, &mut Data::new(), &q, &v, &tau, None).unwrap();
+        for k in 0..3 {
+            approx::assert_relative_eq!(by_aba[k], a[k], epsilon = 1e-12);
+            approx::assert_relative_eq!(by_aba[k], by_crba[k], epsilon = 1e-12);
+        }
+    }
+}
