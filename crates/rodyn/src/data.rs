@@ -16,7 +16,7 @@
 //! | `a_gf`         | body acceleration minus gravity (RNEA's `a - g`)    | body i      |
 //! | `f`            | force transmitted across joint i to body i          | body i      |
 //! | `ic`           | composite inertia of the subtree of i (CRBA)        | aligned ī (see `crba`) |
-//! | `ia`, `pa`     | articulated inertia and bias force (ABA)            | body i      |
+//! | `ia`, `pa`     | projected articulated inertia and bias force (ABA)  | body i      |
 
 use crate::joint::MAX_JOINT_NV;
 use crate::space::{ArticulatedInertia, BodyInertia, RigidTransform, Space, VectorOps};
@@ -51,7 +51,8 @@ pub struct Data<S: Scalar, const NB: usize, const NV: usize, G: Space = Spatial>
     pub ltdl: [[S; NV]; NV],
     /// Composite rigid-body inertias.
     pub ic: [G::Inertia<S>; NB],
-    /// Articulated-body inertias `I^A`.
+    /// Articulated-body inertias: after ABA, each body's `I^a = I^A - U D⁻¹ Uᵀ`
+    /// (the inertia its parent receives; a root keeps `I^A`).
     pub ia: [G::Articulated<S>; NB],
     /// Articulated-body bias forces `p^A`.
     pub pa: [G::Force<S>; NB],
