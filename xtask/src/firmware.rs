@@ -66,10 +66,12 @@ pub fn example(name: &str) -> Result<&'static Example> {
 
 /// The example's ELF after [`build`].
 pub fn elf(example: &Example) -> PathBuf {
-    shell::target_dir()
-        .join(TARGET)
-        .join("release")
-        .join(example.name)
+    elf_of(example.name)
+}
+
+/// The ELF of the firmware binary `name` after [`build`].
+pub fn elf_of(name: &str) -> PathBuf {
+    shell::target_dir().join(TARGET).join("release").join(name)
 }
 
 /// Builds every example in release mode.
@@ -91,9 +93,17 @@ pub struct Outcome {
 /// `-icount shift=6` makes the emulation deterministic: every instruction
 /// advances virtual time by 64 ns, so SysTick-based timings and the
 /// real-time pacing of the examples do not depend on the host's load.
-pub fn run(example: &Example, mut on_line: impl FnMut(&str)) -> Result<Outcome> {
-    let elf_path = elf(example);
-    let elf = std::fs::read(&elf_path)
+pub fn run(example: &Example, on_line: impl FnMut(&str)) -> Result<Outcome> {
+    run_elf(&elf(example), &[], on_line)
+}
+
+/// [`run`] for any firmware ELF, with extra QEMU arguments.
+pub fn run_elf(
+    elf_path: &std::path::Path,
+    qemu_args: &[&str],
+    mut on_line: impl FnMut(&str),
+) -> Result<Outcome> {
+    let elf = std::fs::read(elf_path)
         .with_context(|| format!("cannot read {} (was it built?)", elf_path.display()))?;
     let decoder = LogDecoder::from_elf(&elf)?;
     let mut stream = decoder.stream();
@@ -109,8 +119,9 @@ pub fn run(example: &Example, mut on_line: impl FnMut(&str)) -> Result<Outcome> 
         ])
         .args(["-nographic", "-monitor", "none", "-serial", "none"])
         .args(["-icount", "shift=6"])
+        .args(qemu_args)
         .args(["-semihosting-config", "enable=on,target=native", "-kernel"])
-        .arg(&elf_path)
+        .arg(elf_path)
         .stdin(Stdio::null())
         .stdout(Stdio::piped())
         .stderr(Stdio::inherit());
@@ -133,7 +144,10 @@ pub fn run(example: &Example, mut on_line: impl FnMut(&str)) -> Result<Outcome> 
     let status = child.wait()?;
     let exit_code = status.code().unwrap_or(-1);
     if exit_code == 124 {
-        bail!("{} did not finish within {QEMU_TIMEOUT_S} s", example.name);
+        bail!(
+            "{} did not finish within {QEMU_TIMEOUT_S} s",
+            elf_path.display()
+        );
     }
     Ok(Outcome { exit_code, lines })
 }

@@ -8,6 +8,7 @@
 //! | `lint`                   | rustfmt, clippy and rustdoc, warnings as errors, host and firmware |
 //! | `costs`                  | runs the cost probe, measures sizes, rewrites the tables in `docs/sections/firmware.md` and `firmware/expected/sizes.txt` |
 //! | `bless`                  | rewrites `firmware/expected/*.log` from fresh runs, keeping `*` wildcards |
+//! | `profile [words]`        | one call of each algorithm on each model in QEMU with an instruction trace; prints where its instructions go, line by line (calls whose label contains every word) |
 //!
 //! Each command installs what it needs when it is missing: the
 //! `thumbv7em-none-eabihf` target through rustup, QEMU through apt-get when
@@ -17,6 +18,7 @@ mod costs;
 mod defmt_log;
 mod expected;
 mod firmware;
+mod profile;
 mod setup;
 mod shell;
 
@@ -24,7 +26,8 @@ use anyhow::{bail, Result};
 use std::process::ExitCode;
 use std::time::Instant;
 
-const USAGE: &str = "usage: cargo xtask <run [example] | test | lint | costs | bless>";
+const USAGE: &str =
+    "usage: cargo xtask <run [example] | test | lint | costs | bless | profile [model] [algorithm]>";
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -34,6 +37,7 @@ fn main() -> ExitCode {
         Some("lint") => lint(),
         Some("costs") => costs::regenerate(),
         Some("bless") => bless(),
+        Some("profile") => profile::run(&args[1..]),
         _ => {
             eprintln!("{USAGE}");
             return ExitCode::from(2);

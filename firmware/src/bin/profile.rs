@@ -1,0 +1,94 @@
+//! One call of every algorithm on every model, each between two marker
+//! calls, for `cargo xtask profile`: QEMU logs every instruction executed
+//! and the xtask attributes them to the source lines they came from.
+//!
+//! The order of the calls is the order of the `profile` lines in the log;
+//! the xtask pairs the n-th marked stretch of the trace with the n-th line.
+#![no_std]
+#![no_main]
+
+use core::sync::atomic::{AtomicU32, Ordering};
+use cortex_m_rt::entry;
+use rodyn::algorithm::crba::crba;
+use rodyn::algorithm::forward_dynamics::{Aba, Crba, ForwardDynamics};
+use rodyn::algorithm::rnea::rnea;
+use rodyn::space::Space;
+use rodyn::{Data, Model};
+use rodyn_firmware::exit::{exit, SUCCESS};
+use rodyn_firmware::models::aibo::MODEL_F32 as QUADRUPED;
+use rodyn_firmware::models::panda::MODEL_F32 as PANDA;
+use rodyn_firmware::models::pendulum::MODEL_F32 as PENDULUM;
+use rodyn_firmware::models::PENDULUM_PLANAR;
+use rodyn_firmware::rng::XorShift32;
+
+/// Written by the markers, so that neither is empty and the two cannot be
+/// merged into one function.
+static MARKS: AtomicU32 = AtomicU32::new(0);
+
+/// Start of a profiled stretch (the xtask finds it by its symbol name).
+#[inline(never)]
+#[no_mangle]
+extern "C" fn rodyn_profile_begin() {
+    MARKS.fetch_add(1, Ordering::Relaxed);
+}
+
+/// End of a profiled stretch.
+#[inline(never)]
+#[no_mangle]
+extern "C" fn rodyn_profile_end() {
+    MARKS.fetch_add(0x1_0000, Ordering::Relaxed);
+}
+
+/// Every algorithm once on `model`, at the cost probe's first random state.
+fn profile<const NB: usize, const NQ: usize, const NV: usize, G: Space>(
+    name: &str,
+    model: &Model<f32, NB, NQ, NV, G>,
+) {
+    let mut rng = XorShift32::new(0x5EED_0001);
+    let mut q = [0.0f32; NQ];
+    rng.fill_symmetric(&mut q, core::f32::consts::PI);
+    model.normalize(&mut q);
+    let mut v = [0.0f32; NV];
+    rng.fill_symmetric(&mut v, 2.0);
+    let mut u = [0.0f32; NV];
+    rng.fill_symmetric(&mut u, 5.0);
+    let mut data = Data::<f32, NB, NV, G>::new();
+    // Written out, so that nothing but the call sits between the markers.
+    defmt::println!("profile model={=str} algorithm=RNEA", name);
+    rodyn_profile_begin();
+    let ok = rnea(model, &mut data, &q, &v, &u, None).is_ok();
+    rodyn_profile_end();
+    report(ok);
+    defmt::println!("profile model={=str} algorithm=CRBA", name);
+    rodyn_profile_begin();
+    let ok = crba(model, &mut data, &q).is_ok();
+    rodyn_profile_end();
+    report(ok);
+    defmt::println!("profile model={=str} algorithm=CRBA+LTDL-FD", name);
+    rodyn_profile_begin();
+    let ok = Crba::forward_dynamics(model, &mut data, &q, &v, &u, None).is_ok();
+    rodyn_profile_end();
+    report(ok);
+    defmt::println!("profile model={=str} algorithm=ABA", name);
+    rodyn_profile_begin();
+    let ok = Aba::forward_dynamics(model, &mut data, &q, &v, &u, None).is_ok();
+    rodyn_profile_end();
+    report(ok);
+}
+
+/// A call that returned an error stopped early: its profile is not a full
+/// call's, and the xtask says so.
+fn report(ok: bool) {
+    if !ok {
+        defmt::println!("refused");
+    }
+}
+
+#[entry]
+fn main() -> ! {
+    profile("pendulum", &PENDULUM);
+    profile("pendulum-planar", &PENDULUM_PLANAR);
+    profile("panda-7dof", &PANDA);
+    profile("quadruped-floating", &QUADRUPED);
+    exit(SUCCESS)
+}
