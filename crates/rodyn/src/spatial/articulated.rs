@@ -3,6 +3,7 @@
 //! Stored as three 3x3 blocks so that `f = I^A m` reads
 //! `n = A ω + B v`, `f = Bᵀ ω + C v`, with `A` and `C` symmetric.
 
+use super::mat3::dot3;
 use super::{Force, Inertia, Mat3, Motion, Sym3, Transform, Vec3};
 use crate::space::ArticulatedInertia;
 use crate::Scalar;
@@ -44,50 +45,19 @@ fn cross<S: Scalar>(u: &[S; 3], v: &Vec3<S>) -> [S; 3] {
     ]
 }
 
-/// The rows of a symmetric matrix.
-#[inline(always)]
-fn sym_rows<S: Scalar>(s: &Sym3<S>) -> [[S; 3]; 3] {
-    [[s.xx, s.xy, s.xz], [s.xy, s.yy, s.yz], [s.xz, s.yz, s.zz]]
-}
-
-/// `r · u` for rows of equal length 3.
-#[inline(always)]
-fn dot<S: Scalar>(u: &[S; 3], v: &[S; 3]) -> S {
-    u[0] * v[0] + u[1] * v[1] + u[2] * v[2]
-}
-
-/// `R S Rᵀ` for symmetric `S`: `T = S Rᵀ` (27 products), then the upper
-/// triangle of `R T` (18).
-#[inline(always)]
-fn rotate_sym<S: Scalar>(s: &Sym3<S>, r: &[[S; 3]; 3]) -> Sym3<S> {
-    let m = sym_rows(s);
-    // tᵀ rows: t_col_j = S r_j (row j of R), so (R T)[i][j] = r_i · (S r_j).
-    let t0 = [dot(&m[0], &r[0]), dot(&m[1], &r[0]), dot(&m[2], &r[0])];
-    let t1 = [dot(&m[0], &r[1]), dot(&m[1], &r[1]), dot(&m[2], &r[1])];
-    let t2 = [dot(&m[0], &r[2]), dot(&m[1], &r[2]), dot(&m[2], &r[2])];
-    Sym3::new(
-        dot(&r[0], &t0),
-        dot(&r[0], &t1),
-        dot(&r[0], &t2),
-        dot(&r[1], &t1),
-        dot(&r[1], &t2),
-        dot(&r[2], &t2),
-    )
-}
-
 /// `R B Rᵀ` for a general `B` (54 products).
 #[inline(always)]
 fn rotate_mat<S: Scalar>(b: &[[S; 3]; 3], r: &[[S; 3]; 3]) -> [[S; 3]; 3] {
     // Column j of B Rᵀ is B r_j.
     let t = [
-        [dot(&b[0], &r[0]), dot(&b[1], &r[0]), dot(&b[2], &r[0])],
-        [dot(&b[0], &r[1]), dot(&b[1], &r[1]), dot(&b[2], &r[1])],
-        [dot(&b[0], &r[2]), dot(&b[1], &r[2]), dot(&b[2], &r[2])],
+        [dot3(&b[0], &r[0]), dot3(&b[1], &r[0]), dot3(&b[2], &r[0])],
+        [dot3(&b[0], &r[1]), dot3(&b[1], &r[1]), dot3(&b[2], &r[1])],
+        [dot3(&b[0], &r[2]), dot3(&b[1], &r[2]), dot3(&b[2], &r[2])],
     ];
     [
-        [dot(&r[0], &t[0]), dot(&r[0], &t[1]), dot(&r[0], &t[2])],
-        [dot(&r[1], &t[0]), dot(&r[1], &t[1]), dot(&r[1], &t[2])],
-        [dot(&r[2], &t[0]), dot(&r[2], &t[1]), dot(&r[2], &t[2])],
+        [dot3(&r[0], &t[0]), dot3(&r[0], &t[1]), dot3(&r[0], &t[2])],
+        [dot3(&r[1], &t[0]), dot3(&r[1], &t[1]), dot3(&r[1], &t[2])],
+        [dot3(&r[2], &t[0]), dot3(&r[2], &t[1]), dot3(&r[2], &t[2])],
     ]
 }
 
@@ -110,12 +80,11 @@ impl<S: Scalar> ArticulatedInertia6<S> {
         rotated_b: impl FnOnce() -> [[S; 3]; 3],
         rotated_a: impl FnOnce() -> Sym3<S>,
     ) {
-        let r = &x.rot.m;
         let p = &x.trans;
-        let c = rotate_sym(&o.c, r);
+        let c = o.c.rotate(&x.rot);
         self.c += c;
         // P C': column j of C' crossed by p, (p × c_j).
-        let cm = sym_rows(&c);
+        let cm = c.rows();
         let pc = [
             [
                 p.y * cm[2][0] - p.z * cm[1][0],
@@ -170,8 +139,8 @@ impl<S: Scalar> ArticulatedInertia6<S> {
         // B' = Σₘ R eₘ (R bₘ)ᵀ over the rows m = I, J of B.
         let rotated_b = || {
             let (b_i, b_j) = (&o.b.m[I], &o.b.m[J]);
-            let rb_i = [dot(&r[0], b_i), dot(&r[1], b_i), dot(&r[2], b_i)];
-            let rb_j = [dot(&r[0], b_j), dot(&r[1], b_j), dot(&r[2], b_j)];
+            let rb_i = [dot3(&r[0], b_i), dot3(&r[1], b_i), dot3(&r[2], b_i)];
+            let rb_j = [dot3(&r[0], b_j), dot3(&r[1], b_j), dot3(&r[2], b_j)];
             let row = |p: usize| {
                 [
                     r[p][I] * rb_i[0] + r[p][J] * rb_j[0],
@@ -183,7 +152,7 @@ impl<S: Scalar> ArticulatedInertia6<S> {
         };
         // A' = Σₘₙ aₘₙ R eₘ (R eₙ)ᵀ over m, n = I, J.
         let rotated_a = || {
-            let a = sym_rows(&o.a);
+            let a = o.a.rows();
             let (a_ii, a_ij, a_jj) = (a[I][I], a[I][J], a[J][J]);
             let u = |p: usize| a_ii * r[p][I] + a_ij * r[p][J];
             let w = |p: usize| a_ij * r[p][I] + a_jj * r[p][J];
@@ -255,8 +224,8 @@ impl<S: Scalar> ArticulatedInertia6<S> {
         let mut ang = [S::ZERO; 3];
         ang[I] = a_ii * w[I] + a_ij * w[J] + bv(I);
         ang[J] = a_ij * w[I] + a_jj * w[J] + bv(J);
-        let cm = sym_rows(c);
-        let lin = |q: usize| b[I][q] * w[I] + b[J][q] * w[J] + dot(&cm[q], &v);
+        let cm = c.rows();
+        let lin = |q: usize| b[I][q] * w[I] + b[J][q] * w[J] + dot3(&cm[q], &v);
         Force::new(Vec3::from_array(ang), Vec3::new(lin(0), lin(1), lin(2)))
     }
 
@@ -334,7 +303,7 @@ impl<S: Scalar> ArticulatedInertia<S> for ArticulatedInertia6<S> {
     #[inline]
     fn add_act(&mut self, o: &Self, x: &Transform<S>) {
         let r = &x.rot.m;
-        self.add_rotated_shifted(o, x, || rotate_mat(&o.b.m, r), || rotate_sym(&o.a, r));
+        self.add_rotated_shifted(o, x, || rotate_mat(&o.b.m, r), || o.a.rotate(&x.rot));
     }
     #[inline(always)]
     fn project_mul_motion(

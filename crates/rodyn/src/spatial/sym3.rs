@@ -51,11 +51,17 @@ impl<S: Scalar> Sym3<S> {
     /// The full matrix.
     #[must_use]
     pub fn to_mat3(&self) -> Mat3<S> {
-        Mat3::from_rows([
+        Mat3::from_rows(self.rows())
+    }
+    /// The three rows (equal to the columns).
+    #[inline]
+    #[must_use]
+    pub fn rows(&self) -> [[S; 3]; 3] {
+        [
             [self.xx, self.xy, self.xz],
             [self.xy, self.yy, self.yz],
             [self.xz, self.yz, self.zz],
-        ])
+        ]
     }
     /// The upper triangle of a general matrix (its lower triangle is ignored).
     #[must_use]
@@ -110,18 +116,22 @@ impl<S: Scalar> Sym3<S> {
     }
     /// `R self Rᵀ`: the same tensor seen from a frame rotated by `R`.
     #[must_use]
+    #[inline]
     pub fn rotate(&self, r: &Mat3<S>) -> Self {
-        // T = R S (27 products), then only the upper triangle of T Rᵀ
-        // (18): the lower one is its mirror.
-        let t = r.mul_mat(&self.to_mat3()).m;
-        let r = &r.m;
+        // (R S Rᵀ)ᵢⱼ = rᵢ · (S rⱼ) with rᵢ the rows of R: the three products
+        // S rⱼ (27), then only the upper triangle (18), the lower one being
+        // its mirror. Written on the rows, so that nothing goes through a
+        // temporary matrix.
+        let (m, r) = (self.rows(), &r.m);
+        let s_r = |j: usize| [dot3(&m[0], &r[j]), dot3(&m[1], &r[j]), dot3(&m[2], &r[j])];
+        let (t0, t1, t2) = (s_r(0), s_r(1), s_r(2));
         Self::new(
-            dot3(&t[0], &r[0]),
-            dot3(&t[0], &r[1]),
-            dot3(&t[0], &r[2]),
-            dot3(&t[1], &r[1]),
-            dot3(&t[1], &r[2]),
-            dot3(&t[2], &r[2]),
+            dot3(&r[0], &t0),
+            dot3(&r[0], &t1),
+            dot3(&r[0], &t2),
+            dot3(&r[1], &t1),
+            dot3(&r[1], &t2),
+            dot3(&r[2], &t2),
         )
     }
     /// `Rᵀ self R`: the tensor of `self` brought back through `R`.
