@@ -15,17 +15,13 @@
 //! Pass 3 (root to leaves): `q̈ᵢ = D⁻¹ (u - Uᵀ a')`, `aᵢ = a' + S q̈ᵢ`, with
 //! `a₀ = -g`.
 
-use crate::algorithm::kinematics::{
-    add_joint_motion, body_transform, check_state, joint_velocity_product,
-};
+use crate::algorithm::kinematics::{body_velocity, check_state, joint_velocity_product};
 use crate::algorithm::rnea::check_external;
 use crate::data::Data;
 use crate::error::{Error, Quantity, Result};
 use crate::joint::{JointModel, MAX_JOINT_NV};
 use crate::model::{check_finite, Model};
-use crate::space::{
-    ArticulatedInertia, BodyInertia, MotionVector, RigidTransform, Space, VectorOps,
-};
+use crate::space::{ArticulatedInertia, BodyInertia, MotionVector, RigidTransform, Space};
 use crate::Scalar;
 
 /// `D` below this fraction of `trace(Iᴬ)`, in units of the scalar's epsilon,
@@ -82,12 +78,7 @@ fn velocity_and_bias_pass<
     f_ext: Option<&[G::Force<S>; NB]>,
 ) {
     for i in 0..NB {
-        let li_m_i = body_transform(model, i, q);
-        let v_parent = match model.parent(i) {
-            Some(p) => li_m_i.act_inv_motion(&data.v[p]),
-            None => G::Motion::<S>::ZERO,
-        };
-        let v_i = add_joint_motion(model, i, &v_parent, v);
+        let (li_m_i, v_i) = body_velocity(model, data, i, q, v);
         let inertia = model.inertia(i);
         let mut p_a = inertia.velocity_product_force(&v_i);
         if let Some(f_ext) = f_ext {

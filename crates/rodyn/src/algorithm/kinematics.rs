@@ -217,14 +217,34 @@ pub(crate) fn velocity_pass<
     v: &[S; NV],
 ) {
     for i in 0..NB {
-        let li_m_i = body_transform(model, i, q);
-        let v_parent = match model.parent(i) {
-            Some(p) => li_m_i.act_inv_motion(&data.v[p]),
-            None => G::Motion::<S>::ZERO,
-        };
-        let v_i = add_joint_motion(model, i, &v_parent, v);
+        let (li_m_i, v_i) = body_velocity(model, data, i, q, v);
         data.c[i] = joint_velocity_product(model, i, &v_i, v);
         data.v[i] = v_i;
         data.li_m_i[i] = li_m_i;
     }
+}
+
+/// Body `i`'s transform `ˡⁱMᵢ` and velocity `vᵢ = ⁱX_λ v_λ + S q̇ᵢ`, given
+/// its parent's velocity in `data.v` (the step every root-to-leaves pass
+/// starts a body with).
+#[inline(always)]
+pub(crate) fn body_velocity<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &Data<S, NB, NV, G>,
+    i: usize,
+    q: &[S; NQ],
+    v: &[S; NV],
+) -> (G::Transform<S>, G::Motion<S>) {
+    let li_m_i = body_transform(model, i, q);
+    let v_parent = match model.parent(i) {
+        Some(p) => li_m_i.act_inv_motion(&data.v[p]),
+        None => G::Motion::<S>::ZERO,
+    };
+    (li_m_i, add_joint_motion(model, i, &v_parent, v))
 }
