@@ -15,7 +15,7 @@
 //! Pass 3 (root to leaves): `q̈ᵢ = D⁻¹ (u - Uᵀ a')`, `aᵢ = a' + S q̈ᵢ`, with
 //! `a₀ = -g`.
 
-use crate::algorithm::kinematics::{body_velocity, check_state, joint_velocity_product};
+use crate::algorithm::kinematics::{body_velocity, check_state, joint_rates};
 use crate::algorithm::rnea::check_external;
 use crate::data::Data;
 use crate::error::{Error, Quantity, Result};
@@ -84,7 +84,7 @@ fn velocity_and_bias_pass<
         if let Some(f_ext) = f_ext {
             p_a -= f_ext[i];
         }
-        data.c[i] = joint_velocity_product(model, i, &v_i, v);
+        data.c[i] = model.joint(i).cross_motion(&v_i, joint_rates(model, i, v));
         data.v[i] = v_i;
         data.li_m_i[i] = li_m_i;
         data.ia[i] = G::Articulated::<S>::from_rigid(inertia);

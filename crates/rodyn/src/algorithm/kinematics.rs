@@ -38,10 +38,11 @@ pub(crate) fn body_transform<
         .placed_transform(model.placement(i), &q[iq..iq + t.nq[i]])
 }
 
-/// `m + S q̇ᵢ`: a motion plus the joint velocity of body `i` (`v` holds
-/// the rates of every joint). A coordinate-axis joint adds one component.
+/// Body `i`'s joint rates: its slice of `v` (which holds every joint's
+/// rates, or accelerations).
 #[inline(always)]
-pub(crate) fn add_joint_motion<
+pub(crate) fn joint_rates<
+    'v,
     S: Scalar,
     const NB: usize,
     const NQ: usize,
@@ -50,32 +51,11 @@ pub(crate) fn add_joint_motion<
 >(
     model: &Model<S, NB, NQ, NV, G>,
     i: usize,
-    m: &G::Motion<S>,
-    v: &[S; NV],
-) -> G::Motion<S> {
+    v: &'v [S; NV],
+) -> &'v [S] {
     let t = model.topology();
     let iv = t.idx_v[i];
-    model.joint(i).add_motion(m, &v[iv..iv + t.nv[i]])
-}
-
-/// `vᵢ × (S q̇ᵢ)`: the velocity-product acceleration `cᵢ` of body `i`'s
-/// joint, given the body's velocity `v_i` (`v` holds every joint's rate).
-#[inline(always)]
-pub(crate) fn joint_velocity_product<
-    S: Scalar,
-    const NB: usize,
-    const NQ: usize,
-    const NV: usize,
-    G: Space,
->(
-    model: &Model<S, NB, NQ, NV, G>,
-    i: usize,
-    v_i: &G::Motion<S>,
-    v: &[S; NV],
-) -> G::Motion<S> {
-    let t = model.topology();
-    let iv = t.idx_v[i];
-    model.joint(i).cross_motion(v_i, &v[iv..iv + t.nv[i]])
+    &v[iv..iv + t.nv[i]]
 }
 
 /// Checks `q` (finite, unit quaternions) and `v` (finite).
@@ -191,7 +171,9 @@ pub fn forward_kinematics_acceleration<
             Some(p) => data.li_m_i[i].act_inv_motion(&data.a[p]),
             None => G::Motion::<S>::ZERO,
         };
-        data.a[i] = add_joint_motion(model, i, &(a_parent + data.c[i]), a);
+        data.a[i] = model
+            .joint(i)
+            .add_motion(&(a_parent + data.c[i]), joint_rates(model, i, a));
     }
     Ok(())
 }
@@ -218,7 +200,7 @@ pub(crate) fn velocity_pass<
 ) {
     for i in 0..NB {
         let (li_m_i, v_i) = body_velocity(model, data, i, q, v);
-        data.c[i] = joint_velocity_product(model, i, &v_i, v);
+        data.c[i] = model.joint(i).cross_motion(&v_i, joint_rates(model, i, v));
         data.v[i] = v_i;
         data.li_m_i[i] = li_m_i;
     }
@@ -246,5 +228,8 @@ pub(crate) fn body_velocity<
         Some(p) => li_m_i.act_inv_motion(&data.v[p]),
         None => G::Motion::<S>::ZERO,
     };
-    (li_m_i, add_joint_motion(model, i, &v_parent, v))
+    let v_i = model
+        .joint(i)
+        .add_motion(&v_parent, joint_rates(model, i, v));
+    (li_m_i, v_i)
 }

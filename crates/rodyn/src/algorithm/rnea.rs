@@ -5,9 +5,7 @@
 //! force `fᵢ = Iᵢ aᵢ + vᵢ ×* Iᵢ vᵢ - fᵢᵉˣᵗ`. Backward pass: `τᵢ = Sᵀ fᵢ`,
 //! `f_λ += ᵏX_ᵢ* fᵢ`.
 
-use crate::algorithm::kinematics::{
-    add_joint_motion, body_transform, check_state, joint_velocity_product,
-};
+use crate::algorithm::kinematics::{body_transform, check_state, joint_rates};
 use crate::data::Data;
 use crate::error::{Quantity, Result};
 use crate::joint::JointModel;
@@ -79,9 +77,14 @@ fn forward_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
             Some(p) => (li_m_i.act_inv_motion(&data.v[p]), data.a_gf[p]),
             None => (G::Motion::<S>::ZERO, minus_g),
         };
-        let v_i = add_joint_motion(model, i, &v_parent, v);
-        let c_i = joint_velocity_product(model, i, &v_i, v);
-        let a_i = add_joint_motion(model, i, &(li_m_i.act_inv_motion(&a_parent) + c_i), a);
+        let joint = model.joint(i);
+        let q_dot = joint_rates(model, i, v);
+        let v_i = joint.add_motion(&v_parent, q_dot);
+        let c_i = joint.cross_motion(&v_i, q_dot);
+        let a_i = joint.add_motion(
+            &(li_m_i.act_inv_motion(&a_parent) + c_i),
+            joint_rates(model, i, a),
+        );
         let inertia = model.inertia(i);
         let mut f_i = inertia.net_force(&v_i, &a_i);
         if let Some(f_ext) = f_ext {
