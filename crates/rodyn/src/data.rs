@@ -45,9 +45,11 @@ pub struct Data<S: Scalar, const NB: usize, const NV: usize, G: Space = Spatial>
     pub tau: [S; NV],
     /// Joint accelerations from forward dynamics.
     pub ddq: [S; NV],
-    /// The joint-space mass matrix `M` (both triangles filled by CRBA).
+    /// The joint-space mass matrix `M` (both triangles filled by CRBA; CRBA
+    /// forward dynamics fill the lower one).
     pub mass_matrix: [[S; NV]; NV],
-    /// `M` factored in place as `Lᵀ D L` (`D` on the diagonal, `L` strictly below).
+    /// `M` factored in place as `Lᵀ D L` (`D` on the diagonal, `L` strictly
+    /// below; the upper triangle is not written).
     pub ltdl: [[S; NV]; NV],
     /// Composite rigid-body inertias.
     pub ic: [G::Inertia<S>; NB],

@@ -199,7 +199,7 @@ pub trait Space: Copy + Debug + PartialEq + 'static {
     /// Force vectors.
     type Force<S: Scalar>: ForceVector<S>;
     /// Positions of points (3-D or 2-D).
-    type Point<S: Scalar>: Copy + Debug;
+    type Point<S: Scalar>: Copy + Debug + Add<Output = Self::Point<S>>;
     /// Rigid transforms.
     type Transform<S: Scalar>: RigidTransform<
         S,
@@ -260,10 +260,10 @@ pub trait Space: Copy + Debug + PartialEq + 'static {
         k: usize,
         x: &Self::Transform<S>,
     ) -> Self::Motion<S>;
-    /// The force `f` moved through the translation of `x` alone: `n + t × f`.
-    /// With `t` the offset of frame b's origin from frame a's, both with the
-    /// same axes, it re-expresses a force about b's origin about a's.
-    fn translate_force<S: Scalar>(f: &Self::Force<S>, x: &Self::Transform<S>) -> Self::Force<S>;
+    /// The force `f` moved through the translation `t`: `n + t × f`. With
+    /// `t` the offset of frame b's origin from frame a's, both with the same
+    /// axes, it re-expresses a force about b's origin about a's.
+    fn translate_force<S: Scalar>(f: &Self::Force<S>, t: &Self::Point<S>) -> Self::Force<S>;
     /// `acc` plus the inertia `i` moved through the translation of `x`
     /// alone (its centre of mass shifts by `t`): the composite of the two
     /// bodies, in `acc`'s frame.

@@ -18,7 +18,6 @@
 //! ABA is O(n). Which is faster depends on the model and the scalar type:
 //! the workspace README charts the crossover.
 
-use crate::algorithm::kinematics::check_state;
 use crate::algorithm::{aba::aba, crba, ltdl, rnea::nonlinear_effects};
 use crate::data::Data;
 use crate::error::{Quantity, Result};
@@ -90,8 +89,8 @@ impl ForwardDynamics for Crba {
     const NAME: &'static str = "CRBA";
     /// Leaves valid: everything [`rnea`](crate::algorithm::rnea::rnea) and
     /// [`crba`](crba::crba) leave, except the upper triangle of
-    /// `mass_matrix` (zero: only the lower one is formed), and `h` (bias
-    /// forces), `ltdl`, `ddq`.
+    /// `mass_matrix` (not written: only the lower one is formed), and `h`
+    /// (bias forces), the lower triangle of `ltdl`, `ddq`.
     fn forward_dynamics<
         'd,
         S: Scalar,
@@ -109,9 +108,9 @@ impl ForwardDynamics for Crba {
     ) -> Result<&'d [S; NV]> {
         check_finite(tau, Quantity::Torque)?;
         data.h = *nonlinear_effects(model, data, q, v, f_ext)?;
-        check_state(model, q, None)?;
-        // The factorisation reads the lower triangle only: no mirroring.
-        crba::crba_lower(model, data, q);
+        // RNEA left the joint transforms at q in `li_m_i`; the
+        // factorisation reads the lower triangle only: no mirroring.
+        crba::crba_lower(model, data, None);
         ltdl::ltdl_factor(model, data)?;
         let mut rhs = [S::ZERO; NV];
         for (k, r) in rhs.iter_mut().enumerate() {

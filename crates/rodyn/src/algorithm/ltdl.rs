@@ -57,8 +57,10 @@ fn dot<S: Scalar>(x: &[S], y: &[S]) -> S {
 
 /// Factors `data.mass_matrix` into `data.ltdl` (D on the diagonal, L below).
 ///
-/// Inputs: `data.mass_matrix` as [`crba`](crate::algorithm::crba::crba) left
-/// it. Leaves valid: `ltdl`.
+/// Inputs: the lower triangle of `data.mass_matrix` (diagonal included), as
+/// [`crba`](crate::algorithm::crba::crba) leaves it. Leaves valid: the lower
+/// triangle of `ltdl` (`D` on the diagonal, `L` below; the entries above
+/// the diagonal are not written).
 ///
 /// Only the supporting coordinates of each row are touched, and they are
 /// walked as contiguous ranges rather than one λ link at a time: on a chain
@@ -72,7 +74,10 @@ pub fn ltdl_factor<S: Scalar, const NB: usize, const NQ: usize, const NV: usize,
 ) -> Result<()> {
     let topology = model.topology();
     let h = &mut data.ltdl;
-    *h = data.mass_matrix;
+    // The lower triangle is all the factorisation reads and writes.
+    for (k, (row, m)) in h.iter_mut().zip(&data.mass_matrix).enumerate() {
+        row[..=k].copy_from_slice(&m[..=k]);
+    }
     // Compared in S, like ABA's pivots: no f64 on the hot path.
     let mut scale = S::ZERO;
     for (k, row) in h.iter().enumerate() {

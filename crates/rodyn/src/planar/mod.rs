@@ -116,8 +116,8 @@ impl Space for Planar {
         PlanarMotion::new(s.ang, x.rotate(&s.lin))
     }
     #[inline(always)]
-    fn translate_force<S: Scalar>(f: &PlanarForce<S>, x: &PlanarTransform<S>) -> PlanarForce<S> {
-        PlanarForce::new(f.ang + x.trans.cross(&f.lin), f.lin)
+    fn translate_force<S: Scalar>(f: &PlanarForce<S>, t: &Vec2<S>) -> PlanarForce<S> {
+        PlanarForce::new(f.ang + t.cross(&f.lin), f.lin)
     }
     #[inline(always)]
     fn add_translated_inertia<S: Scalar>(

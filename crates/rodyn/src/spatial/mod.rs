@@ -125,8 +125,8 @@ impl Space for Spatial {
         }
     }
     #[inline(always)]
-    fn translate_force<S: Scalar>(f: &Force<S>, x: &Transform<S>) -> Force<S> {
-        Force::new(f.ang + x.trans.cross(&f.lin), f.lin)
+    fn translate_force<S: Scalar>(f: &Force<S>, t: &Vec3<S>) -> Force<S> {
+        Force::new(f.ang + t.cross(&f.lin), f.lin)
     }
     #[inline(always)]
     fn add_translated_inertia<S: Scalar>(acc: &mut Inertia<S>, i: &Inertia<S>, x: &Transform<S>) {
