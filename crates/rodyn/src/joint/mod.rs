@@ -205,7 +205,8 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
             Self::Custom(c) => c.behaviour.transform(q),
         }
     }
-    #[inline]
+    #[cfg_attr(not(target_arch = "arm"), inline(always))]
+    #[cfg_attr(target_arch = "arm", inline)]
     fn placed_transform(&self, placement: &Transform<S>, q: &[S]) -> Transform<S> {
         use crate::space::RigidTransform;
         match self {

@@ -30,7 +30,8 @@ impl<S: Scalar> Revolute<S> {
     ///
     /// About a coordinate axis the rotation mixes two columns of the
     /// placement's rotation; no 3x3 product is needed.
-    #[inline]
+    #[cfg_attr(not(target_arch = "arm"), inline(always))]
+    #[cfg_attr(target_arch = "arm", inline)]
     #[must_use]
     pub fn placed_transform(&self, placement: &Transform<S>, q: S) -> Transform<S> {
         match self.axis.index() {

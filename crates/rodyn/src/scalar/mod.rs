@@ -19,7 +19,8 @@ mod sin_cos_f64;
 
 /// `(sin x, cos x)` for `x = k · π/2 + y`, given `(s, c) = (sin y, cos y)`
 /// and `quadrant = k mod 4`: the reduced pair turned by a quarter turn per
-/// quadrant.
+/// quadrant. (The `f64` path has its own, branch-free.)
+#[cfg(any(feature = "libm", test))]
 #[inline(always)]
 fn turn_by_quadrant<T: Copy + core::ops::Neg<Output = T>>(quadrant: u8, s: T, c: T) -> (T, T) {
     match quadrant & 3 {

@@ -16,6 +16,8 @@ const FRAC_2_PI: f64 = core::f64::consts::FRAC_2_PI;
 const PIO2_1: f64 = 1.570_796_326_734_125_6;
 const PIO2_2: f64 = 6.077_100_506_303_966e-11;
 const PIO2_3: f64 = 2.022_266_248_711_166_5e-21;
+/// 1.5 · 2⁵²: `t + ROUND_SHIFT - ROUND_SHIFT` rounds `|t| < 2⁵¹` to an integer.
+const ROUND_SHIFT: f64 = 6_755_399_441_055_744.0;
 
 /// `sin y` for |y| ≤ π/4.
 #[inline]
@@ -68,12 +70,30 @@ pub(crate) fn sin_cos(x: f64) -> (f64, f64) {
     if x.is_nan() || x.abs() > FAST_LIMIT {
         return library_sin_cos(x);
     }
-    // k = round(x · 2/π), half away from zero (`f64::round` is not in core).
-    let kf = x * FRAC_2_PI;
-    let k = (kf + if kf >= 0.0 { 0.5 } else { -0.5 }) as i64;
-    let k_f = k as f64;
+    // k = round(x · 2/π), without a branch or a saturating conversion:
+    // adding 1.5 · 2⁵² rounds to an integer (ties to even) held in the low
+    // bits of the sum, so k mod 4 is read from its bit pattern.
+    let shifted = x * FRAC_2_PI + ROUND_SHIFT;
+    let k_f = shifted - ROUND_SHIFT;
     let y = ((x - k_f * PIO2_1) - k_f * PIO2_2) - k_f * PIO2_3;
-    super::turn_by_quadrant((k & 3) as u8, sin_kernel(y), cos_kernel(y))
+    turn_by_quadrant(shifted.to_bits(), sin_kernel(y), cos_kernel(y))
+}
+
+/// `(sin x, cos x)` from `(sin y, cos y)` with `x = y + k π/2`, by swapping
+/// and negating bit patterns: the quadrant of a joint angle is random, and a
+/// jump on it is mispredicted.
+#[inline(always)]
+fn turn_by_quadrant(k: u64, s: f64, c: f64) -> (f64, f64) {
+    // Odd k swaps sine and cosine; sin x < 0 for k = 2, 3 (mod 4) and
+    // cos x < 0 for k = 1, 2.
+    let swap = 0u64.wrapping_sub(k & 1);
+    let (s, c) = (s.to_bits(), c.to_bits());
+    let sin = (s & !swap) | (c & swap);
+    let cos = (c & !swap) | (s & swap);
+    (
+        f64::from_bits(sin ^ ((k & 2) << 62)),
+        f64::from_bits(cos ^ ((k.wrapping_add(1) & 2) << 62)),
+    )
 }
 
 #[cfg(all(test, feature = "std"))]
