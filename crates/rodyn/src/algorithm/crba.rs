@@ -12,7 +12,8 @@
 //!   joint's subspace columns rotated into frame ī (`S̄ = ʳRᵢ S`); a root
 //!   body's frame is its own;
 //! - backward pass: each column `F = Iᶜᵢ S̄ₖ` gives `Hᵢᵢ = S̄ᵀ F`, then travels
-//!   up the supporting bodies by `n ← n + d × f`, giving `H_λᵢ = S̄_λᵀ F`;
+//!   up the supporting bodies by `n ← n + d × f`, giving `H_λᵢ = S̄_λᵀ F`
+//!   (a column and its λ, as along a chain, go up together);
 //!   the composite inertia moves to the parent by the parallel-axis
 //!   theorem (`Iᶜ_λ += Iᶜᵢ` shifted by `dᵢ`).
 //!
@@ -29,6 +30,7 @@ use crate::data::Data;
 use crate::error::Result;
 use crate::model::Model;
 use crate::space::{BodyInertia, MotionVector, RigidTransform, Space, VectorOps};
+use crate::topology::Topology;
 use crate::Scalar;
 
 /// The joint-space mass matrix `M(q)` (symmetric, NV x NV).
@@ -112,39 +114,46 @@ pub(crate) fn crba_lower<S: Scalar, const NB: usize, const NQ: usize, const NV: 
         data.li_m_i[i] = li_m_i;
     }
     let (frames, ic, mass_matrix) = (&data.o_m_i, &mut data.ic, &mut data.mass_matrix);
+    // A column whose λ is the next column down waits for it, and the two
+    // then walk λ together: they share every step and every `S̄`, loaded
+    // once for both.
+    let mut pending: Option<(usize, G::Force<S>)> = None;
     for i in (0..NB).rev() {
-        for c in t.idx_v[i]..t.idx_v[i] + t.nv[i] {
-            let row = &mut mass_matrix[c];
-            let mut f = ic[i].mul_motion(&s_bar[c]);
-            row[c] = s_bar[c].dot(&f);
-            // Down λ from c: F about each coordinate's body origin, projected
-            // on its column. λ runs in unbroken stretches (a chain is one),
-            // each walked as slices; the coordinates between two stretches
-            // do not support c, and their entries are zero.
-            let mut m = c;
-            loop {
-                let start = t.chain_start_v[m];
-                let stretch = s_bar[start..m].iter().zip(&steps[start + 1..=m]);
-                for ((s, step), h) in stretch.zip(&mut row[start..m]).rev() {
-                    if let Some(step) = step {
-                        f = G::translate_force(&f, step);
+        for c in (t.idx_v[i]..t.idx_v[i] + t.nv[i]).rev() {
+            let f = ic[i].mul_motion(&s_bar[c]);
+            mass_matrix[c][c] = s_bar[c].dot(&f);
+            match pending.take() {
+                // `a = c + 1`, and `c` is its λ.
+                Some((a, mut f_a)) => {
+                    if let Some(step) = &steps[a] {
+                        f_a = G::translate_force(&f_a, step);
                     }
-                    *h = s.dot(&f);
-                }
-                match t.lambda_v[start] {
-                    Some(p) => {
-                        row[p + 1..start].fill(S::ZERO);
-                        if let Some(step) = &steps[start] {
-                            f = G::translate_force(&f, step);
-                        }
-                        row[p] = s_bar[p].dot(&f);
-                        m = p;
-                    }
-                    None => {
-                        row[..start].fill(S::ZERO);
-                        break;
+                    let (below, above) = mass_matrix.split_at_mut(a);
+                    if let (Some(row_c), Some(row_a)) = (below.last_mut(), above.first_mut()) {
+                        row_a[c] = s_bar[c].dot(&f_a);
+                        walk_lambda::<S, NB, NV, G, _, 2>(
+                            t,
+                            &s_bar,
+                            &steps,
+                            c,
+                            [row_a, row_c],
+                            [f_a, f],
+                            |f, d| f.map(|f| G::translate_force(&f, d)),
+                            |s, f| f.map(|f| s.dot(&f)),
+                        );
                     }
                 }
+                None if c > 0 && t.lambda_v[c] == Some(c - 1) => pending = Some((c, f)),
+                None => walk_lambda::<S, NB, NV, G, _, 1>(
+                    t,
+                    &s_bar,
+                    &steps,
+                    c,
+                    [&mut mass_matrix[c]],
+                    f,
+                    G::translate_force,
+                    |s, f| [s.dot(f)],
+                ),
             }
         }
         if let Some(p) = t.parents[i] {
@@ -155,5 +164,56 @@ pub(crate) fn crba_lower<S: Scalar, const NB: usize, const NQ: usize, const NV: 
     // Rotor (armature) inertias sit on the diagonal only.
     for (k, armature) in model.armature().iter().enumerate() {
         mass_matrix[k][k] += *armature;
+    }
+}
+
+/// Fills `K` rows of `M` below column `m`, given their forces `f` about
+/// the origin of `m`'s body: down λ from `m`, the forces about each
+/// coordinate's body origin (`step`), projected on its column (`dot`). λ
+/// runs in unbroken stretches (a chain is one), each walked as slices; the
+/// coordinates between two stretches do not support `m`, and their entries
+/// are zero.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn walk_lambda<S: Scalar, const NB: usize, const NV: usize, G: Space, F: Copy, const K: usize>(
+    t: &Topology<NB, NV>,
+    s_bar: &[G::Motion<S>; NV],
+    steps: &[Option<G::Point<S>>; NV],
+    mut m: usize,
+    mut rows: [&mut [S; NV]; K],
+    mut f: F,
+    step: impl Fn(&F, &G::Point<S>) -> F,
+    dot: impl Fn(&G::Motion<S>, &F) -> [S; K],
+) {
+    loop {
+        let start = t.chain_start_v[m];
+        let stretch = s_bar[start..m].iter().zip(&steps[start + 1..=m]);
+        let mut h = rows.each_mut().map(|row| &mut row[start..m]);
+        for (j, (s, d)) in stretch.enumerate().rev() {
+            if let Some(d) = d {
+                f = step(&f, d);
+            }
+            for (h, value) in h.iter_mut().zip(dot(s, &f)) {
+                h[j] = value;
+            }
+        }
+        match t.lambda_v[start] {
+            Some(p) => {
+                if let Some(d) = &steps[start] {
+                    f = step(&f, d);
+                }
+                for (row, value) in rows.iter_mut().zip(dot(&s_bar[p], &f)) {
+                    row[p + 1..start].fill(S::ZERO);
+                    row[p] = value;
+                }
+                m = p;
+            }
+            None => {
+                for row in &mut rows {
+                    row[..start].fill(S::ZERO);
+                }
+                break;
+            }
+        }
     }
 }
