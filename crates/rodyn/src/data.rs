@@ -48,8 +48,8 @@ pub struct Data<S: Scalar, const NB: usize, const NV: usize, G: Space = Spatial>
     /// The joint-space mass matrix `M` (both triangles filled by CRBA; CRBA
     /// forward dynamics fill the lower one).
     pub mass_matrix: [[S; NV]; NV],
-    /// `M` factored in place as `Lᵀ D L` (`D` on the diagonal, `L` strictly
-    /// below; the upper triangle is not written).
+    /// `M` factored as `Lᵀ D L`: `D` on the diagonal, `L` transposed above it
+    /// (`ltdl[i][k] = L[k][i]`, i < k; the lower triangle is not written).
     pub ltdl: [[S; NV]; NV],
     /// Composite rigid-body inertias.
     pub ic: [G::Inertia<S>; NB],

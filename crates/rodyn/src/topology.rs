@@ -105,6 +105,15 @@ pub struct Topology<const NB: usize, const NV: usize> {
     /// `lambda_v[chain_start_v[k]]`: a chain is one range, a branched tree
     /// a few. The sparse factorisation walks these ranges as slices.
     pub chain_start_v: [usize; NV],
+    /// The last coordinate that coordinate k supports (k itself at a leaf).
+    /// In a [`depth_first`](Self::depth_first) tree the coordinates k
+    /// supports are exactly `k ..= last_supported_v[k]`.
+    pub last_supported_v: [usize; NV],
+    /// Whether every coordinate's descendants follow it without a gap, as
+    /// they do when the bodies are numbered depth first (URDF order).
+    /// Otherwise `k ..= last_supported_v[k]` also holds coordinates on
+    /// other branches.
+    pub depth_first: bool,
 }
 
 impl<const NB: usize, const NV: usize> Topology<NB, NV> {
@@ -207,6 +216,29 @@ impl<const NB: usize, const NV: usize> Topology<NB, NV> {
             };
             k += 1;
         }
+        // Leaves to root: a coordinate's λ has already received everything
+        // its own descendants pass up.
+        let mut last_supported_v = [0; NV];
+        let mut supported_count = [1; NV];
+        let mut k = NV;
+        while k > 0 {
+            k -= 1;
+            if last_supported_v[k] < k {
+                last_supported_v[k] = k;
+            }
+            if let Some(l) = lambda_v[k] {
+                if last_supported_v[l] < last_supported_v[k] {
+                    last_supported_v[l] = last_supported_v[k];
+                }
+                supported_count[l] += supported_count[k];
+            }
+        }
+        let mut depth_first = true;
+        let mut k = 0;
+        while k < NV {
+            depth_first &= last_supported_v[k] - k + 1 == supported_count[k];
+            k += 1;
+        }
         Ok(Self {
             parents,
             idx_q,
@@ -216,6 +248,8 @@ impl<const NB: usize, const NV: usize> Topology<NB, NV> {
             lambda_v,
             body_of_v,
             chain_start_v,
+            last_supported_v,
+            depth_first,
         })
     }
 
@@ -244,4 +278,25 @@ const fn velocity_count<const NB: usize>(nv: &[usize; NB]) -> usize {
         i += 1;
     }
     sum
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Topology;
+
+    #[test]
+    fn last_supported_and_depth_first() {
+        // 0 ─ 1 ─ 2, 0 ─ 3: depth first.
+        let t = Topology::<4, 4>::new([None, Some(0), Some(1), Some(0)], [1; 4], [1; 4], 4);
+        assert_eq!(t.last_supported_v, [3, 2, 2, 3]);
+        assert!(t.depth_first);
+        // 0 ─ 1 ─ 3, 0 ─ 2: coordinate 2 sits inside 1's range.
+        let t = Topology::<4, 4>::new([None, Some(0), Some(0), Some(1)], [1; 4], [1; 4], 4);
+        assert_eq!(t.last_supported_v, [3, 3, 2, 3]);
+        assert!(!t.depth_first);
+        // Two roots, a two-coordinate joint on the second.
+        let t = Topology::<3, 4>::new([None, None, Some(1)], [1, 2, 1], [1, 2, 1], 4);
+        assert_eq!(t.last_supported_v, [0, 3, 3, 3]);
+        assert!(t.depth_first);
+    }
 }

@@ -90,7 +90,7 @@ impl ForwardDynamics for Crba {
     /// Leaves valid: everything [`rnea`](crate::algorithm::rnea::rnea) and
     /// [`crba`](crba::crba) leave, except the upper triangle of
     /// `mass_matrix` (not written: only the lower one is formed), and `h`
-    /// (bias forces), the lower triangle of `ltdl`, `ddq`.
+    /// (bias forces), the diagonal and upper triangle of `ltdl`, `ddq`.
     fn forward_dynamics<
         'd,
         S: Scalar,

@@ -2,8 +2,15 @@
 //!
 //! `M = Lᵀ D L` with `L` unit lower triangular. Because `M[k][i]` is zero
 //! unless coordinate i supports coordinate k, `L` has the same sparsity and
-//! both the factorisation and the solves only walk the λ chain of each
-//! coordinate: branches cost nothing, and no fill-in is created.
+//! no fill-in is created.
+//!
+//! The factors are formed a column of `L` at a time, leaves to root (the
+//! order of Pinocchio's `cholesky::decompose`, not the row updates of
+//! Table 6.3): `L[k][i]` for every i supporting k is one dot product over
+//! the coordinates that k supports, which follow k in a
+//! [`depth_first`](crate::topology::Topology::depth_first) tree. `L` is
+//! therefore stored transposed, `ltdl[i][k] = L[k][i]`, so that these dot
+//! products and the solves run along rows.
 
 use crate::data::Data;
 use crate::error::{Error, Result};
@@ -45,26 +52,38 @@ fn sub_scaled<S: Scalar>(y: &mut [S], a: S, x: &[S]) {
     }
 }
 
-/// `x · y` over slices of equal length.
+/// `x · y` over slices of equal length, in four interleaved partial sums:
+/// independent additions that the host runs two lanes at a time.
 #[inline]
 fn dot<S: Scalar>(x: &[S], y: &[S]) -> S {
-    let mut sum = S::ZERO;
-    for (x, y) in x.iter().zip(y) {
+    let y = &y[..x.len()];
+    let (x4, y4) = (x.chunks_exact(4), y.chunks_exact(4));
+    let (x_rest, y_rest) = (x4.remainder(), y4.remainder());
+    let mut sums = [S::ZERO; 4];
+    for (x, y) in x4.zip(y4) {
+        for j in 0..4 {
+            sums[j] += x[j] * y[j];
+        }
+    }
+    let mut sum = (sums[0] + sums[2]) + (sums[1] + sums[3]);
+    for (x, y) in x_rest.iter().zip(y_rest) {
         sum += *x * *y;
     }
     sum
 }
 
-/// Factors `data.mass_matrix` into `data.ltdl` (D on the diagonal, L below).
+/// Factors `data.mass_matrix` into `data.ltdl`: `D` on the diagonal, `L`
+/// transposed above it (`ltdl[i][k] = L[k][i]` for i < k).
 ///
 /// Inputs: the lower triangle of `data.mass_matrix` (diagonal included), as
-/// [`crba`](crate::algorithm::crba::crba) leaves it. Leaves valid: the lower
-/// triangle of `ltdl` (`D` on the diagonal, `L` below; the entries above
-/// the diagonal are not written).
+/// [`crba`](crate::algorithm::crba::crba) leaves it. Leaves valid: the
+/// diagonal and upper triangle of `ltdl` (the lower one is not written).
+/// Entries of `L` that the sparsity makes zero are not written either, except
+/// in a tree that is not [`depth_first`](crate::topology::Topology::depth_first),
+/// where the solves read them.
 ///
-/// Only the supporting coordinates of each row are touched, and they are
-/// walked as contiguous ranges rather than one λ link at a time: on a chain
-/// every update is one slice operation over a row.
+/// Pivots are formed and tested leaves to root, so the coordinate reported
+/// is the highest-numbered one whose pivot fails.
 ///
 /// # Errors
 /// [`Error::MassMatrixNotPositiveDefinite`] when a pivot is not safely positive.
@@ -73,21 +92,27 @@ pub fn ltdl_factor<S: Scalar, const NB: usize, const NQ: usize, const NV: usize,
     data: &mut Data<S, NB, NV, G>,
 ) -> Result<()> {
     let topology = model.topology();
+    let m = &data.mass_matrix;
     let h = &mut data.ltdl;
-    // The lower triangle is all the factorisation reads and writes.
-    for (k, (row, m)) in h.iter_mut().zip(&data.mass_matrix).enumerate() {
-        row[..=k].copy_from_slice(&m[..=k]);
-    }
     // Compared in S, like ABA's pivots: no f64 on the hot path.
     let mut scale = S::ZERO;
-    for (k, row) in h.iter().enumerate() {
+    for (k, row) in m.iter().enumerate() {
         scale = scale.max(row[k].abs());
     }
     let tolerance = S::from_f64(PIVOT_TOLERANCE_EPS * S::EPSILON) * scale;
+    // The pivots, and D[s] L[s][k] for the coordinates s that k supports.
+    let mut pivots = [S::ZERO; NV];
+    let mut d_l = [S::ZERO; NV];
     for k in (0..NV).rev() {
-        let (rows_above, rows_from_k) = h.split_at_mut(k);
-        let row_k = &mut rows_from_k[0];
-        let d = row_k[k];
+        // D[k] = M[k][k] - Σ D[s] L[s][k]² over the coordinates s below k.
+        let below = k + 1..topology.last_supported_v[k] + 1;
+        let mut d = m[k][k];
+        for s in below.clone() {
+            let l = h[k][s];
+            let dl = pivots[s] * l;
+            d_l[s] = dl;
+            d -= l * dl;
+        }
         if !(d.is_finite() && d > tolerance) {
             let scale = scale.to_f64();
             return Err(Error::MassMatrixNotPositiveDefinite {
@@ -95,19 +120,29 @@ pub fn ltdl_factor<S: Scalar, const NB: usize, const NQ: usize, const NV: usize,
                 relative_pivot: if scale > 0.0 { d.to_f64() / scale } else { 0.0 },
             });
         }
-        // Every supporting coordinate i of k, nearest first:
-        // H[i][j] -= (H[k][i] / d) H[k][j] over the coordinates j supporting
-        // i, then H[k][i] becomes L[k][i]. Entries H[k][j] with j < i are
-        // still unscaled when row i uses them.
+        pivots[k] = d;
+        h[k][k] = d;
+        if !topology.depth_first {
+            // The rows that do not support k read this column as zeros.
+            for row in &mut h[..k] {
+                row[k] = S::ZERO;
+            }
+        }
+        // L[k][i] = (M[k][i] - Σ D[s] L[s][k] L[s][i]) / D[k] over the
+        // coordinates s below k, for every i supporting k.
+        let inverse = S::ONE / d;
+        let d_l = &d_l[below.clone()];
+        let m_k = &m[k];
         for (first, last) in supporting_ranges(topology, topology.lambda_v[k]) {
-            for i in (first..=last).rev() {
-                let a = row_k[i] / d;
-                let row_i = &mut rows_above[i];
-                sub_scaled(&mut row_i[first..=i], a, &row_k[first..=i]);
-                for (f, l) in supporting_ranges(topology, topology.lambda_v[first]) {
-                    sub_scaled(&mut row_i[f..=l], a, &row_k[f..=l]);
+            let rows = h[first..=last].iter_mut().zip(&m_k[first..=last]);
+            if d_l.is_empty() {
+                for (row, m_ki) in rows {
+                    row[k] = *m_ki * inverse;
                 }
-                row_k[i] = a;
+            } else {
+                for (row, m_ki) in rows {
+                    row[k] = (*m_ki - dot(&row[below.clone()], d_l)) * inverse;
+                }
             }
         }
     }
@@ -124,24 +159,21 @@ pub fn ltdl_solve<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, 
 ) {
     let topology = model.topology();
     let h = &data.ltdl;
-    // Lᵀ y = b, leaves to root: b[j] -= L[i][j] b[i] over j supporting i.
-    for i in (0..NV).rev() {
-        let (b_above, b_from_i) = b.split_at_mut(i);
-        let b_i = b_from_i[0];
-        for (first, last) in supporting_ranges(topology, topology.lambda_v[i]) {
-            sub_scaled(&mut b_above[first..=last], b_i, &h[i][first..=last]);
-        }
+    // Lᵀ y = b, leaves to root: b[k] -= Σ L[s][k] b[s] over the s below k.
+    for k in (0..NV).rev() {
+        let (b_to_k, b_below) = b.split_at_mut(k + 1);
+        let end = topology.last_supported_v[k] + 1;
+        b_to_k[k] -= dot(&h[k][k + 1..end], &b_below[..end - k - 1]);
     }
     // D z = y.
-    for (i, bi) in b.iter_mut().enumerate() {
-        *bi /= h[i][i];
+    for (k, bk) in b.iter_mut().enumerate() {
+        *bk /= h[k][k];
     }
-    // L x = z, root to leaves: b[i] -= Σ L[i][j] b[j] over j supporting i.
-    for i in 0..NV {
-        let mut sum = S::ZERO;
-        for (first, last) in supporting_ranges(topology, topology.lambda_v[i]) {
-            sum += dot(&h[i][first..=last], &b[first..=last]);
-        }
-        b[i] -= sum;
+    // L x = z, root to leaves: once b[k] is final, b[s] -= L[s][k] b[k]
+    // over the s below k.
+    for k in 0..NV {
+        let (b_to_k, b_below) = b.split_at_mut(k + 1);
+        let end = topology.last_supported_v[k] + 1;
+        sub_scaled(&mut b_below[..end - k - 1], b_to_k[k], &h[k][k + 1..end]);
     }
 }

@@ -50,24 +50,29 @@ pub fn rnea<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
     check_state(model, q, Some(v))?;
     check_finite(a, Quantity::Acceleration)?;
     check_external(f_ext.map(|f| &f[..]))?;
-    forward_pass(model, data, q, v, a, f_ext);
-    backward_force_pass(model, data, a);
+    forward_pass(model, data, q, v, Some(a), f_ext);
+    backward_force_pass(model, data, Some(a));
     Ok(&data.tau)
 }
 
-/// The forward pass: `ˡⁱMᵢ`, `vᵢ`, `aᵢ - g` and `fᵢ` for every body.
+/// The forward pass: `ˡⁱMᵢ`, `vᵢ`, `aᵢ - g` and `fᵢ` for every body;
+/// `a: None` is a zero joint acceleration, with its `S q̈` terms left out.
 ///
 /// One loop rather than the shared [`velocity_pass`](crate::algorithm::kinematics)
 /// and a second one for forces: each body's transform, velocity and `c`
 /// stay in registers instead of being stored and read back (about 30
 /// instructions a body on the Cortex-M4).
-#[inline]
+// Inlined into each caller, so that `a: None` folds away. The Cortex-M4
+// build needs the stronger hint (the pendulum's RNEA is 30 instructions
+// slower otherwise); hosts keep the plain one, the only one measured there.
+#[cfg_attr(target_arch = "arm", inline(always))]
+#[cfg_attr(not(target_arch = "arm"), inline)]
 fn forward_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     model: &Model<S, NB, NQ, NV, G>,
     data: &mut Data<S, NB, NV, G>,
     q: &[S; NQ],
     v: &[S; NV],
-    a: &[S; NV],
+    a: Option<&[S; NV]>,
     f_ext: Option<&[G::Force<S>; NB]>,
 ) {
     let minus_g = -*model.gravity();
@@ -81,10 +86,11 @@ fn forward_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
         let q_dot = joint_rates(model, i, v);
         let v_i = joint.add_motion(&v_parent, q_dot);
         let c_i = joint.cross_motion(&v_i, q_dot);
-        let a_i = joint.add_motion(
-            &(li_m_i.act_inv_motion(&a_parent) + c_i),
-            joint_rates(model, i, a),
-        );
+        let a_i = li_m_i.act_inv_motion(&a_parent) + c_i;
+        let a_i = match a {
+            Some(a) => joint.add_motion(&a_i, joint_rates(model, i, a)),
+            None => a_i,
+        };
         let inertia = model.inertia(i);
         let mut f_i = inertia.net_force(&v_i, &a_i);
         if let Some(f_ext) = f_ext {
@@ -97,12 +103,14 @@ fn forward_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
     }
 }
 
-/// `τᵢ = Sᵀ fᵢ + armatureᵢ q̈ᵢ` and `f_λ += ˡⁱXᵢ* fᵢ`, leaves to root.
-#[inline]
+/// `τᵢ = Sᵀ fᵢ + armatureᵢ q̈ᵢ` and `f_λ += ˡⁱXᵢ* fᵢ`, leaves to root
+/// (`a: None`: no armature term).
+#[cfg_attr(target_arch = "arm", inline(always))]
+#[cfg_attr(not(target_arch = "arm"), inline)]
 fn backward_force_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     model: &Model<S, NB, NQ, NV, G>,
     data: &mut Data<S, NB, NV, G>,
-    a: &[S; NV],
+    a: Option<&[S; NV]>,
 ) {
     let t = model.topology();
     let armature = model.armature();
@@ -125,11 +133,13 @@ fn backward_force_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: us
         let tau = &mut data.tau[iv..iv + nv];
         model.joint(i).project_force(&f_i, tau);
         // Rotor inertias act on the joint coordinates alone.
-        if nv == 1 {
-            tau[0] += armature[iv] * a[iv];
-        } else {
-            for ((tau, armature), a) in tau.iter_mut().zip(&armature[iv..]).zip(&a[iv..]) {
-                *tau += *armature * *a;
+        if let Some(a) = a {
+            if nv == 1 {
+                tau[0] += armature[iv] * a[iv];
+            } else {
+                for ((tau, armature), a) in tau.iter_mut().zip(&armature[iv..]).zip(&a[iv..]) {
+                    *tau += *armature * *a;
+                }
             }
         }
         if let Some(p) = model.parent(i) {
@@ -144,7 +154,7 @@ fn backward_force_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: us
 }
 
 /// Bias forces `h(q, v) = C(q, v) q̇ + g(q)` (minus external forces): RNEA
-/// with zero acceleration.
+/// with zero acceleration, its `S q̈` and armature terms left out.
 ///
 /// Returns `data.tau`; leaves valid the same fields as [`rnea`].
 ///
@@ -164,7 +174,11 @@ pub fn nonlinear_effects<
     v: &[S; NV],
     f_ext: Option<&[G::Force<S>; NB]>,
 ) -> Result<&'d [S; NV]> {
-    rnea(model, data, q, v, &[S::ZERO; NV], f_ext)
+    check_state(model, q, Some(v))?;
+    check_external(f_ext.map(|f| &f[..]))?;
+    forward_pass(model, data, q, v, None, f_ext);
+    backward_force_pass(model, data, None);
+    Ok(&data.tau)
 }
 
 /// Gravity torques `g(q)`: RNEA with zero velocity and acceleration.
