@@ -274,11 +274,14 @@ fn check_pivot<S: Scalar>(joint: usize, d: S, scale: S) -> Result<()> {
 }
 
 /// `D = Sᵀ U` of a multi-degree-of-freedom joint, inverted through its
-/// Cholesky factor, with every pivot checked.
+/// `L Δ Lᵀ` factor, with every pivot checked.
 ///
-/// `D = L Lᵀ`, then `L⁻¹` and `D⁻¹ = L⁻ᵀ L⁻¹`, its lower triangle mirrored:
-/// one division per pivot (a free flyer: 6, where solving `D x = eₖ` for
-/// each column took 72), and about n³/3 products.
+/// `L` unit lower triangular, then `L⁻¹` and `D⁻¹ = L⁻ᵀ Δ⁻¹ L⁻¹`, its lower
+/// triangle mirrored: one division per pivot and no square root (a free
+/// flyer's pivots are one dependency chain, on which a square root before
+/// each division doubled the latency). `D` is padded with the identity to
+/// `MAX_JOINT_NV` so that every loop has a constant trip count and the
+/// optimiser unrolls it (on a host; at opt-level "s" they stay loops).
 fn invert_joint_d<S: Scalar, G: Space, J: JointModel<S, G>>(
     i: usize,
     joint: &J,
@@ -287,53 +290,59 @@ fn invert_joint_d<S: Scalar, G: Space, J: JointModel<S, G>>(
     scale: S,
     d_inv: &mut [[S; MAX_JOINT_NV]],
 ) -> Result<()> {
+    const N: usize = MAX_JOINT_NV;
     let n = u_cols.len();
-    let mut l = [[S::ZERO; MAX_JOINT_NV]; MAX_JOINT_NV];
-    let mut column = [S::ZERO; MAX_JOINT_NV];
-    for (k, u) in u_cols.iter().enumerate() {
+    let mut l = [[S::ZERO; N]; N];
+    for k in n..N {
+        l[k][k] = S::ONE;
+    }
+    let mut column = [S::ZERO; N];
+    for (k, (u, a)) in u_cols.iter().zip(armature).enumerate() {
         joint.project_force(u, &mut column[..n]);
         for r in 0..n {
             l[r][k] = column[r];
         }
-        l[k][k] += armature[k];
+        l[k][k] += *a;
     }
-    // In-place Cholesky: the lower triangle of l becomes L, D = L Lᵀ, and
-    // `inv_diag` holds 1 / L[k][k].
-    let mut inv_diag = [S::ZERO; MAX_JOINT_NV];
-    for k in 0..n {
+    // In place: below the diagonal l becomes L Δ (column k of L times the
+    // pivot Δₖ), and `inv_d` holds 1 / Δₖ.
+    let mut inv_d = [S::ZERO; N];
+    for k in 0..N {
         let mut d = l[k][k];
         for m in 0..k {
-            d -= l[k][m] * l[k][m];
+            d -= l[k][m] * l[k][m] * inv_d[m];
         }
-        check_pivot(i, d, scale)?;
-        let inv_root = S::ONE / d.sqrt();
-        inv_diag[k] = inv_root;
-        for r in k + 1..n {
+        if k < n {
+            check_pivot(i, d, scale)?;
+        }
+        inv_d[k] = S::ONE / d;
+        for r in k + 1..N {
             let mut s = l[r][k];
             for m in 0..k {
-                s -= l[r][m] * l[k][m];
+                s -= l[r][m] * l[k][m] * inv_d[m];
             }
-            l[r][k] = s * inv_root;
+            l[r][k] = s;
         }
     }
-    // L⁻¹, lower triangular, column by column: L y = eₖ.
-    let mut l_inv = [[S::ZERO; MAX_JOINT_NV]; MAX_JOINT_NV];
-    for c in 0..n {
-        l_inv[c][c] = inv_diag[c];
-        for r in c + 1..n {
+    // L⁻¹ = X, unit lower triangular, column by column: L x = eₖ with
+    // L[r][m] = l[r][m] / Δₘ.
+    let mut x = [[S::ZERO; N]; N];
+    for c in 0..N {
+        x[c][c] = S::ONE;
+        for r in c + 1..N {
             let mut s = S::ZERO;
             for m in c..r {
-                s -= l[r][m] * l_inv[m][c];
+                s -= l[r][m] * inv_d[m] * x[m][c];
             }
-            l_inv[r][c] = s * inv_diag[r];
+            x[r][c] = s;
         }
     }
-    // D⁻¹[r][c] = Σₘ L⁻¹[m][r] L⁻¹[m][c] over m ≥ r ≥ c.
+    // D⁻¹[r][c] = Σₘ X[m][r] X[m][c] / Δₘ over m ≥ r ≥ c.
     for r in 0..n {
         for c in 0..=r {
             let mut s = S::ZERO;
-            for m in r..n {
-                s += l_inv[m][r] * l_inv[m][c];
+            for m in r..N {
+                s += x[m][r] * inv_d[m] * x[m][c];
             }
             d_inv[r][c] = s;
             d_inv[c][r] = s;
