@@ -59,6 +59,15 @@ pub fn crba<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
     Ok(&data.mass_matrix)
 }
 
+/// Whether the forward pass rotates the body inertias in a loop of their
+/// own after the frames instead of beside each frame. The frames form one
+/// dependency chain (each is its parent's times the joint's); the
+/// rotations depend only on their own frame, and an out-of-order core
+/// overlaps them once they no longer sit between two links of that chain
+/// (x86-64: 3 to 7 % less time with about as many instructions). The
+/// in-order Cortex-M4 gains nothing and pays for reading the frames back.
+const ROTATE_AFTER_FRAMES: bool = cfg!(not(target_arch = "arm"));
+
 /// [`crba`] without the check of `q` and without mirroring: leaves `M`'s
 /// lower triangle (diagonal included) in `data.mass_matrix`; the entries
 /// above the diagonal are not written. With `q` `None` it takes the joint
@@ -96,7 +105,9 @@ pub(crate) fn crba_lower<S: Scalar, const NB: usize, const NQ: usize, const NV: 
                 Some(_) => G::rotate_transform(&frames[p], &li_m_i),
             },
         };
-        data.ic[i] = G::rotate_inertia(model.inertia(i), &frame);
+        if !ROTATE_AFTER_FRAMES {
+            data.ic[i] = G::rotate_inertia(model.inertia(i), &frame);
+        }
         let iv = t.idx_v[i];
         for k in 0..t.nv[i] {
             s_bar[iv + k] = G::rotate_subspace_column(joint, k, &frame);
@@ -114,6 +125,11 @@ pub(crate) fn crba_lower<S: Scalar, const NB: usize, const NQ: usize, const NV: 
         data.li_m_i[i] = li_m_i;
     }
     let (frames, ic, mass_matrix) = (&data.o_m_i, &mut data.ic, &mut data.mass_matrix);
+    if ROTATE_AFTER_FRAMES {
+        for (i, (ic, frame)) in ic.iter_mut().zip(frames).enumerate() {
+            *ic = G::rotate_inertia(model.inertia(i), frame);
+        }
+    }
     // A column whose λ is the next column down waits for it, and the two
     // then walk λ together: they share every step and every `S̄`, loaded
     // once for both.
