@@ -155,12 +155,12 @@ fn symbol_address(elf: &Path, name: &str) -> Result<u64> {
 }
 
 /// Source attribution of addresses, cached.
-struct Lines {
+pub(crate) struct Lines {
     loader: addr2line::Loader,
 }
 
 impl Lines {
-    fn new(elf: &Path) -> Result<Self> {
+    pub(crate) fn new(elf: &Path) -> Result<Self> {
         let loader = addr2line::Loader::new(elf)
             .map_err(|e| anyhow::anyhow!("cannot read the debug information: {e}"))?;
         Ok(Self { loader })
@@ -227,26 +227,40 @@ fn short_function(name: &str) -> String {
 }
 
 fn print_stretch(stretch: &Stretch, lines: &Lines) -> Result<()> {
-    let total: u64 = stretch.counts.values().sum();
+    print_table(&stretch.label, &stretch.counts, lines, 1)
+}
+
+/// Prints where `counts` (address → instructions over `calls` calls) go,
+/// charged line by line, as instructions per call.
+pub(crate) fn print_table(
+    label: &str,
+    counts: &HashMap<u64, u64>,
+    lines: &Lines,
+    calls: u64,
+) -> Result<()> {
+    let total: u64 = counts.values().sum();
     let mut by_line: BTreeMap<String, u64> = BTreeMap::new();
-    for (pc, n) in &stretch.counts {
+    for (pc, n) in counts {
         *by_line.entry(lines.charge(*pc)?).or_insert(0) += n;
     }
     let mut rows: Vec<(String, u64)> = by_line.into_iter().collect();
     rows.sort_by(|a, b| b.1.cmp(&a.1).then(a.0.cmp(&b.0)));
-    println!("\n{}: {total} instructions", stretch.label);
+    let per_call = |n: u64| (n + calls / 2) / calls;
+    println!("\n{label}: {} instructions", per_call(total));
     println!("| instructions | share | charged to |");
     println!("|---:|---:|---|");
     for (key, n) in rows.iter().take(ROWS) {
         println!(
-            "| {n} | {:.1} % | `{key}` |",
+            "| {} | {:.1} % | `{key}` |",
+            per_call(*n),
             100.0 * *n as f64 / total as f64
         );
     }
     if rows.len() > ROWS {
         let rest: u64 = rows[ROWS..].iter().map(|r| r.1).sum();
         println!(
-            "| {rest} | {:.1} % | ({} more) |",
+            "| {} | {:.1} % | ({} more) |",
+            per_call(rest),
             100.0 * rest as f64 / total as f64,
             rows.len() - ROWS
         );

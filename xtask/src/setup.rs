@@ -23,7 +23,18 @@ pub fn ensure_target() -> Result<()> {
 /// Installs `qemu-system-arm` through apt-get when running as root;
 /// otherwise stops with the command to run.
 pub fn ensure_qemu() -> Result<()> {
-    if Command::new("qemu-system-arm")
+    ensure_debian_tool("qemu-system-arm", "qemu-system-arm")
+}
+
+/// Installs valgrind (callgrind counts the host's instructions) the same way.
+pub fn ensure_valgrind() -> Result<()> {
+    ensure_debian_tool("valgrind", "valgrind")
+}
+
+/// Runs `program --version`; when that fails, installs `package` through
+/// apt-get as root, or stops with the command to run.
+fn ensure_debian_tool(program: &str, package: &str) -> Result<()> {
+    if Command::new(program)
         .arg("--version")
         .output()
         .is_ok_and(|o| o.status.success())
@@ -33,8 +44,8 @@ pub fn ensure_qemu() -> Result<()> {
     let is_root = output(Command::new("id").arg("-u")).is_ok_and(|uid| uid.trim() == "0");
     if !is_root {
         bail!(
-            "qemu-system-arm is missing; install it with:\n    \
-             sudo apt-get update && sudo apt-get install -y qemu-system-arm"
+            "{program} is missing; install it with:\n    \
+             sudo apt-get update && sudo apt-get install -y {package}"
         );
     }
     shell::run(
@@ -44,12 +55,7 @@ pub fn ensure_qemu() -> Result<()> {
     )?;
     shell::run(
         Command::new("apt-get")
-            .args([
-                "install",
-                "-y",
-                "--no-install-recommends",
-                "qemu-system-arm",
-            ])
+            .args(["install", "-y", "--no-install-recommends", package])
             .env("DEBIAN_FRONTEND", "noninteractive"),
     )
 }
