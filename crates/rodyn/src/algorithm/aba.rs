@@ -15,7 +15,7 @@
 //! Pass 3 (root to leaves): `q̈ᵢ = D⁻¹ (u - Uᵀ a')`, `aᵢ = a' + S q̈ᵢ`, with
 //! `a₀ = -g`.
 
-use crate::algorithm::kinematics::{body_velocity, check_state, joint_rates};
+use crate::algorithm::kinematics::{body_transform, check_state, joint_rates};
 use crate::algorithm::rnea::check_external;
 use crate::data::Data;
 use crate::error::{Error, Quantity, Result};
@@ -64,7 +64,11 @@ pub fn aba<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: 
 /// Pass 1: `ˡⁱMᵢ`, `vᵢ`, `cᵢ`, `Iᴬᵢ = Iᵢ` and `pᴬᵢ = vᵢ ×* Iᵢ vᵢ - fᵉˣᵗᵢ`.
 ///
 /// One loop, as in RNEA's forward pass: each body's velocity stays in
-/// registers for its bias force.
+/// registers for its bias force. The joint transform goes to `data.li_m_i`
+/// at once and the velocity is formed from there (not through
+/// `body_velocity`, whose returned pair was merged on the stack and copied
+/// into `data` afterwards: x86-64 Solo12 -414 instructions, 5-8 % faster;
+/// Cortex-M4 Panda +10, quadruped -287).
 #[inline]
 fn velocity_and_bias_pass<
     S: Scalar,
@@ -80,16 +84,22 @@ fn velocity_and_bias_pass<
     f_ext: Option<&[G::Force<S>; NB]>,
 ) {
     for i in 0..NB {
-        let (li_m_i, v_i) = body_velocity(model, data, i, q, v);
+        data.li_m_i[i] = body_transform(model, i, q);
+        let v_parent = match model.parent(i) {
+            Some(p) => data.li_m_i[i].act_inv_motion(&data.v[p]),
+            None => G::Motion::<S>::ZERO,
+        };
+        let joint = model.joint(i);
+        let qd = joint_rates(model, i, v);
+        let v_i = joint.add_motion(&v_parent, qd);
+        data.v[i] = v_i;
+        data.c[i] = joint.cross_motion(&v_i, qd);
         let inertia = model.inertia(i);
+        data.ia[i] = G::Articulated::<S>::from_rigid(inertia);
         let mut p_a = inertia.velocity_product_force(&v_i);
         if let Some(f_ext) = f_ext {
             p_a -= f_ext[i];
         }
-        data.c[i] = model.joint(i).cross_motion(&v_i, joint_rates(model, i, v));
-        data.v[i] = v_i;
-        data.li_m_i[i] = li_m_i;
-        data.ia[i] = G::Articulated::<S>::from_rigid(inertia);
         data.pa[i] = p_a;
     }
 }
