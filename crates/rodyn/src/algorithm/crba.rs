@@ -26,6 +26,7 @@
 //! coupled. The backward pass fills the lower triangle only.
 
 use crate::algorithm::kinematics::{body_transform, check_state};
+use crate::algorithm::rnea;
 use crate::data::Data;
 use crate::error::Result;
 use crate::model::Model;
@@ -180,6 +181,200 @@ pub(crate) fn crba_lower<S: Scalar, const NB: usize, const NQ: usize, const NV: 
     // Rotor (armature) inertias sit on the diagonal only.
     for (k, armature) in model.armature().iter().enumerate() {
         mass_matrix[k][k] += *armature;
+    }
+}
+
+/// Bias forces and `M`'s lower triangle in one pass over the bodies, for
+/// [`Crba`](crate::algorithm::forward_dynamics::Crba): each joint
+/// transform is computed once and used at once by RNEA's forward pass
+/// (`a = 0`) and CRBA's. Leaves `h` in `data.tau` and what
+/// [`nonlinear_effects`](crate::algorithm::rnea::nonlinear_effects) and
+/// [`crba_lower`] leave; checks nothing.
+#[inline]
+pub(crate) fn bias_and_mass_lower<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    q: &[S; NQ],
+    v: &[S; NV],
+    f_ext: Option<&[G::Force<S>; NB]>,
+) {
+    let minus_g = -*model.gravity();
+    let mut columns = Columns::new();
+    for i in 0..NB {
+        let li_m_i = body_transform(model, i, q);
+        columns.body(model, data, i, &li_m_i);
+        rnea::forward_body(model, data, i, li_m_i, v, None, f_ext, &minus_g);
+    }
+    columns.rotate_inertias(model, data);
+    let mut pending = None;
+    rnea::backward_force_pass_with(model, data, None, |data, i| {
+        columns.backward_body(model, data, i, &mut pending);
+    });
+    columns.finish(model, data);
+}
+
+/// [`crba_lower`]'s passes a body at a time, for [`bias_and_mass_lower`]
+/// (`crba_lower` keeps its own loops: on the Cortex-M4 this form costs the
+/// Panda's CRBA 70 instructions).
+///
+/// The forward pass's products that the backward pass reads besides the
+/// frames (`o_m_i`) and the rotated inertias (`ic`). Per coordinate: its
+/// subspace column in its body's aligned frame, and the step from it to
+/// its λ: when it is its body's first coordinate, the offset of its body's
+/// origin from that of the nearest supporting body with coordinates (the
+/// parent's `dᵢ`, plus the offsets of any fixed bodies between); none
+/// otherwise.
+pub(crate) struct Columns<S: Scalar, const NB: usize, const NV: usize, G: Space> {
+    s_bar: [G::Motion<S>; NV],
+    steps: [Option<G::Point<S>>; NV],
+    /// For a body without coordinates, its offset from that nearest body.
+    reach: [G::Point<S>; NB],
+}
+
+impl<S: Scalar, const NB: usize, const NV: usize, G: Space> Columns<S, NB, NV, G> {
+    #[inline(always)]
+    pub(crate) fn new() -> Self {
+        let zero = <G::Transform<S> as RigidTransform<S>>::IDENTITY.translation();
+        Self {
+            s_bar: [G::Motion::<S>::ZERO; NV],
+            steps: [None; NV],
+            reach: [zero; NB],
+        }
+    }
+
+    /// Body i's step of [`crba_lower`]'s forward pass, given its joint
+    /// transform (its parent's frame must be in `data.o_m_i` already): its
+    /// frame, and on the Cortex-M4 its rotated inertia (hosts rotate them
+    /// all afterwards, [`Self::rotate_inertias`]).
+    #[inline(always)]
+    pub(crate) fn body<const NQ: usize>(
+        &mut self,
+        model: &Model<S, NB, NQ, NV, G>,
+        data: &mut Data<S, NB, NV, G>,
+        i: usize,
+        li_m_i: &G::Transform<S>,
+    ) {
+        let t = model.topology();
+        let frames = &mut data.o_m_i;
+        let joint = model.joint(i);
+        // A root body's frame is its own: its axes are the aligned ones.
+        let frame = match t.parents[i] {
+            None => <G::Transform<S> as RigidTransform<S>>::IDENTITY,
+            Some(p) => match t.parents[p] {
+                None => *li_m_i,
+                Some(_) => G::rotate_transform(&frames[p], li_m_i),
+            },
+        };
+        if !ROTATE_AFTER_FRAMES {
+            data.ic[i] = G::rotate_inertia(model.inertia(i), &frame);
+        }
+        let iv = t.idx_v[i];
+        for k in 0..t.nv[i] {
+            self.s_bar[iv + k] = G::rotate_subspace_column(joint, k, &frame);
+        }
+        let d = match t.parents[i] {
+            Some(p) if t.nv[p] == 0 => frame.translation() + self.reach[p],
+            _ => frame.translation(),
+        };
+        if t.nv[i] > 0 {
+            self.steps[iv] = Some(d);
+        } else {
+            self.reach[i] = d;
+        }
+        frames[i] = frame;
+    }
+
+    /// On hosts, every body's inertia rotated into its frame.
+    #[inline(always)]
+    pub(crate) fn rotate_inertias<const NQ: usize>(
+        &self,
+        model: &Model<S, NB, NQ, NV, G>,
+        data: &mut Data<S, NB, NV, G>,
+    ) {
+        if ROTATE_AFTER_FRAMES {
+            for (i, (ic, frame)) in data.ic.iter_mut().zip(&data.o_m_i).enumerate() {
+                *ic = G::rotate_inertia(model.inertia(i), frame);
+            }
+        }
+    }
+
+    /// Body i's step of [`crba_lower`]'s backward pass (bodies from the last to the
+    /// first): its columns of `M` and its composite inertia added to its
+    /// parent's. `pending` carries a column that waits for the next one
+    /// down; `None` before the first body.
+    #[inline(always)]
+    pub(crate) fn backward_body<const NQ: usize>(
+        &self,
+        model: &Model<S, NB, NQ, NV, G>,
+        data: &mut Data<S, NB, NV, G>,
+        i: usize,
+        pending: &mut Option<(usize, G::Force<S>)>,
+    ) {
+        let t = model.topology();
+        let (s_bar, steps) = (&self.s_bar, &self.steps);
+        let (frames, ic, mass_matrix) = (&data.o_m_i, &mut data.ic, &mut data.mass_matrix);
+        // A column whose λ is the next column down waits for it, and the
+        // two then walk λ together: they share every step and every `S̄`,
+        // loaded once for both.
+        for c in (t.idx_v[i]..t.idx_v[i] + t.nv[i]).rev() {
+            let f = ic[i].mul_motion(&s_bar[c]);
+            mass_matrix[c][c] = s_bar[c].dot(&f);
+            match pending.take() {
+                // `a = c + 1`, and `c` is its λ.
+                Some((a, mut f_a)) => {
+                    if let Some(step) = &steps[a] {
+                        f_a = G::translate_force(&f_a, step);
+                    }
+                    let (below, above) = mass_matrix.split_at_mut(a);
+                    if let (Some(row_c), Some(row_a)) = (below.last_mut(), above.first_mut()) {
+                        row_a[c] = s_bar[c].dot(&f_a);
+                        walk_lambda::<S, NB, NV, G, _, 2>(
+                            t,
+                            s_bar,
+                            steps,
+                            c,
+                            [row_a, row_c],
+                            [f_a, f],
+                            |f, d| f.map(|f| G::translate_force(&f, d)),
+                            |s, f| f.map(|f| s.dot(&f)),
+                        );
+                    }
+                }
+                None if c > 0 && t.lambda_v[c] == Some(c - 1) => *pending = Some((c, f)),
+                None => walk_lambda::<S, NB, NV, G, _, 1>(
+                    t,
+                    s_bar,
+                    steps,
+                    c,
+                    [&mut mass_matrix[c]],
+                    f,
+                    G::translate_force,
+                    |s, f| [s.dot(f)],
+                ),
+            }
+        }
+        if let Some(p) = t.parents[i] {
+            let ic_i = ic[i];
+            G::add_translated_inertia(&mut ic[p], &ic_i, &frames[i]);
+        }
+    }
+
+    /// Rotor (armature) inertias, on the diagonal only.
+    #[inline(always)]
+    pub(crate) fn finish<const NQ: usize>(
+        &self,
+        model: &Model<S, NB, NQ, NV, G>,
+        data: &mut Data<S, NB, NV, G>,
+    ) {
+        for (k, armature) in model.armature().iter().enumerate() {
+            data.mass_matrix[k][k] += *armature;
+        }
     }
 }
 

@@ -62,11 +62,14 @@ pub fn rnea<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
 /// and a second one for forces: each body's transform, velocity and `c`
 /// stay in registers instead of being stored and read back (about 30
 /// instructions a body on the Cortex-M4).
-// Inlined into each caller, so that `a: None` folds away. The Cortex-M4
-// build needs the stronger hint (the pendulum's RNEA is 30 instructions
-// slower otherwise); hosts keep the plain one, the only one measured there.
+// Inlined into each caller on the Cortex-M4, so that `a: None` folds away
+// (the pendulum's RNEA is 30 instructions slower with plain `#[inline]`).
+// Hosts keep it and the backward pass out of line, shared by `rnea` and
+// `nonlinear_effects`: inlined into `rnea` alone (as once `Crba` no longer
+// called `nonlinear_effects`), Solo12's RNEA ran 5 % more instructions and
+// 5 to 9 % more time.
 #[cfg_attr(target_arch = "arm", inline(always))]
-#[cfg_attr(not(target_arch = "arm"), inline)]
+#[cfg_attr(not(target_arch = "arm"), inline(never))]
 fn forward_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     model: &Model<S, NB, NQ, NV, G>,
     data: &mut Data<S, NB, NV, G>,
@@ -78,39 +81,82 @@ fn forward_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
     let minus_g = -*model.gravity();
     for i in 0..NB {
         let li_m_i = body_transform(model, i, q);
-        let (v_parent, a_parent) = match model.parent(i) {
-            Some(p) => (li_m_i.act_inv_motion(&data.v[p]), data.a_gf[p]),
-            None => (G::Motion::<S>::ZERO, minus_g),
-        };
-        let joint = model.joint(i);
-        let q_dot = joint_rates(model, i, v);
-        let v_i = joint.add_motion(&v_parent, q_dot);
-        let c_i = joint.cross_motion(&v_i, q_dot);
-        let a_i = li_m_i.act_inv_motion(&a_parent) + c_i;
-        let a_i = match a {
-            Some(a) => joint.add_motion(&a_i, joint_rates(model, i, a)),
-            None => a_i,
-        };
-        let inertia = model.inertia(i);
-        let mut f_i = inertia.net_force(&v_i, &a_i);
-        if let Some(f_ext) = f_ext {
-            f_i -= f_ext[i];
-        }
-        data.li_m_i[i] = li_m_i;
-        data.v[i] = v_i;
-        data.a_gf[i] = a_i;
-        data.f[i] = f_i;
+        forward_body(model, data, i, li_m_i, v, a, f_ext, &minus_g);
     }
+}
+
+/// One body of the [`forward_pass`], given its joint transform `li_m_i`
+/// and `minus_g = -g`: stores `ˡⁱMᵢ`, `vᵢ`, `aᵢ - g` and `fᵢ`.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn forward_body<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    i: usize,
+    li_m_i: G::Transform<S>,
+    v: &[S; NV],
+    a: Option<&[S; NV]>,
+    f_ext: Option<&[G::Force<S>; NB]>,
+    minus_g: &G::Motion<S>,
+) {
+    let (v_parent, a_parent) = match model.parent(i) {
+        Some(p) => (li_m_i.act_inv_motion(&data.v[p]), data.a_gf[p]),
+        None => (G::Motion::<S>::ZERO, *minus_g),
+    };
+    let joint = model.joint(i);
+    let q_dot = joint_rates(model, i, v);
+    let v_i = joint.add_motion(&v_parent, q_dot);
+    let c_i = joint.cross_motion(&v_i, q_dot);
+    let a_i = li_m_i.act_inv_motion(&a_parent) + c_i;
+    let a_i = match a {
+        Some(a) => joint.add_motion(&a_i, joint_rates(model, i, a)),
+        None => a_i,
+    };
+    let inertia = model.inertia(i);
+    let mut f_i = inertia.net_force(&v_i, &a_i);
+    if let Some(f_ext) = f_ext {
+        f_i -= f_ext[i];
+    }
+    data.li_m_i[i] = li_m_i;
+    data.v[i] = v_i;
+    data.a_gf[i] = a_i;
+    data.f[i] = f_i;
 }
 
 /// `τᵢ = Sᵀ fᵢ + armatureᵢ q̈ᵢ` and `f_λ += ˡⁱXᵢ* fᵢ`, leaves to root
 /// (`a: None`: no armature term).
 #[cfg_attr(target_arch = "arm", inline(always))]
-#[cfg_attr(not(target_arch = "arm"), inline)]
+#[cfg_attr(not(target_arch = "arm"), inline(never))]
 fn backward_force_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     model: &Model<S, NB, NQ, NV, G>,
     data: &mut Data<S, NB, NV, G>,
     a: Option<&[S; NV]>,
+) {
+    backward_force_pass_with(model, data, a, |_, _| {});
+}
+
+/// [`backward_force_pass`], running `also(data, i)` after body i's step
+/// (CRBA's backward pass, fused in by
+/// [`Crba`](crate::algorithm::forward_dynamics::Crba)).
+#[cfg_attr(target_arch = "arm", inline(always))]
+#[cfg_attr(not(target_arch = "arm"), inline)]
+pub(crate) fn backward_force_pass_with<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    a: Option<&[S; NV]>,
+    mut also: impl FnMut(&mut Data<S, NB, NV, G>, usize),
 ) {
     let t = model.topology();
     let armature = model.armature();
@@ -150,6 +196,7 @@ fn backward_force_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: us
                 data.f[p] += f_p;
             }
         }
+        also(data, i);
     }
 }
 
