@@ -80,108 +80,21 @@ pub(crate) fn crba_lower<S: Scalar, const NB: usize, const NQ: usize, const NV: 
     data: &mut Data<S, NB, NV, G>,
     q: Option<&[S; NQ]>,
 ) {
-    let t = model.topology();
-    // Per coordinate: its subspace column in its body's aligned frame, and
-    // the step from it to its λ: when it is its body's first coordinate,
-    // the offset of its body's origin from that of the nearest supporting
-    // body with coordinates (the parent's `dᵢ`, plus the offsets of any
-    // fixed bodies between); none otherwise.
-    let zero = <G::Transform<S> as RigidTransform<S>>::IDENTITY.translation();
-    let mut s_bar = [G::Motion::<S>::ZERO; NV];
-    let mut steps = [None; NV];
-    // For a body without coordinates, its offset from that nearest body.
-    let mut reach = [zero; NB];
-    let frames = &mut data.o_m_i;
+    let mut columns = Columns::new();
     for i in 0..NB {
         let li_m_i = match q {
             Some(q) => body_transform(model, i, q),
             None => data.li_m_i[i],
         };
-        let joint = model.joint(i);
-        // A root body's frame is its own: its axes are the aligned ones.
-        let frame = match t.parents[i] {
-            None => <G::Transform<S> as RigidTransform<S>>::IDENTITY,
-            Some(p) => match t.parents[p] {
-                None => li_m_i,
-                Some(_) => G::rotate_transform(&frames[p], &li_m_i),
-            },
-        };
-        if !ROTATE_AFTER_FRAMES {
-            data.ic[i] = G::rotate_inertia(model.inertia(i), &frame);
-        }
-        let iv = t.idx_v[i];
-        for k in 0..t.nv[i] {
-            s_bar[iv + k] = G::rotate_subspace_column(joint, k, &frame);
-        }
-        let d = match t.parents[i] {
-            Some(p) if t.nv[p] == 0 => frame.translation() + reach[p],
-            _ => frame.translation(),
-        };
-        if t.nv[i] > 0 {
-            steps[iv] = Some(d);
-        } else {
-            reach[i] = d;
-        }
-        frames[i] = frame;
+        columns.body(model, data, i, &li_m_i);
         data.li_m_i[i] = li_m_i;
     }
-    let (frames, ic, mass_matrix) = (&data.o_m_i, &mut data.ic, &mut data.mass_matrix);
-    if ROTATE_AFTER_FRAMES {
-        for (i, (ic, frame)) in ic.iter_mut().zip(frames).enumerate() {
-            *ic = G::rotate_inertia(model.inertia(i), frame);
-        }
-    }
-    // A column whose λ is the next column down waits for it, and the two
-    // then walk λ together: they share every step and every `S̄`, loaded
-    // once for both.
-    let mut pending: Option<(usize, G::Force<S>)> = None;
+    columns.rotate_inertias(model, data);
+    let mut pending = None;
     for i in (0..NB).rev() {
-        for c in (t.idx_v[i]..t.idx_v[i] + t.nv[i]).rev() {
-            let f = ic[i].mul_motion(&s_bar[c]);
-            mass_matrix[c][c] = s_bar[c].dot(&f);
-            match pending.take() {
-                // `a = c + 1`, and `c` is its λ.
-                Some((a, mut f_a)) => {
-                    if let Some(step) = &steps[a] {
-                        f_a = G::translate_force(&f_a, step);
-                    }
-                    let (below, above) = mass_matrix.split_at_mut(a);
-                    if let (Some(row_c), Some(row_a)) = (below.last_mut(), above.first_mut()) {
-                        row_a[c] = s_bar[c].dot(&f_a);
-                        walk_lambda::<S, NB, NV, G, _, 2>(
-                            t,
-                            &s_bar,
-                            &steps,
-                            c,
-                            [row_a, row_c],
-                            [f_a, f],
-                            |f, d| f.map(|f| G::translate_force(&f, d)),
-                            |s, f| f.map(|f| s.dot(&f)),
-                        );
-                    }
-                }
-                None if c > 0 && t.lambda_v[c] == Some(c - 1) => pending = Some((c, f)),
-                None => walk_lambda::<S, NB, NV, G, _, 1>(
-                    t,
-                    &s_bar,
-                    &steps,
-                    c,
-                    [&mut mass_matrix[c]],
-                    f,
-                    G::translate_force,
-                    |s, f| [s.dot(f)],
-                ),
-            }
-        }
-        if let Some(p) = t.parents[i] {
-            let ic_i = ic[i];
-            G::add_translated_inertia(&mut ic[p], &ic_i, &frames[i]);
-        }
+        columns.backward_body(model, data, i, &mut pending);
     }
-    // Rotor (armature) inertias sit on the diagonal only.
-    for (k, armature) in model.armature().iter().enumerate() {
-        mass_matrix[k][k] += *armature;
-    }
+    columns.finish(model, data);
 }
 
 /// Bias forces and `M`'s lower triangle in one pass over the bodies, for
@@ -219,9 +132,8 @@ pub(crate) fn bias_and_mass_lower<
     columns.finish(model, data);
 }
 
-/// [`crba_lower`]'s passes a body at a time, for [`bias_and_mass_lower`]
-/// (`crba_lower` keeps its own loops: on the Cortex-M4 this form costs the
-/// Panda's CRBA 70 instructions).
+/// CRBA's passes a body at a time, so that [`crba_lower`] runs them in its
+/// own loops and [`bias_and_mass_lower`] beside RNEA's.
 ///
 /// The forward pass's products that the backward pass reads besides the
 /// frames (`o_m_i`) and the rotated inertias (`ic`). Per coordinate: its
@@ -248,7 +160,7 @@ impl<S: Scalar, const NB: usize, const NV: usize, G: Space> Columns<S, NB, NV, G
         }
     }
 
-    /// Body i's step of [`crba_lower`]'s forward pass, given its joint
+    /// Body i's step of the forward pass, given its joint
     /// transform (its parent's frame must be in `data.o_m_i` already): its
     /// frame, and on the Cortex-M4 its rotated inertia (hosts rotate them
     /// all afterwards, [`Self::rotate_inertias`]).
@@ -304,7 +216,7 @@ impl<S: Scalar, const NB: usize, const NV: usize, G: Space> Columns<S, NB, NV, G
         }
     }
 
-    /// Body i's step of [`crba_lower`]'s backward pass (bodies from the last to the
+    /// Body i's step of the backward pass (bodies from the last to the
     /// first): its columns of `M` and its composite inertia added to its
     /// parent's. `pending` carries a column that waits for the next one
     /// down; `None` before the first body.
