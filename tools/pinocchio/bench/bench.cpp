@@ -3,6 +3,8 @@
 // libraries run the same URDFs on the same inputs.
 //
 // Usage: pinocchio-bench <manifest> <target milliseconds per measurement>
+//        pinocchio-bench --profile <manifest> <algorithm> <model> <calls>
+// (the second runs one algorithm a fixed number of times, for callgrind).
 //
 // The manifest has one line per model:
 //   model <name> <urdf> <free_flyer 0|1> <gx> <gy> <gz> <states file>
@@ -14,7 +16,9 @@
 //   time <name> <algorithm> <nanoseconds per call>
 // Algorithms: rnea, crba_local, crba_world, crba_fd_local, crba_fd_world,
 // aba_local, aba_world. Pinocchio offers both conventions; the comparison
-// credits it with the faster of the two.
+// credits it with the faster of the two. crba times the whole symmetric
+// matrix, as rodyn's crba returns it (Pinocchio computes the upper triangle
+// and the caller mirrors it); the forward dynamics use the triangle alone.
 
 #include <pinocchio/algorithm/aba.hpp>
 #include <pinocchio/algorithm/cholesky.hpp>
@@ -108,7 +112,17 @@ namespace
     }
   }
 
-  void run_model(const ModelEntry & entry, double target_ns)
+  // Exactly `calls` calls of one algorithm, for profilers (a timed
+  // measurement picks its number of calls from the clock).
+  struct ProfileRequest
+  {
+    std::string model, algorithm;
+    std::size_t calls = 0;
+  };
+
+  // Times every algorithm on the model, or with `profile` set runs the one
+  // it names.
+  void run_model(const ModelEntry & entry, double target_ns, const ProfileRequest * profile)
   {
     using namespace pinocchio;
     Model model;
@@ -121,12 +135,17 @@ namespace
     const std::vector<State> states = read_states(entry.states_file, model.nq, model.nv);
     const std::size_t n = states.size();
 
-    rnea(model, data, states[0].q, states[0].v, states[0].a);
-    std::printf("check %s", entry.name.c_str());
-    for (int k = 0; k < model.nv; ++k)
-      std::printf(" %.17g", data.tau[k]);
-    std::printf("\n");
 
+    // Pinocchio's crba fills only the upper triangle of M; rodyn's crba
+    // returns the whole matrix, so the copy into the lower triangle (what
+    // Pinocchio's documentation tells a caller to do, and what its Python
+    // binding does) is timed with it.
+    auto full_mass_matrix = [&](std::size_t k, Convention convention) {
+      crba(model, data, states[k].q, convention);
+      data.M.triangularView<Eigen::StrictlyLower>() =
+        data.M.transpose().triangularView<Eigen::StrictlyLower>();
+      keep(data.M);
+    };
     Eigen::VectorXd rhs(model.nv);
     auto crba_fd = [&](std::size_t k, Convention convention) {
       const State & s = states[k];
@@ -140,10 +159,8 @@ namespace
     const std::vector<std::pair<const char *, std::function<void(std::size_t)>>> algorithms = {
       {"rnea",
        [&](std::size_t k) { keep(rnea(model, data, states[k].q, states[k].v, states[k].a)); }},
-      {"crba_local",
-       [&](std::size_t k) { keep(crba(model, data, states[k].q, Convention::LOCAL)); }},
-      {"crba_world",
-       [&](std::size_t k) { keep(crba(model, data, states[k].q, Convention::WORLD)); }},
+      {"crba_local", [&](std::size_t k) { full_mass_matrix(k, Convention::LOCAL); }},
+      {"crba_world", [&](std::size_t k) { full_mass_matrix(k, Convention::WORLD); }},
       {"crba_fd_local", [&](std::size_t k) { crba_fd(k, Convention::LOCAL); }},
       {"crba_fd_world", [&](std::size_t k) { crba_fd(k, Convention::WORLD); }},
       {"aba_local",
@@ -157,6 +174,22 @@ namespace
          keep(aba(model, data, s.q, s.v, s.tau, Convention::WORLD));
        }},
     };
+    if (profile)
+    {
+      for (const auto & [name, body] : algorithms)
+        if (profile->algorithm == name)
+        {
+          for (std::size_t i = 0; i < profile->calls; ++i)
+            body(i % n);
+          return;
+        }
+      throw std::runtime_error("unknown algorithm " + profile->algorithm);
+    }
+    rnea(model, data, states[0].q, states[0].v, states[0].a);
+    std::printf("check %s", entry.name.c_str());
+    for (int k = 0; k < model.nv; ++k)
+      std::printf(" %.17g", data.tau[k]);
+    std::printf("\n");
     for (const auto & [name, body] : algorithms)
       std::printf("time %s %s %.3f\n", entry.name.c_str(), name, measure(target_ns, n, body));
     std::fflush(stdout);
@@ -166,15 +199,24 @@ namespace
 
 int main(int argc, char ** argv)
 {
-  if (argc != 3)
+  const bool profiling = argc == 6 && std::string(argv[1]) == "--profile";
+  if (argc != 3 && !profiling)
   {
-    std::fprintf(stderr, "usage: %s <manifest> <target ms per measurement>\n", argv[0]);
+    std::fprintf(
+      stderr,
+      "usage: %s <manifest> <target ms per measurement>\n"
+      "       %s --profile <manifest> <algorithm> <model> <calls>\n",
+      argv[0], argv[0]);
     return 2;
   }
   try
   {
-    const double target_ns = std::stod(argv[2]) * 1.0e6;
-    std::ifstream manifest(argv[1]);
+    ProfileRequest request;
+    if (profiling)
+      request = {argv[4], argv[3], std::size_t(std::stoull(argv[5]))};
+    const double target_ns = profiling ? 0.0 : std::stod(argv[2]) * 1.0e6;
+    std::ifstream manifest(argv[profiling ? 2 : 1]);
+    bool found = false;
     std::string line;
     while (std::getline(manifest, line))
     {
@@ -189,8 +231,14 @@ int main(int argc, char ** argv)
       if (!fields)
         throw std::runtime_error("malformed manifest line: " + line);
       entry.free_flyer = free_flyer != 0;
-      run_model(entry, target_ns);
+      if (profiling && entry.name != request.model)
+        continue;
+      found = true;
+      run_model(entry, target_ns, profiling ? &request : nullptr);
     }
+    if (!found)
+      throw std::runtime_error(
+        profiling ? "model " + request.model + " is not in the manifest" : "empty manifest");
   }
   catch (const std::exception & e)
   {

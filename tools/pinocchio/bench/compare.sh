@@ -2,6 +2,10 @@
 # rodyn against Pinocchio: same URDFs, same states, interleaved runs.
 #
 #   tools/pinocchio/bench/compare.sh [--rounds N] [--ms M]
+#   tools/pinocchio/bench/compare.sh --build-only
+#
+# The second builds the timing program and writes the models' inputs, then
+# prints the program's path (`cargo xtask host-profile --pinocchio` uses it).
 #
 # Needs `pip install pin cmeel-eigen cmeel-urdfdom-headers` (everything from
 # PyPI: the `pin` wheel ships Pinocchio's headers and shared libraries under
@@ -29,7 +33,7 @@ for header in pinocchio/config.hpp eigen3/Eigen/Core urdfdom_headers/urdf_model/
     fi
 done
 
-CXXFLAGS=(-std=c++17 -O3 -DNDEBUG
+CXXFLAGS=(-std=c++17 -O3 -DNDEBUG -g
     -I"$PREFIX/include" -I"$PREFIX/include/eigen3"
     -I"$PREFIX/include/urdfdom" -I"$PREFIX/include/urdfdom_headers"
     -DPINOCCHIO_WITH_URDFDOM
@@ -50,4 +54,9 @@ if [[ ! -x "$EXE" || "$SRC" -nt "$EXE" || "$0" -nt "$EXE" ]]; then
 fi
 
 cd "$ROOT"
+if [[ "${1:-}" == "--build-only" ]]; then
+    cargo run --quiet -p rodyn-bench --release --bin compare -- --inputs-only >/dev/null
+    echo "$EXE"
+    exit 0
+fi
 exec cargo run --quiet -p rodyn-bench --release --bin compare -- --pinocchio "$EXE" "$@"

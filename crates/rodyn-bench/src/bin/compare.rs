@@ -154,6 +154,9 @@ struct Options {
     program: PathBuf,
     rounds: usize,
     ms: f64,
+    /// Write the models' manifest and states, then stop (for profiling
+    /// Pinocchio on the same inputs: `cargo xtask host-profile --pinocchio`).
+    inputs_only: bool,
 }
 
 fn parse_args() -> Result<Options, String> {
@@ -161,6 +164,7 @@ fn parse_args() -> Result<Options, String> {
         program: PathBuf::new(),
         rounds: 7,
         ms: 20.0,
+        inputs_only: false,
     };
     let mut args = std::env::args().skip(1);
     while let Some(arg) = args.next() {
@@ -169,11 +173,15 @@ fn parse_args() -> Result<Options, String> {
             "--pinocchio" => opts.program = PathBuf::from(value()?),
             "--rounds" => opts.rounds = value()?.parse().map_err(|e| format!("--rounds: {e}"))?,
             "--ms" => opts.ms = value()?.parse().map_err(|e| format!("--ms: {e}"))?,
+            "--inputs-only" => opts.inputs_only = true,
             _ => return Err(format!("unknown argument {arg}")),
         }
     }
-    if opts.program.as_os_str().is_empty() {
-        return Err("usage: compare --pinocchio <program> [--rounds N] [--ms M]".into());
+    if opts.program.as_os_str().is_empty() && !opts.inputs_only {
+        return Err(
+            "usage: compare --pinocchio <program> [--rounds N] [--ms M] | compare --inputs-only"
+                .into(),
+        );
     }
     Ok(opts)
 }
@@ -229,6 +237,10 @@ fn main() -> Result<(), String> {
     }
     let manifest_path = dir.join("manifest.txt");
     std::fs::write(&manifest_path, manifest).map_err(io)?;
+    if opts.inputs_only {
+        println!("{}", manifest_path.display());
+        return Ok(());
+    }
 
     // Calibrate rodyn's call counts once, so every round does the same work.
     let target_ns = opts.ms * 1.0e6;
