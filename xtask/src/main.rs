@@ -9,7 +9,7 @@
 //! | `costs`                  | runs the cost probe, measures sizes, rewrites the tables in `docs/sections/firmware.md` and `firmware/expected/sizes.txt` |
 //! | `bless`                  | rewrites `firmware/expected/*.log` from fresh runs, keeping `*` wildcards |
 //! | `profile [words]`        | one call of each algorithm on each model in QEMU with an instruction trace; prints where its instructions go, line by line (calls whose label contains every word) |
-//! | `host-profile <algorithm> <model>` | the same on the host: callgrind's count per instruction of one call of the `profile` binary, charged line by line |
+//! | `host-profile <algorithm> <model> [--pinocchio]` | the same on the host: callgrind's count per instruction of one call of the `profile` binary (or of Pinocchio's timing program), charged line by line, and its floating-point operations |
 //!
 //! Each command installs what it needs when it is missing: the
 //! `thumbv7em-none-eabihf` target through rustup, QEMU through apt-get when
@@ -19,6 +19,7 @@ mod costs;
 mod defmt_log;
 mod expected;
 mod firmware;
+mod fp_ops;
 mod host_profile;
 mod profile;
 mod setup;
@@ -29,7 +30,7 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 const USAGE: &str =
-    "usage: cargo xtask <run [example] | test | lint | costs | bless | profile [model] [algorithm] | host-profile <algorithm> <model>>";
+    "usage: cargo xtask <run [example] | test | lint | costs | bless | profile [model] [algorithm] | host-profile <algorithm> <model> [--pinocchio]>";
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();

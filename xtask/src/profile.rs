@@ -169,7 +169,8 @@ impl Lines {
     /// The line an address is charged to: the innermost line of `rodyn`'s
     /// algorithms in its inlined call chain (`algorithm/aba.rs:145`), else
     /// the innermost line of `rodyn` (`spatial/articulated.rs:200`), else its
-    /// function.
+    /// function. Pinocchio's headers are read the same way
+    /// (`algorithm/crba.hxx:60`, `spatial/inertia.hpp:300`).
     fn charge(&self, pc: u64) -> Result<String> {
         let mut frames = self
             .loader
@@ -192,10 +193,14 @@ impl Lines {
             let (Some(file), Some(line)) = (location.file, location.line) else {
                 continue;
             };
-            let Some(at) = file.find("rodyn/src/") else {
+            // rodyn's sources, or Pinocchio's headers for its timing program.
+            let Some((at, marker)) = ["rodyn/src/", "include/pinocchio/"]
+                .into_iter()
+                .find_map(|marker| file.find(marker).map(|at| (at, marker)))
+            else {
                 continue;
             };
-            let key = format!("{}:{line}", &file[at + "rodyn/src/".len()..]);
+            let key = format!("{}:{line}", &file[at + marker.len()..]);
             if in_algorithm.is_none() && key.starts_with("algorithm/") {
                 in_algorithm = Some(key.clone());
             }
@@ -227,43 +232,59 @@ fn short_function(name: &str) -> String {
 }
 
 fn print_stretch(stretch: &Stretch, lines: &Lines) -> Result<()> {
-    print_table(&stretch.label, &stretch.counts, lines, 1)
+    print_table(&stretch.label, &stretch.counts, lines, 1, None)
 }
 
 /// Prints where `counts` (address → instructions over `calls` calls) go,
-/// charged line by line, as instructions per call.
+/// charged line by line, as instructions per call; with `fp_ops` (address
+/// → floating-point operations per execution), their arithmetic too.
 pub(crate) fn print_table(
     label: &str,
     counts: &HashMap<u64, u64>,
     lines: &Lines,
     calls: u64,
+    fp_ops: Option<&HashMap<u64, u64>>,
 ) -> Result<()> {
     let total: u64 = counts.values().sum();
-    let mut by_line: BTreeMap<String, u64> = BTreeMap::new();
+    let mut by_line: BTreeMap<String, (u64, u64)> = BTreeMap::new();
     for (pc, n) in counts {
-        *by_line.entry(lines.charge(*pc)?).or_insert(0) += n;
+        let ops = fp_ops.and_then(|f| f.get(pc)).copied().unwrap_or(0);
+        let entry = by_line.entry(lines.charge(*pc)?).or_insert((0, 0));
+        entry.0 += n;
+        entry.1 += n * ops;
     }
-    let mut rows: Vec<(String, u64)> = by_line.into_iter().collect();
-    rows.sort_by(|a, b| b.1.cmp(&a.1).then(a.0.cmp(&b.0)));
+    let mut rows: Vec<(String, (u64, u64))> = by_line.into_iter().collect();
+    rows.sort_by(|a, b| b.1 .0.cmp(&a.1 .0).then(a.0.cmp(&b.0)));
     let per_call = |n: u64| (n + calls / 2) / calls;
+    let row = |n: u64, ops: u64, what: &str| match fp_ops {
+        Some(_) => println!(
+            "| {} | {:.1} % | {} | {what} |",
+            per_call(n),
+            100.0 * n as f64 / total as f64,
+            per_call(ops)
+        ),
+        None => println!(
+            "| {} | {:.1} % | {what} |",
+            per_call(n),
+            100.0 * n as f64 / total as f64
+        ),
+    };
     println!("\n{label}: {} instructions", per_call(total));
-    println!("| instructions | share | charged to |");
-    println!("|---:|---:|---|");
-    for (key, n) in rows.iter().take(ROWS) {
-        println!(
-            "| {} | {:.1} % | `{key}` |",
-            per_call(*n),
-            100.0 * *n as f64 / total as f64
-        );
+    if fp_ops.is_some() {
+        println!("| instructions | share | fp ops | charged to |");
+        println!("|---:|---:|---:|---|");
+    } else {
+        println!("| instructions | share | charged to |");
+        println!("|---:|---:|---|");
+    }
+    for (key, (n, ops)) in rows.iter().take(ROWS) {
+        row(*n, *ops, &format!("`{key}`"));
     }
     if rows.len() > ROWS {
-        let rest: u64 = rows[ROWS..].iter().map(|r| r.1).sum();
-        println!(
-            "| {} | {:.1} % | ({} more) |",
-            per_call(rest),
-            100.0 * rest as f64 / total as f64,
-            rows.len() - ROWS
-        );
+        let rest = rows[ROWS..]
+            .iter()
+            .fold((0, 0), |acc, r| (acc.0 + r.1 .0, acc.1 + r.1 .1));
+        row(rest.0, rest.1, &format!("({} more)", rows.len() - ROWS));
     }
     Ok(())
 }

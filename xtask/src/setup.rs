@@ -31,6 +31,11 @@ pub fn ensure_valgrind() -> Result<()> {
     ensure_debian_tool("valgrind", "valgrind")
 }
 
+/// objdump (binutils), which reads the mnemonics of the profiled code.
+pub fn ensure_objdump() -> Result<()> {
+    ensure_debian_tool("objdump", "binutils")
+}
+
 /// Runs `program --version`; when that fails, installs `package` through
 /// apt-get as root, or stops with the command to run.
 fn ensure_debian_tool(program: &str, package: &str) -> Result<()> {
