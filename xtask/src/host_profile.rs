@@ -9,7 +9,7 @@
 //! address is then charged through the binary's debug information to the
 //! innermost line of `rodyn`'s algorithms it was inlined into, as
 //! [`profile`](crate::profile) does for the firmware, and its mnemonic gives
-//! its arithmetic ([`fp_ops`](crate::fp_ops)). Counts are exact for the
+//! its arithmetic ([`fp_ops`]). Counts are exact for the
 //! binary, inputs and environment: timings on a shared machine are not.
 //!
 //! With `--pinocchio` the same is done for Pinocchio's timing program

@@ -15,7 +15,7 @@
 //! | `a`            | body acceleration (without gravity)                 | body i      |
 //! | `a_gf`         | body acceleration minus gravity (RNEA's `a - g`)    | body i      |
 //! | `f`            | force transmitted across joint i to body i          | body i      |
-//! | `ic`           | composite inertia of the subtree of i (CRBA)        | aligned ī (see `crba`) |
+//! | `ic`           | composite inertia of the subtree of i (CRBA)        | body i      |
 //! | `ia`, `pa`     | projected articulated inertia and bias force (ABA)  | body i      |
 
 use crate::joint::MAX_JOINT_NV;

@@ -242,34 +242,36 @@ pub trait Space: Copy + Debug + PartialEq + 'static {
     /// Checks a joint's own parameters (unit axes).
     fn validate_joint<S: Scalar>(j: &Self::Joint<S>) -> Result<(), ModelProblem>;
 
-    // Aligned frames, as CRBA uses them: frames that differ by a translation
-    // alone. Each function reads only the rotation `R` or only the
-    // translation `t` of its transform.
+    // CRBA's backward pass: each joint transform moves every column of
+    // its body's subtree and the body's composite inertia into the
+    // parent's frame.
 
-    /// `(R_x R_y, R_x t_y)`: `x * y` with the translation of `x` dropped.
-    fn rotate_transform<S: Scalar>(
-        x: &Self::Transform<S>,
-        y: &Self::Transform<S>,
-    ) -> Self::Transform<S>;
-    /// The inertia `i` seen through the rotation of `x` alone (`R i Rᵀ`).
-    fn rotate_inertia<S: Scalar>(i: &Self::Inertia<S>, x: &Self::Transform<S>) -> Self::Inertia<S>;
-    /// Column `k` of joint `j`'s motion subspace, rotated by the rotation of
-    /// `x` alone (`R S_k`).
-    fn rotate_subspace_column<S: Scalar>(
+    /// A joint transform `ˡⁱXᵢ` prepared to act many times.
+    type Step<S: Scalar>: Copy;
+    /// Prepares `x` ([`Self::Step`]).
+    fn step<S: Scalar>(x: &Self::Transform<S>) -> Self::Step<S>;
+    /// The step of joint `j` at `q` behind `placement`: `step(&j
+    /// .placed_transform(placement, q))`, without forming the transform
+    /// where the step does not need it.
+    fn joint_step<S: Scalar>(
+        j: &Self::Joint<S>,
+        placement: &Self::Transform<S>,
+        q: &[S],
+    ) -> Self::Step<S>;
+    /// `x.act_force(f)` through a prepared step, for every force of `forces`.
+    fn step_forces<S: Scalar>(step: &Self::Step<S>, forces: &mut [Self::Force<S>]);
+    /// `acc` plus `i` moved through the step (`x.act(i)`): the composite of
+    /// a parent and its child, in the parent's frame.
+    fn add_stepped_inertia<S: Scalar>(
+        acc: &mut Self::Inertia<S>,
+        step: &Self::Step<S>,
+        i: &Self::Inertia<S>,
+    );
+    /// `i Sₖ`: the inertia times column k of joint `j`'s motion subspace,
+    /// both in the joint's body frame.
+    fn inertia_column<S: Scalar>(
+        i: &Self::Inertia<S>,
         j: &Self::Joint<S>,
         k: usize,
-        x: &Self::Transform<S>,
-    ) -> Self::Motion<S>;
-    /// The force `f` moved through the translation `t`: `n + t × f`. With
-    /// `t` the offset of frame b's origin from frame a's, both with the same
-    /// axes, it re-expresses a force about b's origin about a's.
-    fn translate_force<S: Scalar>(f: &Self::Force<S>, t: &Self::Point<S>) -> Self::Force<S>;
-    /// `acc` plus the inertia `i` moved through the translation of `x`
-    /// alone (its centre of mass shifts by `t`): the composite of the two
-    /// bodies, in `acc`'s frame.
-    fn add_translated_inertia<S: Scalar>(
-        acc: &mut Self::Inertia<S>,
-        i: &Self::Inertia<S>,
-        x: &Self::Transform<S>,
-    );
+    ) -> Self::Force<S>;
 }

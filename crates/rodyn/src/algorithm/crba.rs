@@ -1,46 +1,49 @@
 //! The composite-rigid-body algorithm for the mass matrix (Featherstone Table 6.2).
 //!
-//! It runs in aligned frames: frame ī of body i has its origin at body i's
-//! origin and the axes of its tree's root body. The lever arms stay local
-//! (a body's own size, not its distance from some common origin, which
-//! would cancel badly in `f32`), the root body's quantities are never
-//! rotated (a floating base's block stays exact), and every move between
-//! two frames is a translation, with no rotation:
+//! Everything stays in body coordinates: each body's composite inertia
+//! `Iᶜᵢ` and each column `F = Iᶜᵢ Sₖ` of its joint are formed in its own
+//! frame, and move to the parent's frame through the joint transform
+//! `ˡⁱXᵢ`. Lever arms are a link long, so `f32` keeps its accuracy.
 //!
-//! - forward pass: `ʳRᵢ = ʳR_λ ˡⁱRᵢ` and the offset `dᵢ = ʳR_λ ˡⁱpᵢ` of
-//!   body i's origin from its parent's, then each body's inertia and its
-//!   joint's subspace columns rotated into frame ī (`S̄ = ʳRᵢ S`); a root
-//!   body's frame is its own;
-//! - backward pass: each column `F = Iᶜᵢ S̄ₖ` gives `Hᵢᵢ = S̄ᵀ F`, then travels
-//!   up the supporting bodies by `n ← n + d × f`, giving `H_λᵢ = S̄_λᵀ F`
-//!   (a column and its λ, as along a chain, go up together);
-//!   the composite inertia moves to the parent by the parallel-axis
-//!   theorem (`Iᶜ_λ += Iᶜᵢ` shifted by `dᵢ`).
+//! The backward pass takes the bodies from the leaves to the root, and at
+//! body i:
+//! - its columns `F = Iᶜᵢ Sₖ` join those of its subtree, which its children
+//!   have already brought into its frame;
+//! - the column `F_d` of each coordinate d of the subtree gives row d's
+//!   entries against body i's coordinates, `M[d][k] = Sₖᵀ F_d` (for a joint
+//!   about a coordinate axis, one component of `F_d`);
+//! - the subtree's columns and `Iᶜᵢ` move to the parent's frame, one joint
+//!   transform applied to all of them at once (as Pinocchio does).
 //!
-//! The composite inertias are kept about each body's origin in the linear
-//! parametrisation (mass, first moment `h = m c`, rotational inertia `Ī`):
-//! adding a child's is a sum with a parallel-axis term, with no division
-//! by the combined mass on the pass's critical path.
+//! A revolute joint about a coordinate axis whose placement does not rotate
+//! moves vectors by mixing two of their components
+//! ([`Space::joint_step`]): a Solo12 leg's joints or a chain's cost about a
+//! third of a general transform's arithmetic per column, and their sine and
+//! cosine are all the transform that is formed. The columns moved at one
+//! body are independent of each other, so an out-of-order core overlaps
+//! them.
 //!
-//! Cost O(n·depth); only ancestors are visited, so branches are never
-//! coupled. The backward pass fills the lower triangle only.
+//! With the bodies numbered depth first (URDF order), a body's subtree
+//! holds a contiguous range of coordinates; any other tree takes the same
+//! steps with a test of support per coordinate. Cost O(n·depth); branches
+//! are never coupled. The backward pass fills the lower triangle only.
 
-use crate::algorithm::kinematics::{body_transform, check_state};
+use crate::algorithm::kinematics::check_state;
 use crate::algorithm::rnea;
 use crate::data::Data;
 use crate::error::Result;
+use crate::joint::{JointModel, MAX_JOINT_NV};
 use crate::model::Model;
-use crate::space::{BodyInertia, MotionVector, RigidTransform, Space, VectorOps};
+use crate::space::{Space, VectorOps};
 use crate::topology::Topology;
 use crate::Scalar;
 
 /// The joint-space mass matrix `M(q)` (symmetric, NV x NV).
 ///
 /// Inputs: `q` (NQ). Returns `data.mass_matrix` with both triangles filled.
-/// Leaves valid: `li_m_i`, `mass_matrix`, and `ic`, the composite inertias
-/// in the aligned frames described in the [module](self) documentation
-/// (origin at the body's origin, axes of its tree's root body). `o_m_i` is
-/// used as scratch: it holds `(ʳRᵢ, dᵢ)`, not body poses.
+/// Leaves valid: `mass_matrix`, and `ic`, each body's composite inertia
+/// (its own and its subtree's) in its own frame. Reads and writes nothing
+/// else of `data`.
 ///
 /// # Errors
 /// An invalid configuration.
@@ -60,15 +63,6 @@ pub fn crba<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
     Ok(&data.mass_matrix)
 }
 
-/// Whether the forward pass rotates the body inertias in a loop of their
-/// own after the frames instead of beside each frame. The frames form one
-/// dependency chain (each is its parent's times the joint's); the
-/// rotations depend only on their own frame, and an out-of-order core
-/// overlaps them once they no longer sit between two links of that chain
-/// (x86-64: 3 to 7 % less time with about as many instructions). The
-/// in-order Cortex-M4 gains nothing and pays for reading the frames back.
-const ROTATE_AFTER_FRAMES: bool = cfg!(not(target_arch = "arm"));
-
 /// [`crba`] without the check of `q` and without mirroring: leaves `M`'s
 /// lower triangle (diagonal included) in `data.mass_matrix`; the entries
 /// above the diagonal are not written. With `q` `None` it takes the joint
@@ -80,29 +74,33 @@ pub(crate) fn crba_lower<S: Scalar, const NB: usize, const NQ: usize, const NV: 
     data: &mut Data<S, NB, NV, G>,
     q: Option<&[S; NQ]>,
 ) {
-    let mut columns = Columns::new();
-    for i in 0..NB {
-        let li_m_i = match q {
-            Some(q) => body_transform(model, i, q),
-            None => data.li_m_i[i],
-        };
-        columns.body(model, data, i, &li_m_i);
-        data.li_m_i[i] = li_m_i;
+    let t = model.topology();
+    let subtrees = Subtrees::of(t);
+    for (i, ic) in data.ic.iter_mut().enumerate() {
+        *ic = *model.inertia(i);
     }
-    columns.rotate_inertias(model, data);
-    let mut pending = None;
+    clear_lower(t, &mut data.mass_matrix);
+    let mut columns = [G::Force::<S>::ZERO; NV];
     for i in (0..NB).rev() {
-        columns.backward_body(model, data, i, &mut pending);
+        // A root's transform moves nothing.
+        let step = model.parent(i).map(|_| match q {
+            Some(q) => {
+                let iq = t.idx_q[i];
+                G::joint_step(model.joint(i), model.placement(i), &q[iq..iq + t.nq[i]])
+            }
+            None => G::step(&data.li_m_i[i]),
+        });
+        backward_body(model, data, i, step.as_ref(), &subtrees, &mut columns);
     }
-    columns.finish(model, data);
+    add_armature(model, data);
 }
 
 /// Bias forces and `M`'s lower triangle in one pass over the bodies, for
-/// [`Crba`](crate::algorithm::forward_dynamics::Crba): each joint
-/// transform is computed once and used at once by RNEA's forward pass
-/// (`a = 0`) and CRBA's. Leaves `h` in `data.tau` and what
-/// [`nonlinear_effects`](crate::algorithm::rnea::nonlinear_effects) and
-/// [`crba_lower`] leave; checks nothing.
+/// [`Crba`](crate::algorithm::forward_dynamics::Crba): RNEA's forward pass
+/// (`a = 0`), then its backward pass with CRBA's step for each body beside
+/// its own, which reuse its joint transforms. Leaves `h` in `data.tau` and
+/// what [`nonlinear_effects`](crate::algorithm::rnea::nonlinear_effects)
+/// and [`crba_lower`] leave; checks nothing.
 #[inline]
 pub(crate) fn bias_and_mass_lower<
     S: Scalar,
@@ -117,226 +115,179 @@ pub(crate) fn bias_and_mass_lower<
     v: &[S; NV],
     f_ext: Option<&[G::Force<S>; NB]>,
 ) {
+    let t = model.topology();
+    let subtrees = Subtrees::of(t);
     let minus_g = -*model.gravity();
-    let mut columns = Columns::new();
     for i in 0..NB {
-        let li_m_i = body_transform(model, i, q);
-        columns.body(model, data, i, &li_m_i);
+        let li_m_i = crate::algorithm::kinematics::body_transform(model, i, q);
+        data.ic[i] = *model.inertia(i);
         rnea::forward_body(model, data, i, li_m_i, v, None, f_ext, &minus_g);
     }
-    columns.rotate_inertias(model, data);
-    let mut pending = None;
+    clear_lower(t, &mut data.mass_matrix);
+    let mut columns = [G::Force::<S>::ZERO; NV];
     rnea::backward_force_pass_with(model, data, None, |data, i| {
-        columns.backward_body(model, data, i, &mut pending);
+        let step = model.parent(i).map(|_| G::step(&data.li_m_i[i]));
+        backward_body(model, data, i, step.as_ref(), &subtrees, &mut columns);
     });
-    columns.finish(model, data);
+    add_armature(model, data);
 }
 
-/// CRBA's passes a body at a time, so that [`crba_lower`] runs them in its
-/// own loops and [`bias_and_mass_lower`] beside RNEA's.
-///
-/// The forward pass's products that the backward pass reads besides the
-/// frames (`o_m_i`) and the rotated inertias (`ic`). Per coordinate: its
-/// subspace column in its body's aligned frame, and the step from it to
-/// its λ: when it is its body's first coordinate, the offset of its body's
-/// origin from that of the nearest supporting body with coordinates (the
-/// parent's `dᵢ`, plus the offsets of any fixed bodies between); none
-/// otherwise.
-pub(crate) struct Columns<S: Scalar, const NB: usize, const NV: usize, G: Space> {
-    s_bar: [G::Motion<S>; NV],
-    steps: [Option<G::Point<S>>; NV],
-    /// For a body without coordinates, its offset from that nearest body.
-    reach: [G::Point<S>; NB],
+/// Which coordinates each body's subtree holds.
+enum Subtrees<const NB: usize> {
+    /// Body i's subtree holds the coordinates `idx_v[i]..end[i]` (bodies
+    /// numbered depth first).
+    Ranges([usize; NB]),
+    /// Some subtree's coordinates are not contiguous: each coordinate after
+    /// a body's own is tested for support.
+    Scattered,
 }
 
-impl<S: Scalar, const NB: usize, const NV: usize, G: Space> Columns<S, NB, NV, G> {
-    #[inline(always)]
-    pub(crate) fn new() -> Self {
-        let zero = <G::Transform<S> as RigidTransform<S>>::IDENTITY.translation();
-        Self {
-            s_bar: [G::Motion::<S>::ZERO; NV],
-            steps: [None; NV],
-            reach: [zero; NB],
+impl<const NB: usize> Subtrees<NB> {
+    #[inline]
+    fn of<const NV: usize>(t: &Topology<NB, NV>) -> Self {
+        let mut end = [0; NB];
+        let mut count = [0; NB];
+        for i in 0..NB {
+            end[i] = t.idx_v[i] + t.nv[i];
+            count[i] = t.nv[i];
         }
-    }
-
-    /// Body i's step of the forward pass, given its joint
-    /// transform (its parent's frame must be in `data.o_m_i` already): its
-    /// frame, and on the Cortex-M4 its rotated inertia (hosts rotate them
-    /// all afterwards, [`Self::rotate_inertias`]).
-    #[inline(always)]
-    pub(crate) fn body<const NQ: usize>(
-        &mut self,
-        model: &Model<S, NB, NQ, NV, G>,
-        data: &mut Data<S, NB, NV, G>,
-        i: usize,
-        li_m_i: &G::Transform<S>,
-    ) {
-        let t = model.topology();
-        let frames = &mut data.o_m_i;
-        let joint = model.joint(i);
-        // A root body's frame is its own: its axes are the aligned ones.
-        let frame = match t.parents[i] {
-            None => <G::Transform<S> as RigidTransform<S>>::IDENTITY,
-            Some(p) => match t.parents[p] {
-                None => *li_m_i,
-                Some(_) => G::rotate_transform(&frames[p], li_m_i),
-            },
-        };
-        if !ROTATE_AFTER_FRAMES {
-            data.ic[i] = G::rotate_inertia(model.inertia(i), &frame);
+        for i in (0..NB).rev() {
+            if let Some(p) = t.parents[i] {
+                end[p] = end[p].max(end[i]);
+                count[p] += count[i];
+            }
         }
-        let iv = t.idx_v[i];
-        for k in 0..t.nv[i] {
-            self.s_bar[iv + k] = G::rotate_subspace_column(joint, k, &frame);
-        }
-        let d = match t.parents[i] {
-            Some(p) if t.nv[p] == 0 => frame.translation() + self.reach[p],
-            _ => frame.translation(),
-        };
-        if t.nv[i] > 0 {
-            self.steps[iv] = Some(d);
+        if (0..NB).all(|i| end[i] - t.idx_v[i] == count[i]) {
+            Self::Ranges(end)
         } else {
-            self.reach[i] = d;
-        }
-        frames[i] = frame;
-    }
-
-    /// On hosts, every body's inertia rotated into its frame.
-    #[inline(always)]
-    pub(crate) fn rotate_inertias<const NQ: usize>(
-        &self,
-        model: &Model<S, NB, NQ, NV, G>,
-        data: &mut Data<S, NB, NV, G>,
-    ) {
-        if ROTATE_AFTER_FRAMES {
-            for (i, (ic, frame)) in data.ic.iter_mut().zip(&data.o_m_i).enumerate() {
-                *ic = G::rotate_inertia(model.inertia(i), frame);
-            }
-        }
-    }
-
-    /// Body i's step of the backward pass (bodies from the last to the
-    /// first): its columns of `M` and its composite inertia added to its
-    /// parent's. `pending` carries a column that waits for the next one
-    /// down; `None` before the first body.
-    #[inline(always)]
-    pub(crate) fn backward_body<const NQ: usize>(
-        &self,
-        model: &Model<S, NB, NQ, NV, G>,
-        data: &mut Data<S, NB, NV, G>,
-        i: usize,
-        pending: &mut Option<(usize, G::Force<S>)>,
-    ) {
-        let t = model.topology();
-        let (s_bar, steps) = (&self.s_bar, &self.steps);
-        let (frames, ic, mass_matrix) = (&data.o_m_i, &mut data.ic, &mut data.mass_matrix);
-        // A column whose λ is the next column down waits for it, and the
-        // two then walk λ together: they share every step and every `S̄`,
-        // loaded once for both.
-        for c in (t.idx_v[i]..t.idx_v[i] + t.nv[i]).rev() {
-            let f = ic[i].mul_motion(&s_bar[c]);
-            mass_matrix[c][c] = s_bar[c].dot(&f);
-            match pending.take() {
-                // `a = c + 1`, and `c` is its λ.
-                Some((a, mut f_a)) => {
-                    if let Some(step) = &steps[a] {
-                        f_a = G::translate_force(&f_a, step);
-                    }
-                    let (below, above) = mass_matrix.split_at_mut(a);
-                    if let (Some(row_c), Some(row_a)) = (below.last_mut(), above.first_mut()) {
-                        row_a[c] = s_bar[c].dot(&f_a);
-                        walk_lambda::<S, NB, NV, G, _, 2>(
-                            t,
-                            s_bar,
-                            steps,
-                            c,
-                            [row_a, row_c],
-                            [f_a, f],
-                            |f, d| f.map(|f| G::translate_force(&f, d)),
-                            |s, f| f.map(|f| s.dot(&f)),
-                        );
-                    }
-                }
-                None if c > 0 && t.lambda_v[c] == Some(c - 1) => *pending = Some((c, f)),
-                None => walk_lambda::<S, NB, NV, G, _, 1>(
-                    t,
-                    s_bar,
-                    steps,
-                    c,
-                    [&mut mass_matrix[c]],
-                    f,
-                    G::translate_force,
-                    |s, f| [s.dot(f)],
-                ),
-            }
-        }
-        if let Some(p) = t.parents[i] {
-            let ic_i = ic[i];
-            G::add_translated_inertia(&mut ic[p], &ic_i, &frames[i]);
-        }
-    }
-
-    /// Rotor (armature) inertias, on the diagonal only.
-    #[inline(always)]
-    pub(crate) fn finish<const NQ: usize>(
-        &self,
-        model: &Model<S, NB, NQ, NV, G>,
-        data: &mut Data<S, NB, NV, G>,
-    ) {
-        for (k, armature) in model.armature().iter().enumerate() {
-            data.mass_matrix[k][k] += *armature;
+            Self::Scattered
         }
     }
 }
 
-/// Fills `K` rows of `M` below column `m`, given their forces `f` about
-/// the origin of `m`'s body: down λ from `m`, the forces about each
-/// coordinate's body origin (`step`), projected on its column (`dot`). λ
-/// runs in unbroken stretches (a chain is one), each walked as slices; the
-/// coordinates between two stretches do not support `m`, and their entries
-/// are zero.
-#[inline(always)]
-#[allow(clippy::too_many_arguments)]
-fn walk_lambda<S: Scalar, const NB: usize, const NV: usize, G: Space, F: Copy, const K: usize>(
+/// Zeroes the entries below the diagonal that no column reaches: those
+/// left of each coordinate's unbroken stretch of supporting coordinates
+/// (see [`Topology::chain_start_v`]) that do not support it. A chain has
+/// none.
+#[inline]
+fn clear_lower<S: Scalar, const NB: usize, const NV: usize>(
     t: &Topology<NB, NV>,
-    s_bar: &[G::Motion<S>; NV],
-    steps: &[Option<G::Point<S>>; NV],
-    mut m: usize,
-    mut rows: [&mut [S; NV]; K],
-    mut f: F,
-    step: impl Fn(&F, &G::Point<S>) -> F,
-    dot: impl Fn(&G::Motion<S>, &F) -> [S; K],
+    m: &mut [[S; NV]; NV],
 ) {
-    loop {
-        let start = t.chain_start_v[m];
-        let stretch = s_bar[start..m].iter().zip(&steps[start + 1..=m]);
-        let mut h = rows.each_mut().map(|row| &mut row[start..m]);
-        for (j, (s, d)) in stretch.enumerate().rev() {
-            if let Some(d) = d {
-                f = step(&f, d);
-            }
-            for (h, value) in h.iter_mut().zip(dot(s, &f)) {
-                h[j] = value;
+    for (k, row) in m.iter_mut().enumerate() {
+        row[..t.chain_start_v[k]].fill(S::ZERO);
+    }
+}
+
+/// Rotor (armature) inertias, on the diagonal only.
+#[inline]
+fn add_armature<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+) {
+    for (k, armature) in model.armature().iter().enumerate() {
+        data.mass_matrix[k][k] += *armature;
+    }
+}
+
+/// Body i's step of the backward pass: its columns `Iᶜᵢ Sₖ`, its entries
+/// of `M` against every coordinate of its subtree (whose columns
+/// `columns` hold in body i's frame), then the subtree's columns and `Iᶜᵢ`
+/// moved through `step` (`ˡⁱXᵢ`; `None` at a root) to the parent's frame.
+#[inline(always)]
+fn backward_body<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    i: usize,
+    step: Option<&G::Step<S>>,
+    subtrees: &Subtrees<NB>,
+    columns: &mut [G::Force<S>; NV],
+) {
+    let t = model.topology();
+    let joint = model.joint(i);
+    let (iv, nv) = (t.idx_v[i], t.nv[i]);
+    for k in 0..nv {
+        columns[iv + k] = G::inertia_column(&data.ic[i], joint, k);
+    }
+    match subtrees {
+        Subtrees::Ranges(end) => {
+            let end = end[i];
+            let rows = &mut data.mass_matrix[iv..end];
+            project_range::<S, _, G, NV>(joint, iv, nv, iv, rows, &columns[iv..end]);
+            if let Some(step) = step {
+                G::step_forces(step, &mut columns[iv..end]);
             }
         }
-        match t.lambda_v[start] {
-            Some(p) => {
-                if let Some(d) = &steps[start] {
-                    f = step(&f, d);
+        Subtrees::Scattered => {
+            for d in iv..NV {
+                if d < iv + nv || t.supports(i, t.body_of_v[d]) {
+                    let (row, column) = (&mut data.mass_matrix[d..=d], &columns[d..=d]);
+                    project_range::<S, _, G, NV>(joint, iv, nv, d, row, column);
+                    if let Some(step) = step {
+                        G::step_forces(step, &mut columns[d..=d]);
+                    }
                 }
-                for (row, value) in rows.iter_mut().zip(dot(&s_bar[p], &f)) {
-                    row[p + 1..start].fill(S::ZERO);
-                    row[p] = value;
-                }
-                m = p;
-            }
-            None => {
-                for row in &mut rows {
-                    row[..start].fill(S::ZERO);
-                }
-                break;
             }
         }
+    }
+    if let (Some(p), Some(step)) = (t.parents[i], step) {
+        let ic_i = data.ic[i];
+        G::add_stepped_inertia(&mut data.ic[p], step, &ic_i);
+    }
+}
+
+/// `M[d][iv + k] = Sₖᵀ F_d` for the rows `rows` of `M` (row `first_row`
+/// onwards) and their columns `columns`; rows of the joint's own
+/// coordinates fill the lower triangle of its block only.
+#[inline(always)]
+fn project_range<S: Scalar, J: JointModel<S, G>, G: Space, const NV: usize>(
+    joint: &J,
+    iv: usize,
+    nv: usize,
+    first_row: usize,
+    rows: &mut [[S; NV]],
+    columns: &[G::Force<S>],
+) {
+    let pairs = rows.iter_mut().zip(columns);
+    match (nv, joint.revolute_axis_index()) {
+        (0, _) => {}
+        // A coordinate axis reads one component of each column.
+        (1, Some(axis)) => match axis {
+            0 => pairs.for_each(|(row, column)| row[iv] = column.component(0)),
+            1 => pairs.for_each(|(row, column)| row[iv] = column.component(1)),
+            _ => pairs.for_each(|(row, column)| row[iv] = column.component(2)),
+        },
+        _ => {
+            for (d, (row, column)) in (first_row..).zip(pairs) {
+                if d < iv + nv {
+                    let mut projected = [S::ZERO; MAX_JOINT_NV];
+                    joint.project_force(column, &mut projected[..nv]);
+                    row[iv..=d].copy_from_slice(&projected[..=d - iv]);
+                } else {
+                    joint.project_force(column, &mut row[iv..iv + nv]);
+                }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Subtrees;
+    use crate::topology::Topology;
+
+    #[test]
+    fn subtrees_are_ranges_when_numbered_depth_first_and_scattered_otherwise() {
+        // 0 ─ 1 ─ 2, and 0 ─ 3: each subtree's coordinates are contiguous.
+        let depth_first =
+            Topology::<4, 4>::new([None, Some(0), Some(1), Some(0)], [1; 4], [1; 4], 4);
+        match Subtrees::of(&depth_first) {
+            Subtrees::Ranges(end) => assert_eq!(end, [4, 3, 3, 4]),
+            Subtrees::Scattered => panic!("a depth-first tree has contiguous subtrees"),
+        }
+        // 0 ─ 1 ─ 3, and 0 ─ 2: body 1's subtree holds coordinates 1 and 3.
+        let interleaved =
+            Topology::<4, 4>::new([None, Some(0), Some(0), Some(1)], [1; 4], [1; 4], 4);
+        assert!(matches!(Subtrees::of(&interleaved), Subtrees::Scattered));
     }
 }

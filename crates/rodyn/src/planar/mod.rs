@@ -89,50 +89,52 @@ impl Space for Planar {
             _ => Ok(()),
         }
     }
+    // A plane rotation is already two products per vector: nothing to prepare.
+    type Step<S: Scalar> = PlanarTransform<S>;
     #[inline(always)]
-    fn rotate_transform<S: Scalar>(
-        x: &PlanarTransform<S>,
-        y: &PlanarTransform<S>,
-    ) -> PlanarTransform<S> {
-        PlanarTransform::from_cos_sin(
-            x.cos * y.cos - x.sin * y.sin,
-            x.sin * y.cos + x.cos * y.sin,
-            x.rotate(&y.trans),
-        )
+    fn step<S: Scalar>(x: &PlanarTransform<S>) -> PlanarTransform<S> {
+        *x
     }
     #[inline(always)]
-    fn rotate_inertia<S: Scalar>(i: &PlanarInertia<S>, x: &PlanarTransform<S>) -> PlanarInertia<S> {
-        PlanarInertia::new(i.mass, x.rotate(&i.com), i.izz)
-    }
-    #[inline(always)]
-    fn rotate_subspace_column<S: Scalar>(
+    fn joint_step<S: Scalar>(
         j: &PlanarJoint<S>,
-        k: usize,
-        x: &PlanarTransform<S>,
-    ) -> PlanarMotion<S> {
+        placement: &PlanarTransform<S>,
+        q: &[S],
+    ) -> PlanarTransform<S> {
         use crate::joint::JointModel;
-        // Rotations about z leave the angular component alone.
-        let s = j.subspace_column(k);
-        PlanarMotion::new(s.ang, x.rotate(&s.lin))
+        j.placed_transform(placement, q)
     }
     #[inline(always)]
-    fn translate_force<S: Scalar>(f: &PlanarForce<S>, t: &Vec2<S>) -> PlanarForce<S> {
-        PlanarForce::new(f.ang + t.cross(&f.lin), f.lin)
+    fn step_forces<S: Scalar>(x: &PlanarTransform<S>, forces: &mut [PlanarForce<S>]) {
+        for f in forces {
+            *f = x.act_force(f);
+        }
     }
     #[inline(always)]
-    fn add_translated_inertia<S: Scalar>(
+    fn add_stepped_inertia<S: Scalar>(
         acc: &mut PlanarInertia<S>,
-        i: &PlanarInertia<S>,
         x: &PlanarTransform<S>,
+        i: &PlanarInertia<S>,
     ) {
-        // As `PlanarInertia::combine`, with `i`'s centre of mass moved by `t`.
-        let com_i = i.com + x.trans;
+        // As `PlanarInertia::combine` with `x.act(i)`: its centre of mass
+        // moved, `izz` unchanged by a rotation about z.
+        let com_i = x.act_point(&i.com);
         let mass = acc.mass + i.mass;
         let inv = S::ONE / mass.max(S::from_f64(S::EPSILON));
         let d = acc.com - com_i;
         acc.izz = acc.izz + i.izz + acc.mass * i.mass * inv * d.norm_squared();
         acc.com = (acc.com * acc.mass + com_i * i.mass) * inv;
         acc.mass = mass;
+    }
+    #[inline(always)]
+    fn inertia_column<S: Scalar>(
+        i: &PlanarInertia<S>,
+        j: &PlanarJoint<S>,
+        k: usize,
+    ) -> PlanarForce<S> {
+        use crate::joint::JointModel;
+        use crate::space::BodyInertia;
+        i.mul_motion(&j.subspace_column(k))
     }
 }
 

@@ -9,6 +9,7 @@ mod force;
 mod inertia;
 mod mat3;
 mod motion;
+mod step;
 mod sym3;
 mod transform;
 mod vec3;
@@ -18,6 +19,7 @@ pub use force::Force;
 pub use inertia::Inertia;
 pub use mat3::Mat3;
 pub use motion::Motion;
+pub use step::TransformStep;
 pub use sym3::Sym3;
 pub use transform::Transform;
 pub use vec3::Vec3;
@@ -75,70 +77,79 @@ impl Space for Spatial {
             Ok(())
         }
     }
+    type Step<S: Scalar> = TransformStep<S>;
     #[inline(always)]
-    fn rotate_transform<S: Scalar>(x: &Transform<S>, y: &Transform<S>) -> Transform<S> {
-        Transform::new(x.rot.mul_mat(&y.rot), x.rot.mul_vec(&y.trans))
+    fn step<S: Scalar>(x: &Transform<S>) -> TransformStep<S> {
+        TransformStep::new(x)
     }
     #[inline(always)]
-    fn rotate_inertia<S: Scalar>(i: &Inertia<S>, x: &Transform<S>) -> Inertia<S> {
-        // `R I Rᵀ`: T = R I (27 products), then the upper triangle of T Rᵀ.
-        let r = &x.rot.m;
-        let c = &i.rot_inertia;
-        let t = |row: &[S; 3]| {
-            [
-                row[0] * c.xx + row[1] * c.xy + row[2] * c.xz,
-                row[0] * c.xy + row[1] * c.yy + row[2] * c.yz,
-                row[0] * c.xz + row[1] * c.yz + row[2] * c.zz,
-            ]
-        };
-        let (t0, t1, t2) = (t(&r[0]), t(&r[1]), t(&r[2]));
-        let dot = |a: &[S; 3], b: &[S; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-        let rot_inertia = Sym3::new(
-            dot(&t0, &r[0]),
-            dot(&t0, &r[1]),
-            dot(&t0, &r[2]),
-            dot(&t1, &r[1]),
-            dot(&t1, &r[2]),
-            dot(&t2, &r[2]),
-        );
-        Inertia::new(i.mass, x.rot.mul_vec(&i.com), rot_inertia)
-    }
-    #[inline(always)]
-    fn rotate_subspace_column<S: Scalar>(j: &Joint<S>, k: usize, x: &Transform<S>) -> Motion<S> {
-        let r = &x.rot;
-        // A coordinate axis picks one column of the rotation.
-        let axis = |a: &crate::joint::Axis<S>| match a.index() {
-            Some(c) => r.column(c),
-            None => r.mul_vec(&a.vector()),
-        };
-        match j {
-            Joint::Revolute(rj) => Motion::new(axis(&rj.axis), Vec3::ZERO),
-            Joint::Prismatic(pj) => Motion::new(Vec3::ZERO, axis(&pj.axis)),
-            Joint::Fixed => Motion::new(Vec3::ZERO, Vec3::ZERO),
-            Joint::FreeFlyer(_) if k < 3 => Motion::new(Vec3::ZERO, r.column(k)),
-            Joint::FreeFlyer(_) => Motion::new(r.column(k - 3), Vec3::ZERO),
-            Joint::Custom(_) => {
-                use crate::joint::JointModel;
-                let s = j.subspace_column(k);
-                Motion::new(r.mul_vec(&s.ang), r.mul_vec(&s.lin))
+    fn joint_step<S: Scalar>(j: &Joint<S>, placement: &Transform<S>, q: &[S]) -> TransformStep<S> {
+        use crate::joint::JointModel;
+        // A revolute joint about a coordinate axis of an unrotated
+        // placement: its sine and cosine are the step.
+        if let Joint::Revolute(r) = j {
+            if let (Some(axis), true) = (r.axis.index(), placement.rot == Mat3::IDENTITY) {
+                let (sin, cos) = q[0].sin_cos();
+                return TransformStep::Axis {
+                    axis,
+                    cos,
+                    sin,
+                    trans: placement.trans,
+                };
             }
         }
+        TransformStep::new(&j.placed_transform(placement, q))
     }
     #[inline(always)]
-    fn translate_force<S: Scalar>(f: &Force<S>, t: &Vec3<S>) -> Force<S> {
-        Force::new(f.ang + t.cross(&f.lin), f.lin)
+    fn step_forces<S: Scalar>(step: &TransformStep<S>, forces: &mut [Force<S>]) {
+        step.act_forces(forces);
     }
     #[inline(always)]
-    fn add_translated_inertia<S: Scalar>(acc: &mut Inertia<S>, i: &Inertia<S>, x: &Transform<S>) {
-        // As `Inertia::combine`, with `i`'s centre of mass moved by `t`.
-        let com_i = i.com + x.trans;
-        let mass = acc.mass + i.mass;
-        // A massless pair keeps a zero inertia rather than dividing by zero.
-        let inv = S::ONE / mass.max(S::from_f64(S::EPSILON));
-        let d = acc.com - com_i;
-        let reduced = acc.mass * i.mass * inv;
-        acc.com = (acc.com * acc.mass + com_i * i.mass) * inv;
-        acc.rot_inertia = acc.rot_inertia + i.rot_inertia + Sym3::parallel_axis(&d).scale(reduced);
-        acc.mass = mass;
+    fn add_stepped_inertia<S: Scalar>(
+        acc: &mut Inertia<S>,
+        step: &TransformStep<S>,
+        i: &Inertia<S>,
+    ) {
+        add_shifted_inertia(acc, &step.rotate_inertia(i), &step.translation());
     }
+    #[inline(always)]
+    fn inertia_column<S: Scalar>(i: &Inertia<S>, j: &Joint<S>, k: usize) -> Force<S> {
+        use crate::joint::JointModel;
+        use crate::space::BodyInertia;
+        match j.revolute_axis_index() {
+            Some(0) => revolute_inertia_column::<S, 0>(i),
+            Some(1) => revolute_inertia_column::<S, 1>(i),
+            Some(_) => revolute_inertia_column::<S, 2>(i),
+            None => i.mul_motion(&j.subspace_column(k)),
+        }
+    }
+}
+
+/// `I [e_K; 0]`: the centre of mass's momentum `m e_K × c`, and its moment
+/// about the origin.
+#[inline(always)]
+fn revolute_inertia_column<S: Scalar, const K: usize>(i: &Inertia<S>) -> Force<S> {
+    let c = &i.com;
+    let axis_cross_com = match K {
+        0 => Vec3::new(S::ZERO, -c.z, c.y),
+        1 => Vec3::new(c.z, S::ZERO, -c.x),
+        _ => Vec3::new(-c.y, c.x, S::ZERO),
+    };
+    let lin = axis_cross_com * i.mass;
+    Force::new(i.rot_inertia.column(K) + c.cross(&lin), lin)
+}
+
+/// `acc` plus `i` with its centre of mass moved by `t`: as
+/// `Inertia::combine`, without building the moved inertia.
+#[inline(always)]
+fn add_shifted_inertia<S: Scalar>(acc: &mut Inertia<S>, i: &Inertia<S>, t: &Vec3<S>) {
+    let com_i = i.com + *t;
+    let mass = acc.mass + i.mass;
+    // A massless pair keeps a zero inertia rather than dividing by zero.
+    let inv = S::ONE / mass.max(S::from_f64(S::EPSILON));
+    let d = acc.com - com_i;
+    let reduced = acc.mass * i.mass * inv;
+    acc.com = (acc.com * acc.mass + com_i * i.mass) * inv;
+    acc.rot_inertia = acc.rot_inertia + i.rot_inertia + Sym3::parallel_axis(&d).scale(reduced);
+    acc.mass = mass;
 }
