@@ -257,6 +257,8 @@ fn project_range<S: Scalar, J: JointModel<S, G>, G: Space, const NV: usize>(
             1 => pairs.for_each(|(row, column)| row[iv] = column.component(1)),
             _ => pairs.for_each(|(row, column)| row[iv] = column.component(2)),
         },
+        // One coordinate: its own row is the diagonal alone.
+        (1, None) => pairs.for_each(|(row, column)| joint.project_force(column, &mut row[iv..=iv])),
         _ => {
             for (d, (row, column)) in (first_row..).zip(pairs) {
                 if d < iv + nv {
