@@ -1,10 +1,11 @@
 //! A joint transform prepared to move many forces and one inertia into the
-//! parent's frame, as CRBA's local-frame backward pass does at each body.
+//! parent's frame, as CRBA's backward pass does at each body.
 //!
-//! Most joints of real robots turn about a coordinate axis of a placement
-//! that does not rotate (every joint of a Solo12 leg, of a planar chain);
-//! their transform then mixes two components of each vector: 4 products
-//! where a general rotation takes 9, and 12 instead of 45 for an inertia.
+//! Many joints turn about a coordinate axis of a placement that does not
+//! rotate (every joint of a Solo12 leg or of a chain, four of the UR5's
+//! six); their transform then mixes two components of each vector: 4
+//! products where a general rotation takes 9, and 12 instead of 45 for an
+//! inertia.
 
 use super::{Force, Inertia, Sym3, Transform, Vec3};
 use crate::space::RigidTransform;
