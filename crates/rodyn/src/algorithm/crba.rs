@@ -16,8 +16,8 @@
 //!   transform applied to all of them at once (as Pinocchio does).
 //!
 //! A revolute joint about a coordinate axis whose placement does not rotate
-//! moves vectors by mixing two of their components
-//! ([`Space::joint_step`]): a Solo12 leg's joints or a chain's cost about
+//! (or turns about the same axis) moves vectors by mixing two of their
+//! components ([`Space::joint_step`]): a Solo12 leg's joints or a chain's cost about
 //! half of a general transform's arithmetic per column and a third per
 //! inertia, and their sine and cosine are all the transform that is formed. The columns moved at one
 //! body are independent of each other, so an out-of-order core overlaps

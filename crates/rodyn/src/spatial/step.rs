@@ -2,10 +2,10 @@
 //! parent's frame, as CRBA's backward pass does at each body.
 //!
 //! Many joints turn about a coordinate axis of a placement that does not
-//! rotate (every joint of a Solo12 leg or of a chain, four of the UR5's
-//! six); their transform then mixes two components of each vector: 4
-//! products where a general rotation takes 9, and 12 instead of 45 for an
-//! inertia.
+//! rotate, or turns about the same axis (every joint of a Solo12 leg or of
+//! a chain, and of the UR5); their transform then mixes two components of
+//! each vector: 4 products where a general rotation takes 9, and 12
+//! instead of 45 for an inertia.
 
 use super::{Force, Inertia, Sym3, Transform, Vec3};
 use crate::space::RigidTransform;
