@@ -114,6 +114,14 @@ pub struct Topology<const NB: usize, const NV: usize> {
     /// Otherwise `k ..= last_supported_v[k]` also holds coordinates on
     /// other branches.
     pub depth_first: bool,
+    /// One past the last coordinate of body i's subtree (its own and its
+    /// descendants'). When [`subtrees_contiguous`](Self::subtrees_contiguous),
+    /// the subtree's coordinates are `idx_v[i]..subtree_end_v[i]`.
+    pub subtree_end_v: [usize; NB],
+    /// Whether every body's subtree holds a contiguous range of
+    /// coordinates, as when the bodies are numbered depth first (URDF
+    /// order). CRBA walks such ranges as slices.
+    pub subtrees_contiguous: bool,
 }
 
 impl<const NB: usize, const NV: usize> Topology<NB, NV> {
@@ -239,6 +247,28 @@ impl<const NB: usize, const NV: usize> Topology<NB, NV> {
             depth_first &= last_supported_v[k] - k + 1 == supported_count[k];
             k += 1;
         }
+        // Leaves to root again, over bodies: each subtree's last coordinate
+        // and its count of coordinates, which a contiguous range matches.
+        let mut subtree_end_v = [0; NB];
+        let mut subtree_count = [0; NB];
+        let mut i = 0;
+        while i < NB {
+            subtree_end_v[i] = idx_v[i] + nv[i];
+            subtree_count[i] = nv[i];
+            i += 1;
+        }
+        let mut subtrees_contiguous = true;
+        let mut i = NB;
+        while i > 0 {
+            i -= 1;
+            subtrees_contiguous &= subtree_end_v[i] - idx_v[i] == subtree_count[i];
+            if let Some(p) = parents[i] {
+                if subtree_end_v[p] < subtree_end_v[i] {
+                    subtree_end_v[p] = subtree_end_v[i];
+                }
+                subtree_count[p] += subtree_count[i];
+            }
+        }
         Ok(Self {
             parents,
             idx_q,
@@ -250,6 +280,8 @@ impl<const NB: usize, const NV: usize> Topology<NB, NV> {
             chain_start_v,
             last_supported_v,
             depth_first,
+            subtree_end_v,
+            subtrees_contiguous,
         })
     }
 
@@ -298,5 +330,26 @@ mod tests {
         let t = Topology::<3, 4>::new([None, None, Some(1)], [1, 2, 1], [1, 2, 1], 4);
         assert_eq!(t.last_supported_v, [0, 3, 3, 3]);
         assert!(t.depth_first);
+    }
+
+    #[test]
+    fn subtrees_are_contiguous_when_numbered_depth_first() {
+        // 0 ─ 1 ─ 2, 0 ─ 3.
+        let t = Topology::<4, 4>::new([None, Some(0), Some(1), Some(0)], [1; 4], [1; 4], 4);
+        assert_eq!(t.subtree_end_v, [4, 3, 3, 4]);
+        assert!(t.subtrees_contiguous);
+        // 0 ─ 1 ─ 3, 0 ─ 2: body 1's subtree holds coordinates 1 and 3.
+        let t = Topology::<4, 4>::new([None, Some(0), Some(0), Some(1)], [1; 4], [1; 4], 4);
+        assert!(!t.subtrees_contiguous);
+        // A fixed body (no coordinate) between two branches of the same
+        // parent: its subtree is empty here but the parent's stays whole.
+        let t = Topology::<4, 3>::new(
+            [None, Some(0), Some(0), Some(0)],
+            [1, 1, 0, 1],
+            [1, 1, 0, 1],
+            3,
+        );
+        assert_eq!(t.subtree_end_v, [3, 2, 2, 3]);
+        assert!(t.subtrees_contiguous);
     }
 }

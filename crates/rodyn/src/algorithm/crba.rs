@@ -75,7 +75,6 @@ pub(crate) fn crba_lower<S: Scalar, const NB: usize, const NQ: usize, const NV: 
     q: Option<&[S; NQ]>,
 ) {
     let t = model.topology();
-    let subtrees = Subtrees::of(t);
     for (i, ic) in data.ic.iter_mut().enumerate() {
         *ic = *model.inertia(i);
     }
@@ -90,7 +89,7 @@ pub(crate) fn crba_lower<S: Scalar, const NB: usize, const NQ: usize, const NV: 
             }
             None => G::step(&data.li_m_i[i]),
         });
-        backward_body(model, data, i, step.as_ref(), &subtrees, &mut columns);
+        backward_body(model, data, i, step.as_ref(), &mut columns);
     }
     add_armature(model, data);
 }
@@ -116,7 +115,6 @@ pub(crate) fn bias_and_mass_lower<
     f_ext: Option<&[G::Force<S>; NB]>,
 ) {
     let t = model.topology();
-    let subtrees = Subtrees::of(t);
     let minus_g = -*model.gravity();
     for i in 0..NB {
         let li_m_i = crate::algorithm::kinematics::body_transform(model, i, q);
@@ -127,42 +125,9 @@ pub(crate) fn bias_and_mass_lower<
     let mut columns = [G::Force::<S>::ZERO; NV];
     rnea::backward_force_pass_with(model, data, None, |data, i| {
         let step = model.parent(i).map(|_| G::step(&data.li_m_i[i]));
-        backward_body(model, data, i, step.as_ref(), &subtrees, &mut columns);
+        backward_body(model, data, i, step.as_ref(), &mut columns);
     });
     add_armature(model, data);
-}
-
-/// Which coordinates each body's subtree holds.
-enum Subtrees<const NB: usize> {
-    /// Body i's subtree holds the coordinates `idx_v[i]..end[i]` (bodies
-    /// numbered depth first).
-    Ranges([usize; NB]),
-    /// Some subtree's coordinates are not contiguous: each coordinate after
-    /// a body's own is tested for support.
-    Scattered,
-}
-
-impl<const NB: usize> Subtrees<NB> {
-    #[inline]
-    fn of<const NV: usize>(t: &Topology<NB, NV>) -> Self {
-        let mut end = [0; NB];
-        let mut count = [0; NB];
-        for i in 0..NB {
-            end[i] = t.idx_v[i] + t.nv[i];
-            count[i] = t.nv[i];
-        }
-        for i in (0..NB).rev() {
-            if let Some(p) = t.parents[i] {
-                end[p] = end[p].max(end[i]);
-                count[p] += count[i];
-            }
-        }
-        if (0..NB).all(|i| end[i] - t.idx_v[i] == count[i]) {
-            Self::Ranges(end)
-        } else {
-            Self::Scattered
-        }
-    }
 }
 
 /// Zeroes the entries below the diagonal that no column reaches: those
@@ -200,7 +165,6 @@ fn backward_body<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G
     data: &mut Data<S, NB, NV, G>,
     i: usize,
     step: Option<&G::Step<S>>,
-    subtrees: &Subtrees<NB>,
     columns: &mut [G::Force<S>; NV],
 ) {
     let t = model.topology();
@@ -209,23 +173,21 @@ fn backward_body<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G
     for k in 0..nv {
         columns[iv + k] = G::inertia_column(&data.ic[i], joint, k);
     }
-    match subtrees {
-        Subtrees::Ranges(end) => {
-            let end = end[i];
-            let rows = &mut data.mass_matrix[iv..end];
-            project_range::<S, _, G, NV>(joint, iv, nv, iv, rows, &columns[iv..end]);
-            if let Some(step) = step {
-                G::step_forces(step, &mut columns[iv..end]);
-            }
+    if t.subtrees_contiguous {
+        let end = t.subtree_end_v[i];
+        let rows = &mut data.mass_matrix[iv..end];
+        project_range::<S, _, G, NV>(joint, iv, nv, iv, rows, &columns[iv..end]);
+        if let Some(step) = step {
+            G::step_forces(step, &mut columns[iv..end]);
         }
-        Subtrees::Scattered => {
-            for d in iv..NV {
-                if d < iv + nv || t.supports(i, t.body_of_v[d]) {
-                    let (row, column) = (&mut data.mass_matrix[d..=d], &columns[d..=d]);
-                    project_range::<S, _, G, NV>(joint, iv, nv, d, row, column);
-                    if let Some(step) = step {
-                        G::step_forces(step, &mut columns[d..=d]);
-                    }
+    } else {
+        // The subtree's coordinates all follow body i's first.
+        for d in iv..NV {
+            if d < iv + nv || t.supports(i, t.body_of_v[d]) {
+                let (row, column) = (&mut data.mass_matrix[d..=d], &columns[d..=d]);
+                project_range::<S, _, G, NV>(joint, iv, nv, d, row, column);
+                if let Some(step) = step {
+                    G::step_forces(step, &mut columns[d..=d]);
                 }
             }
         }
@@ -270,26 +232,5 @@ fn project_range<S: Scalar, J: JointModel<S, G>, G: Space, const NV: usize>(
                 }
             }
         }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::Subtrees;
-    use crate::topology::Topology;
-
-    #[test]
-    fn subtrees_are_ranges_when_numbered_depth_first_and_scattered_otherwise() {
-        // 0 ─ 1 ─ 2, and 0 ─ 3: each subtree's coordinates are contiguous.
-        let depth_first =
-            Topology::<4, 4>::new([None, Some(0), Some(1), Some(0)], [1; 4], [1; 4], 4);
-        match Subtrees::of(&depth_first) {
-            Subtrees::Ranges(end) => assert_eq!(end, [4, 3, 3, 4]),
-            Subtrees::Scattered => panic!("a depth-first tree has contiguous subtrees"),
-        }
-        // 0 ─ 1 ─ 3, and 0 ─ 2: body 1's subtree holds coordinates 1 and 3.
-        let interleaved =
-            Topology::<4, 4>::new([None, Some(0), Some(0), Some(1)], [1; 4], [1; 4], 4);
-        assert!(matches!(Subtrees::of(&interleaved), Subtrees::Scattered));
     }
 }
