@@ -116,13 +116,30 @@ impl Space for Spatial {
     fn inertia_column<S: Scalar>(i: &Inertia<S>, j: &Joint<S>, k: usize) -> Force<S> {
         use crate::joint::JointModel;
         use crate::space::BodyInertia;
-        match j.revolute_axis_index() {
-            Some(0) => revolute_inertia_column::<S, 0>(i),
-            Some(1) => revolute_inertia_column::<S, 1>(i),
-            Some(_) => revolute_inertia_column::<S, 2>(i),
-            None => i.mul_motion(&j.subspace_column(k)),
+        match (j, j.revolute_axis_index()) {
+            (_, Some(0)) => revolute_inertia_column::<S, 0>(i),
+            (_, Some(1)) => revolute_inertia_column::<S, 1>(i),
+            (_, Some(_)) => revolute_inertia_column::<S, 2>(i),
+            // Linear columns first, then angular ones.
+            (Joint::FreeFlyer(_), None) => match k {
+                0 => linear_inertia_column::<S, 0>(i),
+                1 => linear_inertia_column::<S, 1>(i),
+                2 => linear_inertia_column::<S, 2>(i),
+                3 => revolute_inertia_column::<S, 0>(i),
+                4 => revolute_inertia_column::<S, 1>(i),
+                _ => revolute_inertia_column::<S, 2>(i),
+            },
+            (_, None) => i.mul_motion(&j.subspace_column(k)),
         }
     }
+}
+
+/// `I [0; e_K]`: the momentum `m e_K` of a translation along axis K, and
+/// its moment `c × m e_K` about the origin.
+#[inline(always)]
+fn linear_inertia_column<S: Scalar, const K: usize>(i: &Inertia<S>) -> Force<S> {
+    let lin = Vec3::unit(K) * i.mass;
+    Force::new(i.com.cross(&lin), lin)
 }
 
 /// `I [e_K; 0]`: the centre of mass's momentum `m e_K × c`, and its moment
