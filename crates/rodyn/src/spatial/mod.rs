@@ -116,20 +116,22 @@ impl Space for Spatial {
     fn inertia_column<S: Scalar>(i: &Inertia<S>, j: &Joint<S>, k: usize) -> Force<S> {
         use crate::joint::JointModel;
         use crate::space::BodyInertia;
-        match (j, j.revolute_axis_index()) {
-            (_, Some(0)) => revolute_inertia_column::<S, 0>(i),
-            (_, Some(1)) => revolute_inertia_column::<S, 1>(i),
-            (_, Some(_)) => revolute_inertia_column::<S, 2>(i),
-            // Linear columns first, then angular ones.
-            (Joint::FreeFlyer(_), None) => match k {
-                0 => linear_inertia_column::<S, 0>(i),
-                1 => linear_inertia_column::<S, 1>(i),
-                2 => linear_inertia_column::<S, 2>(i),
-                3 => revolute_inertia_column::<S, 0>(i),
-                4 => revolute_inertia_column::<S, 1>(i),
-                _ => revolute_inertia_column::<S, 2>(i),
+        match j.revolute_axis_index() {
+            Some(0) => revolute_inertia_column::<S, 0>(i),
+            Some(1) => revolute_inertia_column::<S, 1>(i),
+            Some(_) => revolute_inertia_column::<S, 2>(i),
+            None => match j {
+                // Linear columns first, then angular ones.
+                Joint::FreeFlyer(_) => match k {
+                    0 => linear_inertia_column::<S, 0>(i),
+                    1 => linear_inertia_column::<S, 1>(i),
+                    2 => linear_inertia_column::<S, 2>(i),
+                    3 => revolute_inertia_column::<S, 0>(i),
+                    4 => revolute_inertia_column::<S, 1>(i),
+                    _ => revolute_inertia_column::<S, 2>(i),
+                },
+                _ => i.mul_motion(&j.subspace_column(k)),
             },
-            (_, None) => i.mul_motion(&j.subspace_column(k)),
         }
     }
 }
