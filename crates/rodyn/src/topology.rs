@@ -122,6 +122,11 @@ pub struct Topology<const NB: usize, const NV: usize> {
     /// coordinates, as when the bodies are numbered depth first (URDF
     /// order). CRBA walks such ranges as slices.
     pub subtrees_contiguous: bool,
+    /// The mean number of moving bodies (bodies with coordinates) that
+    /// support a coordinate's body, over the coordinates, rounded down: 0
+    /// for a single joint, `(n - 1) / 2` for a chain of n links. CRBA
+    /// chooses its backward pass by it.
+    pub mean_support_depth: usize,
 }
 
 impl<const NB: usize, const NV: usize> Topology<NB, NV> {
@@ -269,6 +274,17 @@ impl<const NB: usize, const NV: usize> Topology<NB, NV> {
                 subtree_count[p] += subtree_count[i];
             }
         }
+        // Moving bodies strictly above each body, summed over coordinates.
+        let mut moving_ancestors = [0; NB];
+        let mut depth_sum = 0;
+        let mut i = 0;
+        while i < NB {
+            if let Some(p) = parents[i] {
+                moving_ancestors[i] = moving_ancestors[p] + if nv[p] > 0 { 1 } else { 0 };
+            }
+            depth_sum += nv[i] * moving_ancestors[i];
+            i += 1;
+        }
         Ok(Self {
             parents,
             idx_q,
@@ -282,6 +298,10 @@ impl<const NB: usize, const NV: usize> Topology<NB, NV> {
             depth_first,
             subtree_end_v,
             subtrees_contiguous,
+            mean_support_depth: match depth_sum.checked_div(NV) {
+                Some(mean) => mean,
+                None => 0,
+            },
         })
     }
 
@@ -351,5 +371,26 @@ mod tests {
         );
         assert_eq!(t.subtree_end_v, [3, 2, 2, 3]);
         assert!(t.subtrees_contiguous);
+    }
+
+    #[test]
+    fn mean_support_depth_counts_moving_ancestors() {
+        // A chain of 7: 0 + 1 + ... + 6 = 21 over 7 coordinates.
+        let chain = Topology::<7, 7>::new(
+            core::array::from_fn(|i| i.checked_sub(1)),
+            [1; 7],
+            [1; 7],
+            7,
+        );
+        assert_eq!(chain.mean_support_depth, 3);
+        // Fixed bodies on the way are not counted: body 4 has one moving
+        // ancestor, not four; depths 0 and 1, a mean of 0.
+        let t = Topology::<5, 2>::new(
+            [None, Some(0), Some(1), Some(2), Some(3)],
+            [1, 0, 0, 0, 1],
+            [1, 0, 0, 0, 1],
+            2,
+        );
+        assert_eq!(t.mean_support_depth, 0);
     }
 }
