@@ -261,8 +261,7 @@ fn backward_body<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G
     }
     if t.subtrees_contiguous {
         let end = t.subtree_end_v[i];
-        let rows = &mut data.mass_matrix[iv..end];
-        project_range::<S, _, G, NV>(joint, iv, nv, iv, rows, &columns[iv..end]);
+        project_rows(joint, iv, nv, iv..end, &mut data.mass_matrix, columns);
         if let Some(step) = step {
             G::step_forces(step, &mut columns[iv..end]);
         }
@@ -270,8 +269,7 @@ fn backward_body<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G
         // The subtree's coordinates all follow body i's first.
         for d in iv..NV {
             if d < iv + nv || t.supports(i, t.body_of_v[d]) {
-                let (row, column) = (&mut data.mass_matrix[d..=d], &columns[d..=d]);
-                project_range::<S, _, G, NV>(joint, iv, nv, d, row, column);
+                project_rows(joint, iv, nv, d..d + 1, &mut data.mass_matrix, columns);
                 if let Some(step) = step {
                     G::step_forces(step, &mut columns[d..=d]);
                 }
@@ -284,37 +282,40 @@ fn backward_body<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G
     }
 }
 
-/// `M[d][iv + k] = Sₖᵀ F_d` for the rows `rows` of `M` (row `first_row`
-/// onwards) and their columns `columns`; rows of the joint's own
-/// coordinates fill the lower triangle of its block only.
+/// `M[d][iv + k] = Sₖᵀ F_d` for the rows d of `rows`, with `F_d =
+/// columns[d]`; rows of the joint's own coordinates fill the lower
+/// triangle of its block only.
 #[inline(always)]
-fn project_range<S: Scalar, J: JointModel<S, G>, G: Space, const NV: usize>(
+fn project_rows<S: Scalar, J: JointModel<S, G>, G: Space, const NV: usize>(
     joint: &J,
     iv: usize,
     nv: usize,
-    first_row: usize,
-    rows: &mut [[S; NV]],
-    columns: &[G::Force<S>],
+    rows: core::ops::Range<usize>,
+    m: &mut [[S; NV]; NV],
+    columns: &[G::Force<S>; NV],
 ) {
-    let pairs = rows.iter_mut().zip(columns);
+    // Index loops over slices as long as the range: no bounds checks
+    // inside, and no slice lengths to divide out of byte counts (a body's
+    // subtree here is one to 30 rows; longer chains in `f64` take
+    // `about_root`). On the Panda and Solo12, 4-5 % fewer instructions
+    // than zipped slice iterators.
+    let (m, columns) = (&mut m[..rows.end], &columns[..rows.end]);
     match (nv, joint.revolute_axis_index()) {
         (0, _) => {}
         // A coordinate axis reads one component of each column.
-        (1, Some(axis)) => match axis {
-            0 => pairs.for_each(|(row, column)| row[iv] = column.component(0)),
-            1 => pairs.for_each(|(row, column)| row[iv] = column.component(1)),
-            _ => pairs.for_each(|(row, column)| row[iv] = column.component(2)),
-        },
+        (1, Some(0)) => rows.for_each(|d| m[d][iv] = columns[d].component(0)),
+        (1, Some(1)) => rows.for_each(|d| m[d][iv] = columns[d].component(1)),
+        (1, Some(_)) => rows.for_each(|d| m[d][iv] = columns[d].component(2)),
         // One coordinate: its own row is the diagonal alone.
-        (1, None) => pairs.for_each(|(row, column)| joint.project_force(column, &mut row[iv..=iv])),
+        (1, None) => rows.for_each(|d| joint.project_force(&columns[d], &mut m[d][iv..=iv])),
         _ => {
-            for (d, (row, column)) in (first_row..).zip(pairs) {
+            for d in rows {
                 if d < iv + nv {
                     let mut projected = [S::ZERO; MAX_JOINT_NV];
-                    joint.project_force(column, &mut projected[..nv]);
-                    row[iv..=d].copy_from_slice(&projected[..=d - iv]);
+                    joint.project_force(&columns[d], &mut projected[..nv]);
+                    m[d][iv..=d].copy_from_slice(&projected[..=d - iv]);
                 } else {
-                    joint.project_force(column, &mut row[iv..iv + nv]);
+                    joint.project_force(&columns[d], &mut m[d][iv..iv + nv]);
                 }
             }
         }
