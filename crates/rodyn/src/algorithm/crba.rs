@@ -17,16 +17,20 @@
 //!
 //! A revolute joint about a coordinate axis whose placement does not rotate
 //! (or turns about the same axis) moves vectors by mixing two of their
-//! components ([`Space::joint_step`]): a Solo12 leg's joints or a chain's cost about
-//! half of a general transform's arithmetic per column and a third per
-//! inertia, and their sine and cosine are all the transform that is formed. The columns moved at one
-//! body are independent of each other, so an out-of-order core overlaps
-//! them.
+//! components ([`Space::joint_step`]): a Solo12 leg's joints or a chain's
+//! cost about half of a general transform's arithmetic per column and a
+//! third per inertia, and their sine and cosine are all the transform that
+//! is formed. The columns moved at one body are independent of each other,
+//! so an out-of-order core overlaps them.
 //!
 //! With the bodies numbered depth first (URDF order), a body's subtree
 //! holds a contiguous range of coordinates; any other tree takes the same
 //! steps with a test of support per coordinate. Cost O(n·depth); branches
 //! are never coupled. The backward pass fills the lower triangle only.
+//!
+//! Long chains in `f64` take a second form of the backward pass,
+//! `about_root`: columns and subspace columns moved once into the root
+//! frame, each entry a dot product (Pinocchio's world convention).
 
 use crate::algorithm::kinematics::{body_transform, check_state};
 use crate::algorithm::rnea;
@@ -42,8 +46,9 @@ use crate::Scalar;
 ///
 /// Inputs: `q` (NQ). Returns `data.mass_matrix` with both triangles filled.
 /// Leaves valid: `mass_matrix`, and `ic`, each body's composite inertia
-/// (its own and its subtree's) in its own frame. Reads and writes nothing
-/// else of `data`.
+/// (its own and its subtree's) in its own frame; on the long chains that
+/// take the root-frame pass (`f64`, 31 links or more), `li_m_i` too.
+/// Reads and writes nothing else of `data`.
 ///
 /// # Errors
 /// An invalid configuration.
