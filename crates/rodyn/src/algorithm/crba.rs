@@ -33,6 +33,7 @@
 //! frame, each entry a dot product (Pinocchio's world convention).
 
 use crate::algorithm::kinematics::{body_transform, check_state};
+use crate::algorithm::ltdl::supporting_ranges;
 use crate::algorithm::rnea;
 use crate::data::Data;
 use crate::error::Result;
@@ -204,13 +205,10 @@ fn about_root<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: S
             for j in iv..=c {
                 row[j] = s_root[j].dot(&f);
             }
-            let mut last = t.lambda_v[iv];
-            while let Some(end) = last {
-                let first = t.chain_start_v[end];
-                for (entry, s) in row[first..=end].iter_mut().zip(&s_root[first..=end]) {
+            for (first, last) in supporting_ranges(t, t.lambda_v[iv]) {
+                for (entry, s) in row[first..=last].iter_mut().zip(&s_root[first..=last]) {
                     *entry = s.dot(&f);
                 }
-                last = t.lambda_v[first];
             }
         }
         if let Some(p) = t.parents[i] {

@@ -38,7 +38,7 @@ const HOST_ORDER: bool = cfg!(not(target_arch = "arm"));
 ///
 /// [`Topology::chain_start_v`]: crate::topology::Topology::chain_start_v
 #[inline]
-fn supporting_ranges<const NB: usize, const NV: usize>(
+pub(crate) fn supporting_ranges<const NB: usize, const NV: usize>(
     topology: &Topology<NB, NV>,
     k: Option<usize>,
 ) -> impl Iterator<Item = (usize, usize)> + '_ {
