@@ -229,7 +229,13 @@ fn clear_lower<S: Scalar, const NB: usize, const NV: usize>(
     m: &mut [[S; NV]; NV],
 ) {
     for (k, row) in m.iter_mut().enumerate() {
-        row[..t.chain_start_v[k]].fill(S::ZERO);
+        // Most rows have nothing to clear (every row of a chain): they
+        // skip the fill, which can become a call into `memset` (M4, Panda
+        // CRBA 20 instructions fewer).
+        let start = t.chain_start_v[k];
+        if start > 0 {
+            row[..start].fill(S::ZERO);
+        }
     }
 }
 

@@ -1,8 +1,8 @@
 //! Featherstone's 6-D spatial algebra for models in 3-D space.
 //!
 //! One concept per file: [`Motion`], [`Force`], [`Transform`], [`Inertia`],
-//! [`ArticulatedInertia6`], and the 3-D building blocks [`Vec3`], [`Mat3`],
-//! [`Sym3`]. [`Spatial`] ties them together as a [`Space`].
+//! [`ArticulatedInertia6`], [`TransformStep`], and the 3-D building blocks
+//! [`Vec3`], [`Mat3`], [`Sym3`]. [`Spatial`] ties them together as a [`Space`].
 
 mod articulated;
 mod force;
@@ -85,20 +85,35 @@ impl Space for Spatial {
     #[inline(always)]
     fn joint_step<S: Scalar>(j: &Joint<S>, placement: &Transform<S>, q: &[S]) -> TransformStep<S> {
         use crate::joint::JointModel;
-        // A revolute joint about a coordinate axis of an unrotated
-        // placement: its sine and cosine are the step.
+        // A revolute joint about a coordinate axis of a placement that
+        // leaves that axis alone (no rotation, or a turn about the same
+        // axis): the step turns by the sum of the two angles. Any other
+        // placement of such a joint cannot give a turn about a coordinate
+        // axis, so it skips `TransformStep::new`'s search.
+        let mut about_other_axes = false;
         if let Joint::Revolute(r) = j {
-            if let (Some(axis), true) = (r.axis.index(), placement.rot == Mat3::IDENTITY) {
-                let (sin, cos) = q[0].sin_cos();
-                return TransformStep::Axis {
-                    axis,
-                    cos,
-                    sin,
-                    trans: placement.trans,
-                };
+            if let Some(axis) = r.axis.index() {
+                match TransformStep::turn_about(&placement.rot, axis) {
+                    Some((cos_p, sin_p)) => {
+                        let (sin, cos) = q[0].sin_cos();
+                        // Exact when the placement does not rotate.
+                        return TransformStep::Axis {
+                            axis,
+                            cos: cos_p * cos - sin_p * sin,
+                            sin: sin_p * cos + cos_p * sin,
+                            trans: placement.trans,
+                        };
+                    }
+                    None => about_other_axes = true,
+                }
             }
         }
-        TransformStep::new(&j.placed_transform(placement, q))
+        let x = j.placed_transform(placement, q);
+        if about_other_axes {
+            TransformStep::General(x)
+        } else {
+            TransformStep::new(&x)
+        }
     }
     #[inline(always)]
     fn step_forces<S: Scalar>(step: &TransformStep<S>, forces: &mut [Force<S>]) {

@@ -7,7 +7,7 @@
 //! each vector: 4 products where a general rotation takes 9, and 12
 //! instead of 45 for an inertia.
 
-use super::{Force, Inertia, Sym3, Transform, Vec3};
+use super::{Force, Inertia, Mat3, Sym3, Transform, Vec3};
 use crate::space::RigidTransform;
 use crate::Scalar;
 
@@ -37,25 +37,30 @@ impl<S: Scalar> TransformStep<S> {
     #[inline(always)]
     #[must_use]
     pub fn new(x: &Transform<S>) -> Self {
-        let m = &x.rot.m;
-        let (zero, one) = (S::ZERO, S::ONE);
         for axis in 0..3 {
-            let (a, b) = ((axis + 1) % 3, (axis + 2) % 3);
-            let about_axis = m[axis][axis] == one
-                && m[axis][a] == zero
-                && m[axis][b] == zero
-                && m[a][axis] == zero
-                && m[b][axis] == zero;
-            if about_axis {
+            if let Some((cos, sin)) = Self::turn_about(&x.rot, axis) {
                 return Self::Axis {
                     axis,
-                    cos: m[a][a],
-                    sin: m[b][a],
+                    cos,
+                    sin,
                     trans: x.trans,
                 };
             }
         }
         Self::General(*x)
+    }
+
+    /// `Some((cos, sin))` when `rot` turns about coordinate axis `axis`
+    /// only: its row and column `axis` are exactly those of the identity.
+    #[inline(always)]
+    #[must_use]
+    pub fn turn_about(rot: &Mat3<S>, axis: usize) -> Option<(S, S)> {
+        // Constant indices for each axis: no index arithmetic at run time.
+        match axis {
+            0 => turn_about_axis::<S, 0>(rot),
+            1 => turn_about_axis::<S, 1>(rot),
+            _ => turn_about_axis::<S, 2>(rot),
+        }
     }
 
     /// The translation: the child's origin in the parent's frame.
@@ -109,6 +114,17 @@ impl<S: Scalar> TransformStep<S> {
             }
         }
     }
+}
+
+/// [`TransformStep::turn_about`] for axis `K`.
+#[inline(always)]
+fn turn_about_axis<S: Scalar, const K: usize>(rot: &Mat3<S>) -> Option<(S, S)> {
+    let m = &rot.m;
+    let (zero, one) = (S::ZERO, S::ONE);
+    let (a, b) = ((K + 1) % 3, (K + 2) % 3);
+    let about_axis =
+        m[K][K] == one && m[K][a] == zero && m[K][b] == zero && m[a][K] == zero && m[b][K] == zero;
+    about_axis.then(|| (m[a][a], m[b][a]))
 }
 
 /// `X* f` over `forces` for a rotation by `(c, s)` about axis `K`.
@@ -225,6 +241,41 @@ mod tests {
                 }
             }
             assert_eq!(step.translation(), trans);
+        }
+    }
+
+    #[test]
+    fn a_joint_step_agrees_with_its_placed_transform() {
+        use crate::joint::{Axis, Joint, JointModel};
+        use crate::space::{Space, VectorOps};
+        use crate::spatial::Spatial;
+        let f = Force::new(Vec3::new(0.3, -1.2, 0.7), Vec3::new(2.0, 0.5, -0.4));
+        let trans = Vec3::new(0.2, -0.1, 0.3);
+        let quarter_x = Mat3::from_rows([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]]);
+        let (s, c) = 0.4f64.sin_cos();
+        // No rotation and a turn about the joint's axis take the axis
+        // step; a quarter turn about another axis (a URDF arm's) does not.
+        let placements = [
+            (Mat3::IDENTITY, true),
+            (Mat3::from_axis_index(2, s, c), true),
+            (quarter_x, false),
+        ];
+        for (rot, about_axis) in placements {
+            let placement = Transform::new(rot, trans);
+            let joint = Joint::revolute(Axis::Z);
+            let q = [-1.3];
+            let step = Spatial::joint_step(&joint, &placement, &q);
+            assert_eq!(
+                matches!(step, TransformStep::Axis { axis: 2, .. }),
+                about_axis
+            );
+            let mut fast = [f];
+            Spatial::step_forces(&step, &mut fast);
+            let slow = joint.placed_transform(&placement, &q).act_force(&f);
+            for j in 0..6 {
+                let (a, b) = (fast[0].component(j), slow.component(j));
+                assert!(close(a, b), "component {j}: {a} against {b}");
+            }
         }
     }
 }
