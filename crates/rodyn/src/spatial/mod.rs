@@ -87,9 +87,10 @@ impl Space for Spatial {
         use crate::joint::JointModel;
         // A revolute joint about a coordinate axis of a placement that
         // leaves that axis alone (no rotation, or a turn about the same
-        // axis): the step turns by the sum of the two angles. Any other
-        // placement of such a joint cannot give a turn about a coordinate
-        // axis, so it skips `TransformStep::new`'s search.
+        // axis): the step turns by the sum of the two angles. With any
+        // other placement the transform turns about a coordinate axis at
+        // isolated angles at most, so it takes the general step without
+        // `TransformStep::new`'s search.
         let mut about_other_axes = false;
         if let Joint::Revolute(r) = j {
             if let Some(axis) = r.axis.index() {
