@@ -60,7 +60,7 @@ pub fn generate(model: &ModelDescription, module: &str, source: &str) -> Result<
     let geometry = if model.planar {
         "use rodyn::planar::{Planar, PlanarInertia, PlanarJoint, PlanarMotion, PlanarTransform, Vec2};"
     } else {
-        "use rodyn::joint::{Axis, Joint};\nuse rodyn::spatial::{Inertia, Mat3, Motion, Sym3, Transform, Vec3};"
+        "use rodyn::joint::{Axis, Joint};\nuse rodyn::spatial::{AxisPermutation, Inertia, Mat3, Motion, Sym3, Transform, Vec3};"
     };
     for line in geometry.lines() {
         w.line(line);
@@ -311,6 +311,7 @@ fn model_macro(w: &mut Writer, model: &ModelDescription) -> Result<()> {
         ));
     }
     w.close(")");
+    placement_turns(w, model);
     w.close("};");
     w.close("}");
     w.blank();
@@ -324,6 +325,40 @@ fn model_macro(w: &mut Writer, model: &ModelDescription) -> Result<()> {
     }
     w.blank();
     Ok(())
+}
+
+/// Declares the 3-D placements whose rotations are quarter turns (the
+/// identity included), so that CRBA can take them into its frames
+/// (`Model::with_placement_turns`).
+fn placement_turns(w: &mut Writer, model: &ModelDescription) {
+    if model.planar {
+        return;
+    }
+    let turns: Vec<Option<Mat3>> = model
+        .bodies
+        .iter()
+        .map(|b| snap_signed_permutation(&b.placement.rot))
+        .collect();
+    if turns.iter().all(Option::is_none) {
+        return;
+    }
+    w.open(".with_placement_turns([");
+    for (b, turn) in model.bodies.iter().zip(&turns) {
+        let text = match turn {
+            Some(rot) if *rot == IDENTITY => "Some(AxisPermutation::IDENTITY)".to_string(),
+            Some(rot) => {
+                let rows = rot
+                    .iter()
+                    .map(|r| format!("[{}, {}, {}]", r[0] as i8, r[1] as i8, r[2] as i8))
+                    .collect::<Vec<_>>();
+                format!("Some(AxisPermutation::from_rows([{}]))", rows.join(", "))
+            }
+            None => "None".to_string(),
+        };
+        w.line(&format!("// {}", b.joint_name));
+        w.line(&format!("{text},"));
+    }
+    w.close("])");
 }
 
 fn placement(planar: bool, p: &Pose) -> String {

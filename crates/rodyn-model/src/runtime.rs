@@ -12,6 +12,7 @@
 
 use crate::description::{JointType, ModelDescription};
 use crate::diagnostic::{Diagnostic, Location, Result};
+use crate::geometry::snap_signed_permutation;
 use rodyn::algorithm::kinematics::forward_kinematics;
 use rodyn::joint::{Axis, Joint};
 use rodyn::space::RigidTransform;
@@ -97,8 +98,9 @@ impl RuntimeModel {
                 JointType::Prismatic { axis: a } => Joint::prismatic(axis(&a)),
                 JointType::FreeFlyer | JointType::PlanarFloating => Joint::free_flyer(),
             };
-            placements[i] =
-                Transform::new(Mat3::from_rows(b.placement.rot), vec3(&b.placement.trans));
+            // Quarter turns exact, as the generated code has them.
+            let rot = snap_signed_permutation(&b.placement.rot).unwrap_or(b.placement.rot);
+            placements[i] = Transform::new(Mat3::from_rows(rot), vec3(&b.placement.trans));
             let r = &b.inertia.inertia;
             inertias[i] = Inertia::new(
                 b.inertia.mass,
@@ -119,13 +121,16 @@ impl RuntimeModel {
             };
         }
         let g = vec3(&description.gravity);
-        let model = Box::new(Model::new(
-            parents,
-            joints,
-            placements,
-            inertias,
-            Motion::new(Vec3::ZERO, g),
-        ));
+        let model = Box::new(
+            Model::new(
+                parents,
+                joints,
+                placements,
+                inertias,
+                Motion::new(Vec3::ZERO, g),
+            )
+            .with_recognised_turns(),
+        );
         Ok(Self { model, description })
     }
 

@@ -15,8 +15,14 @@
 //! | `a`            | body acceleration (without gravity)                 | body i      |
 //! | `a_gf`         | body acceleration minus gravity (RNEA's `a - g`)    | body i      |
 //! | `f`            | force transmitted across joint i to body i          | body i      |
-//! | `ic`           | composite inertia of the subtree of i (CRBA)        | body i      |
+//! | `ic`           | composite inertia of the subtree of i (CRBA)        | body i, turned¹ |
 //! | `ia`, `pa`     | projected articulated inertia and bias force (ABA)  | body i      |
+//!
+//! ¹ Body i's frame turned by [`TurnedFrame::turn`](crate::spatial::TurnedFrame::turn)
+//! of [`Model::turned_frame`](crate::Model::turned_frame)`(i)` (the quarter turns of the
+//! placements above it; the identity at a root and in a model without
+//! declared turns), except on the long chains that take CRBA's
+//! root-frame pass, where it is body i's own frame.
 
 use crate::joint::MAX_JOINT_NV;
 use crate::space::{ArticulatedInertia, BodyInertia, RigidTransform, Space, VectorOps};

@@ -19,6 +19,7 @@
 
 use crate::error::ModelProblem;
 use crate::joint::JointModel;
+use crate::spatial::{AxisPermutation, TurnedFrame};
 use crate::Scalar;
 use core::fmt::Debug;
 use core::ops::{Add, AddAssign, Mul, Neg, Sub, SubAssign};
@@ -274,4 +275,62 @@ pub trait Space: Copy + Debug + PartialEq + 'static {
         j: &Self::Joint<S>,
         k: usize,
     ) -> Self::Force<S>;
+
+    // Turned frames ([`TurnedFrame`]): CRBA may express a body in its
+    // frame turned by the quarter turns of the placements above it. Only
+    // 3-D placements are recognised as quarter turns; the defaults, for
+    // geometries without them, ignore the frames.
+
+    /// `Some` when placement `x`'s rotation is exactly an
+    /// [`AxisPermutation`].
+    fn axis_permutation<S: Scalar>(_x: &Self::Transform<S>) -> Option<AxisPermutation> {
+        None
+    }
+    /// [`Self::joint_step`] from body i's turned frame to its parent's,
+    /// given its placement seen from the parent's turned frame
+    /// ([`Model::turned_placement`](crate::Model::turned_placement)).
+    #[inline(always)]
+    fn turned_joint_step<S: Scalar>(
+        _frame: &TurnedFrame,
+        j: &Self::Joint<S>,
+        turned_placement: &Self::Transform<S>,
+        q: &[S],
+    ) -> Self::Step<S> {
+        Self::joint_step(j, turned_placement, q)
+    }
+    /// [`Self::step`] from body i's turned frame to its parent's, given
+    /// `x = ˡⁱXᵢ` between their own frames (as RNEA leaves it) and the
+    /// placement seen from the parent's turned frame.
+    #[inline(always)]
+    fn turned_step<S: Scalar>(
+        _frame: &TurnedFrame,
+        x: &Self::Transform<S>,
+        _turned_placement: &Self::Transform<S>,
+    ) -> Self::Step<S> {
+        Self::step(x)
+    }
+    /// `i` expressed in the frame turned by `turn` (`turn` applied to its
+    /// centre of mass, `turn I turnᵀ` to its rotational inertia).
+    #[inline(always)]
+    fn turn_inertia<S: Scalar>(_turn: &AxisPermutation, i: &Self::Inertia<S>) -> Self::Inertia<S> {
+        *i
+    }
+    /// `turn` then `x` (`x` seen from the frame turned by `turn`).
+    #[inline(always)]
+    fn turn_transform<S: Scalar>(
+        _turn: &AxisPermutation,
+        x: &Self::Transform<S>,
+    ) -> Self::Transform<S> {
+        *x
+    }
+    /// [`Self::inertia_column`] in body i's turned frame.
+    #[inline(always)]
+    fn turned_inertia_column<S: Scalar>(
+        _frame: &TurnedFrame,
+        i: &Self::Inertia<S>,
+        j: &Self::Joint<S>,
+        k: usize,
+    ) -> Self::Force<S> {
+        Self::inertia_column(i, j, k)
+    }
 }

@@ -81,7 +81,9 @@ pub fn planar_chain<const N: usize>() -> Model<f64, N, N, N, Planar> {
     )
 }
 
-/// The same chain as a 3-D model: revolute joints about z.
+/// The same chain as a 3-D model: revolute joints about z. Built at run
+/// time, it recognises its placements' (trivial) quarter turns as a model
+/// compiler's output declares them.
 #[must_use]
 pub fn planar_chain_3d<const N: usize>() -> Model<f64, N, N, N> {
     Model::new(
@@ -101,4 +103,5 @@ pub fn planar_chain_3d<const N: usize>() -> Model<f64, N, N, N> {
         }),
         Motion::new(Vec3::ZERO, Vec3::from_array(CHAIN_GRAVITY)),
     )
+    .with_recognised_turns()
 }

@@ -114,6 +114,7 @@ assign_op!(DivAssign, div_assign, /);
 impl Scalar for Dual {
     const ZERO: Self = Self::constant(0.0);
     const ONE: Self = Self::constant(1.0);
+    const NEG_ONE: Self = Self::constant(-1.0);
     const EPSILON: f64 = f64::EPSILON;
 
     #[inline]

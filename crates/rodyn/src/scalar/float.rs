@@ -23,6 +23,7 @@ macro_rules! float_fn {
 impl Scalar for f64 {
     const ZERO: Self = 0.0;
     const ONE: Self = 1.0;
+    const NEG_ONE: Self = -1.0;
     const EPSILON: f64 = f64::EPSILON;
 
     #[inline]
@@ -78,6 +79,7 @@ impl Scalar for f64 {
 impl Scalar for f32 {
     const ZERO: Self = 0.0;
     const ONE: Self = 1.0;
+    const NEG_ONE: Self = -1.0;
     const EPSILON: f64 = f32::EPSILON as f64;
 
     #[inline]

@@ -61,6 +61,9 @@ pub trait Scalar:
     const ZERO: Self;
     /// Multiplicative identity.
     const ONE: Self;
+    /// Minus one (for exact signs in `const` code, where `-Self::ONE`
+    /// cannot be evaluated).
+    const NEG_ONE: Self;
     /// Machine epsilon of the underlying floating-point type.
     const EPSILON: f64;
 

@@ -1,10 +1,12 @@
 //! Featherstone's 6-D spatial algebra for models in 3-D space.
 //!
 //! One concept per file: [`Motion`], [`Force`], [`Transform`], [`Inertia`],
-//! [`ArticulatedInertia6`], [`TransformStep`], and the 3-D building blocks
-//! [`Vec3`], [`Mat3`], [`Sym3`]. [`Spatial`] ties them together as a [`Space`].
+//! [`ArticulatedInertia6`], [`TransformStep`], [`AxisPermutation`],
+//! [`TurnedFrame`], and the 3-D building blocks [`Vec3`], [`Mat3`],
+//! [`Sym3`]. [`Spatial`] ties them together as a [`Space`].
 
 mod articulated;
+pub(crate) mod axis_permutation;
 mod force;
 mod inertia;
 mod mat3;
@@ -12,9 +14,11 @@ mod motion;
 mod step;
 mod sym3;
 mod transform;
+mod turned_frame;
 mod vec3;
 
 pub use articulated::ArticulatedInertia6;
+pub use axis_permutation::AxisPermutation;
 pub use force::Force;
 pub use inertia::Inertia;
 pub use mat3::Mat3;
@@ -22,6 +26,7 @@ pub use motion::Motion;
 pub use step::TransformStep;
 pub use sym3::Sym3;
 pub use transform::Transform;
+pub use turned_frame::{TurnedAxis, TurnedFrame};
 pub use vec3::Vec3;
 
 use crate::error::ModelProblem;
@@ -151,6 +156,97 @@ impl Space for Spatial {
                 _ => i.mul_motion(&j.subspace_column(k)),
             },
         }
+    }
+
+    fn axis_permutation<S: Scalar>(x: &Transform<S>) -> Option<AxisPermutation> {
+        AxisPermutation::from_matrix(&x.rot)
+    }
+    #[inline(always)]
+    fn turned_joint_step<S: Scalar>(
+        frame: &TurnedFrame,
+        j: &Joint<S>,
+        turned_placement: &Transform<S>,
+        q: &[S],
+    ) -> TransformStep<S> {
+        match frame.axis() {
+            // The placement's turn is in the frames: the joint angle alone.
+            Some(a) => {
+                let (sin, cos) = q[0].sin_cos();
+                TransformStep::Axis {
+                    axis: a.turned,
+                    cos,
+                    sin: if a.reversed { -sin } else { sin },
+                    trans: turned_placement.trans,
+                }
+            }
+            // The body keeps its own frame: `Q_λ X_P X_J(q)`.
+            None => Self::joint_step(j, turned_placement, q),
+        }
+    }
+    #[inline(always)]
+    fn turned_step<S: Scalar>(
+        frame: &TurnedFrame,
+        x: &Transform<S>,
+        turned_placement: &Transform<S>,
+    ) -> TransformStep<S> {
+        if let Some(a) = frame.axis() {
+            let (cos, sin) = a.cos_sin_in(&x.rot);
+            return TransformStep::Axis {
+                axis: a.turned,
+                cos,
+                sin,
+                trans: turned_placement.trans,
+            };
+        }
+        let parent = frame.parent_turn();
+        if parent.is_identity() {
+            Self::step(x)
+        } else {
+            TransformStep::General(parent.then_transform(x))
+        }
+    }
+    #[inline(always)]
+    fn turn_transform<S: Scalar>(turn: &AxisPermutation, x: &Transform<S>) -> Transform<S> {
+        if turn.is_identity() {
+            *x
+        } else {
+            turn.then_transform(x)
+        }
+    }
+    #[inline(always)]
+    fn turn_inertia<S: Scalar>(turn: &AxisPermutation, i: &Inertia<S>) -> Inertia<S> {
+        if turn.is_identity() {
+            *i
+        } else {
+            turn.apply_inertia(i)
+        }
+    }
+    #[inline(always)]
+    fn turned_inertia_column<S: Scalar>(
+        frame: &TurnedFrame,
+        i: &Inertia<S>,
+        j: &Joint<S>,
+        k: usize,
+    ) -> Force<S> {
+        match frame.axis() {
+            Some(a) => turned_revolute_column(i, a),
+            None => Self::inertia_column(i, j, k),
+        }
+    }
+}
+
+/// `I [e_K; 0]` for the turned axis `a`, negated when it is reversed.
+#[inline(always)]
+fn turned_revolute_column<S: Scalar>(i: &Inertia<S>, a: TurnedAxis) -> Force<S> {
+    let column = match a.turned {
+        0 => revolute_inertia_column::<S, 0>(i),
+        1 => revolute_inertia_column::<S, 1>(i),
+        _ => revolute_inertia_column::<S, 2>(i),
+    };
+    if a.reversed {
+        -column
+    } else {
+        column
     }
 }
 
