@@ -29,7 +29,8 @@
 //! are never coupled. The backward pass fills the lower triangle only.
 //!
 //! Bodies behind quarter-turn placements (a URDF arm's) are expressed in
-//! frames turned by the quarter turns above them ([`TurnedFrame`]), where
+//! frames turned by the quarter turns above them
+//! ([`TurnedFrame`](crate::spatial::TurnedFrame)), where
 //! their joints turn about coordinate axes again: their inertias come
 //! turned from the model, each step reads `Q_λ p` from
 //! [`Model::turned_placement`], and a turned joint's subspace column is a
@@ -50,8 +51,6 @@ use crate::model::Model;
 use crate::space::{MotionVector, RigidTransform, Space, VectorOps};
 use crate::topology::Topology;
 use crate::Scalar;
-#[cfg(doc)]
-use crate::spatial::TurnedFrame;
 
 /// The joint-space mass matrix `M(q)` (symmetric, NV x NV).
 ///
