@@ -149,10 +149,11 @@ pub(crate) fn bias_and_mass_lower<
 ) {
     let t = model.topology();
     let minus_g = -*model.gravity();
-    let about_root_pays = about_root_pays::<S, NB, NV>(t);
+    // The root-frame pass reads the inertias in the bodies' own frames.
+    let root_frame_pass = about_root_pays::<S, NB, NV>(t);
     for i in 0..NB {
         let li_m_i = crate::algorithm::kinematics::body_transform(model, i, q);
-        data.ic[i] = if about_root_pays {
+        data.ic[i] = if root_frame_pass {
             *model.inertia(i)
         } else {
             *model.turned_inertia(i)
@@ -160,7 +161,7 @@ pub(crate) fn bias_and_mass_lower<
         rnea::forward_body(model, data, i, li_m_i, v, None, f_ext, &minus_g);
     }
     clear_lower(t, &mut data.mass_matrix);
-    if about_root_pays {
+    if root_frame_pass {
         rnea::backward_force_pass_with(model, data, None, |_, _| {});
         about_root(model, data);
         add_armature(model, data);
