@@ -21,8 +21,7 @@
 //! ¹ Body i's frame turned by [`TurnedFrame::turn`](crate::spatial::TurnedFrame::turn)
 //! of [`Model::turned_frame`](crate::Model::turned_frame)`(i)` (the quarter turns of the
 //! placements above it; the identity at a root and in a model without
-//! declared turns), except on the long chains that take CRBA's
-//! root-frame pass, where it is body i's own frame.
+//! declared turns).
 
 use crate::joint::MAX_JOINT_NV;
 use crate::space::{ArticulatedInertia, BodyInertia, RigidTransform, Space, VectorOps};

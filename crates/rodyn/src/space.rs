@@ -268,6 +268,9 @@ pub trait Space: Copy + Debug + PartialEq + 'static {
         step: &Self::Step<S>,
         i: &Self::Inertia<S>,
     );
+    /// `x` followed by the step: the transform `x ˡⁱXᵢ`, as from a root
+    /// frame to body i's when `x` is from the root frame to its parent's.
+    fn then_step<S: Scalar>(x: &Self::Transform<S>, step: &Self::Step<S>) -> Self::Transform<S>;
     /// `i Sₖ`: the inertia times column k of joint `j`'s motion subspace,
     /// both in the joint's body frame.
     fn inertia_column<S: Scalar>(
@@ -322,6 +325,17 @@ pub trait Space: Copy + Debug + PartialEq + 'static {
         x: &Self::Transform<S>,
     ) -> Self::Transform<S> {
         *x
+    }
+    /// `x Sₖ`: column k of joint `j`'s motion subspace, in body i's
+    /// turned frame, moved by `x` (as into a root frame).
+    #[inline(always)]
+    fn act_turned_subspace_column<S: Scalar>(
+        x: &Self::Transform<S>,
+        _frame: &TurnedFrame,
+        j: &Self::Joint<S>,
+        k: usize,
+    ) -> Self::Motion<S> {
+        x.act_motion(&j.subspace_column(k))
     }
     /// [`Self::inertia_column`] in body i's turned frame.
     #[inline(always)]

@@ -38,17 +38,18 @@
 //! On the Panda this takes a fifth of CRBA's instructions away.
 //!
 //! Long chains in `f64` take a second form of the backward pass,
-//! `about_root`: columns and subspace columns moved once into the root
-//! frame, each entry a dot product (Pinocchio's world convention).
+//! `about_root`: columns and subspace columns moved once from the turned
+//! frames into the root frame, each entry a dot product (Pinocchio's world
+//! convention).
 
-use crate::algorithm::kinematics::{body_transform, check_state};
+use crate::algorithm::kinematics::check_state;
 use crate::algorithm::ltdl::supporting_ranges;
 use crate::algorithm::rnea;
 use crate::data::Data;
 use crate::error::Result;
 use crate::joint::{JointModel, MAX_JOINT_NV};
 use crate::model::Model;
-use crate::space::{MotionVector, RigidTransform, Space, VectorOps};
+use crate::space::{RigidTransform, Space, VectorOps};
 use crate::topology::Topology;
 use crate::Scalar;
 
@@ -57,10 +58,8 @@ use crate::Scalar;
 /// Inputs: `q` (NQ). Returns `data.mass_matrix` with both triangles filled.
 /// Leaves valid: `mass_matrix`, and `ic`, each body's composite inertia
 /// (its own and its subtree's) in its turned frame (see the module
-/// documentation; the body's own frame at a root, in a model without
-/// declared quarter turns, and on the long chains that take the
-/// root-frame pass, `f64` and 31 links or more, which leave `li_m_i`
-/// valid too).
+/// documentation; the body's own frame at a root and in a model without
+/// declared quarter turns).
 /// Reads and writes nothing else of `data`.
 ///
 /// # Errors
@@ -94,37 +93,40 @@ pub(crate) fn crba_lower<S: Scalar, const NB: usize, const NQ: usize, const NV: 
 ) {
     let t = model.topology();
     clear_lower(t, &mut data.mass_matrix);
-    if about_root_pays::<S, NB, NV>(t) {
-        for (i, ic) in data.ic.iter_mut().enumerate() {
-            *ic = *model.inertia(i);
-        }
-        if let Some(q) = q {
-            for i in 0..NB {
-                data.li_m_i[i] = body_transform(model, i, q);
-            }
-        }
-        about_root(model, data);
-        add_armature(model, data);
-        return;
-    }
     for (i, ic) in data.ic.iter_mut().enumerate() {
         *ic = *model.turned_inertia(i);
     }
-    let mut columns = [G::Force::<S>::ZERO; NV];
-    for i in (0..NB).rev() {
-        // A root's transform moves nothing.
-        let frame = model.turned_frame(i);
-        let step = model.parent(i).map(|_| match q {
-            Some(q) => {
-                let iq = t.idx_q[i];
-                let qi = &q[iq..iq + t.nq[i]];
-                G::turned_joint_step(frame, model.joint(i), model.turned_placement(i), qi)
-            }
-            None => G::turned_step(frame, &data.li_m_i[i], model.turned_placement(i)),
-        });
-        backward_body(model, data, i, step.as_ref(), &mut columns);
+    if about_root_pays::<S, NB, NV>(t) {
+        about_root(model, data, |li_m_i, i| joint_step(model, li_m_i, q, i));
+    } else {
+        let mut columns = [G::Force::<S>::ZERO; NV];
+        for i in (0..NB).rev() {
+            let step = joint_step(model, &data.li_m_i, q, i);
+            backward_body(model, data, i, step.as_ref(), &mut columns);
+        }
     }
     add_armature(model, data);
+}
+
+/// Body i's step from its turned frame to its parent's, from `q` or, with
+/// `q` `None`, from the joint transforms `li_m_i`; `None` at a root, whose
+/// transform moves nothing.
+#[inline(always)]
+fn joint_step<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
+    model: &Model<S, NB, NQ, NV, G>,
+    li_m_i: &[G::Transform<S>; NB],
+    q: Option<&[S; NQ]>,
+    i: usize,
+) -> Option<G::Step<S>> {
+    let frame = model.turned_frame(i);
+    model.parent(i).map(|_| match q {
+        Some(q) => {
+            let t = model.topology();
+            let qi = &q[t.idx_q[i]..t.idx_q[i] + t.nq[i]];
+            G::turned_joint_step(frame, model.joint(i), model.turned_placement(i), qi)
+        }
+        None => G::turned_step(frame, &li_m_i[i], model.turned_placement(i)),
+    })
 }
 
 /// Bias forces and `M`'s lower triangle in one pass over the bodies, for
@@ -149,32 +151,22 @@ pub(crate) fn bias_and_mass_lower<
 ) {
     let t = model.topology();
     let minus_g = -*model.gravity();
-    // The root-frame pass reads the inertias in the bodies' own frames.
-    let root_frame_pass = about_root_pays::<S, NB, NV>(t);
     for i in 0..NB {
         let li_m_i = crate::algorithm::kinematics::body_transform(model, i, q);
-        data.ic[i] = if root_frame_pass {
-            *model.inertia(i)
-        } else {
-            *model.turned_inertia(i)
-        };
+        data.ic[i] = *model.turned_inertia(i);
         rnea::forward_body(model, data, i, li_m_i, v, None, f_ext, &minus_g);
     }
     clear_lower(t, &mut data.mass_matrix);
-    if root_frame_pass {
+    if about_root_pays::<S, NB, NV>(t) {
         rnea::backward_force_pass_with(model, data, None, |_, _| {});
-        about_root(model, data);
-        add_armature(model, data);
-        return;
+        about_root(model, data, |li_m_i, i| joint_step(model, li_m_i, None, i));
+    } else {
+        let mut columns = [G::Force::<S>::ZERO; NV];
+        rnea::backward_force_pass_with(model, data, None, |data, i| {
+            let step = joint_step(model, &data.li_m_i, None, i);
+            backward_body(model, data, i, step.as_ref(), &mut columns);
+        });
     }
-    let mut columns = [G::Force::<S>::ZERO; NV];
-    rnea::backward_force_pass_with(model, data, None, |data, i| {
-        let frame = model.turned_frame(i);
-        let step = model
-            .parent(i)
-            .map(|_| G::turned_step(frame, &data.li_m_i[i], model.turned_placement(i)));
-        backward_body(model, data, i, step.as_ref(), &mut columns);
-    });
     add_armature(model, data);
 }
 
@@ -193,55 +185,83 @@ fn about_root_pays<S: Scalar, const NB: usize, const NV: usize>(t: &Topology<NB,
 }
 
 /// The backward pass for long chains: every column and every subspace
-/// column moved once into its tree's root frame, each entry below the
-/// diagonal then a dot product, 11 operations where moving a column one
-/// body up takes about 28 (Pinocchio's world convention, about the root
-/// body instead of the world so that a floating base's position does not
-/// enter). The two terms of each product grow with the bodies' distance
-/// from the root and cancel to the offset between them, which `f32` could
-/// not afford. Reads the joint transforms from `data.li_m_i`; leaves what
-/// [`crba_lower`] leaves.
+/// column moved once from its body's turned frame into its tree's root
+/// frame, each entry below the diagonal then a dot product, 11 operations
+/// where moving a column one body up takes 24 (Pinocchio's world
+/// convention, about the root body instead of the world so that a
+/// floating base's position does not enter). The root frames compose the
+/// same steps as the local pass, so a turned joint's rotation mixes two
+/// columns of its parent's. The two terms of each product grow with the
+/// bodies' distance from the root and cancel to the offset between them,
+/// which `f32` could not afford. `step(li_m_i, i)` gives body i's step
+/// ([`joint_step`]); leaves what [`crba_lower`] leaves.
 #[inline(never)]
 fn about_root<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     model: &Model<S, NB, NQ, NV, G>,
     data: &mut Data<S, NB, NV, G>,
+    step: impl Fn(&[G::Transform<S>; NB], usize) -> Option<G::Step<S>>,
 ) {
     let t = model.topology();
     let identity = <G::Transform<S> as RigidTransform<S>>::IDENTITY;
-    // The root frame from each body's frame, and each subspace column in it.
+    // Each body's step to its parent, the root frame from each body's
+    // turned frame, and each subspace column in it, stored by components
+    // so that a row's dot products run along contiguous arrays, two
+    // entries per SIMD instruction on a host.
+    let mut steps = [None; NB];
     let mut to_root = [identity; NB];
-    let mut s_root = [G::Motion::<S>::ZERO; NV];
+    let mut s_root = [[S::ZERO; NV]; 6];
     for i in 0..NB {
-        if let Some(p) = t.parents[i] {
-            to_root[i] = to_root[p].compose(&data.li_m_i[i]);
+        steps[i] = step(&data.li_m_i, i);
+        if let (Some(p), Some(step)) = (t.parents[i], &steps[i]) {
+            to_root[i] = G::then_step(&to_root[p], step);
         }
-        let joint = model.joint(i);
+        let (joint, frame) = (model.joint(i), model.turned_frame(i));
         for k in 0..t.nv[i] {
-            s_root[t.idx_v[i] + k] = to_root[i].act_motion(&joint.subspace_column(k));
+            let s = G::act_turned_subspace_column(&to_root[i], frame, joint, k);
+            for (d, s_d) in s_root.iter_mut().take(G::DIM).enumerate() {
+                s_d[t.idx_v[i] + k] = s.component(d);
+            }
         }
     }
     for i in (0..NB).rev() {
-        let joint = model.joint(i);
+        let (joint, frame) = (model.joint(i), model.turned_frame(i));
         let iv = t.idx_v[i];
         for k in 0..t.nv[i] {
             let c = iv + k;
-            let f = to_root[i].act_force(&G::inertia_column(&data.ic[i], joint, k));
+            let f = G::turned_inertia_column(frame, &data.ic[i], joint, k);
+            let f = to_root[i].act_force(&f);
+            let f: [S; 6] =
+                core::array::from_fn(|d| if d < G::DIM { f.component(d) } else { S::ZERO });
             let row = &mut data.mass_matrix[c];
-            // The joint's own block, then every supporting coordinate.
-            for j in iv..=c {
-                row[j] = s_root[j].dot(&f);
-            }
-            for (first, last) in supporting_ranges(t, t.lambda_v[iv]) {
-                for (entry, s) in row[first..=last].iter_mut().zip(&s_root[first..=last]) {
-                    *entry = s.dot(&f);
-                }
+            // Every supporting coordinate, the joint's own up to c included.
+            for (first, last) in supporting_ranges(t, Some(c)) {
+                dot_columns::<S, NV, G>(&mut row[first..=last], &s_root, first, &f);
             }
         }
-        if let Some(p) = t.parents[i] {
-            let step = G::step(&data.li_m_i[i]);
+        if let (Some(p), Some(step)) = (t.parents[i], &steps[i]) {
             let ic_i = data.ic[i];
-            G::add_stepped_inertia(&mut data.ic[p], &step, &ic_i);
+            G::add_stepped_inertia(&mut data.ic[p], step, &ic_i);
         }
+    }
+}
+
+/// `row[j] = s_j · f` for the subspace columns `s_j` stored by components
+/// in `s`, from column `first` on.
+#[inline(always)]
+fn dot_columns<S: Scalar, const NV: usize, G: Space>(
+    row: &mut [S],
+    s: &[[S; NV]; 6],
+    first: usize,
+    f: &[S; 6],
+) {
+    let n = row.len();
+    let s: [&[S]; 6] = core::array::from_fn(|d| &s[d][first..first + n]);
+    for j in 0..n {
+        let mut acc = s[0][j] * f[0];
+        for d in 1..G::DIM {
+            acc += s[d][j] * f[d];
+        }
+        row[j] = acc;
     }
 }
 
@@ -495,6 +515,88 @@ mod tests {
                 lower(&data.mass_matrix, "from transforms");
                 bias_and_mass_lower(model, &mut data, &q, &v, None);
                 lower(&data.mass_matrix, "fused with the bias forces");
+            }
+        }
+    }
+
+    /// A 32-link chain, long enough in `f64` for the root-frame pass:
+    /// joints about every axis behind quarter turns, tilted placements, a
+    /// prismatic joint and a general axis.
+    fn long_chain() -> Model<f64, 32, 32, 32, Spatial> {
+        let turns = [QUARTER_X, QUARTER_Y, HALF_Z_THEN_X, CYCLE];
+        let tilted = Mat3::from_axis_angle(&Vec3::new(0.6, 0.0, 0.8), 0.4);
+        Model::new(
+            core::array::from_fn(|i| i.checked_sub(1)),
+            core::array::from_fn(|i| match i % 7 {
+                3 => Joint::prismatic(Axis::Y),
+                5 => Joint::revolute(Axis::Unit(Vec3::new(0.0, 0.6, 0.8))),
+                k => Joint::revolute([Axis::X, Axis::Y, Axis::Z][k % 3]),
+            }),
+            core::array::from_fn(|i| {
+                let rot = match i % 5 {
+                    4 => tilted,
+                    0 => Mat3::IDENTITY,
+                    k => turns[(i + k) % 4].matrix(),
+                };
+                let k = i as f64;
+                Transform::new(rot, Vec3::new(0.1 + 0.01 * k, -0.02 * (k % 3.0), 0.05))
+            }),
+            core::array::from_fn(|i| {
+                let k = (i % 4) as f64;
+                Inertia::new(
+                    0.5 + k,
+                    Vec3::new(0.05 * k, -0.02, 0.01 * k),
+                    Sym3::new(0.03, 0.001 * k, -0.002, 0.04, 0.003, 0.05 + 0.01 * k),
+                )
+            }),
+            Motion::new(Vec3::ZERO, Vec3::ZERO),
+        )
+    }
+
+    #[test]
+    fn the_root_frame_pass_gives_rneas_columns_with_and_without_turns() {
+        use crate::algorithm::rnea::rnea;
+        let plain = long_chain();
+        assert!(super::about_root_pays::<f64, 32, 32>(plain.topology()));
+        let turned = plain.with_recognised_turns();
+        let turned_bodies = (0..32)
+            .filter(|&i| turned.turned_frame(i).axis().is_some())
+            .count();
+        assert!(turned_bodies >= 8, "{turned_bodies} turned bodies");
+        let q: [f64; 32] = core::array::from_fn(|k| (0.7 * k as f64).sin() * 1.5);
+        let v = [0.0; 32];
+        // Column k of M is RNEA's torque for the unit acceleration of
+        // coordinate k, without gravity and velocities.
+        let mut data = Data::new();
+        let mut expected = [[0.0; 32]; 32];
+        for k in 0..32 {
+            let mut a = [0.0; 32];
+            a[k] = 1.0;
+            let tau = *rnea(&plain, &mut data, &q, &v, &a, None).unwrap();
+            for r in 0..32 {
+                expected[r][k] = tau[r];
+            }
+        }
+        let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * (1.0 + a.abs().max(b.abs()));
+        for model in [&plain, &turned] {
+            let m = *crba(model, &mut data, &q).unwrap();
+            for i in 0..32 {
+                data.li_m_i[i] = body_transform(model, i, &q);
+            }
+            crba_lower(model, &mut data, None);
+            let from_transforms = data.mass_matrix;
+            bias_and_mass_lower(model, &mut data, &q, &v, None);
+            for r in 0..32 {
+                for c in 0..=r {
+                    let e = expected[r][c];
+                    for (what, got) in [
+                        ("crba", m[r][c]),
+                        ("from transforms", from_transforms[r][c]),
+                        ("fused", data.mass_matrix[r][c]),
+                    ] {
+                        assert!(close(got, e), "{what}: M[{r}][{c}] {got} against {e}");
+                    }
+                }
             }
         }
     }

@@ -105,6 +105,13 @@ impl Space for Planar {
         j.placed_transform(placement, q)
     }
     #[inline(always)]
+    fn then_step<S: Scalar>(
+        x: &PlanarTransform<S>,
+        step: &PlanarTransform<S>,
+    ) -> PlanarTransform<S> {
+        x.compose(step)
+    }
+    #[inline(always)]
     fn step_forces<S: Scalar>(x: &PlanarTransform<S>, forces: &mut [PlanarForce<S>]) {
         for f in forces {
             *f = x.act_force(f);

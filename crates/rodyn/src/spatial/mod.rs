@@ -124,6 +124,10 @@ impl Space for Spatial {
         }
     }
     #[inline(always)]
+    fn then_step<S: Scalar>(x: &Transform<S>, step: &TransformStep<S>) -> Transform<S> {
+        step.after(x)
+    }
+    #[inline(always)]
     fn step_forces<S: Scalar>(step: &TransformStep<S>, forces: &mut [Force<S>]) {
         step.act_forces(forces);
     }
@@ -219,6 +223,25 @@ impl Space for Spatial {
             *i
         } else {
             turn.apply_inertia(i)
+        }
+    }
+    #[inline(always)]
+    fn act_turned_subspace_column<S: Scalar>(
+        x: &Transform<S>,
+        frame: &TurnedFrame,
+        j: &Joint<S>,
+        k: usize,
+    ) -> Motion<S> {
+        use crate::joint::JointModel;
+        use crate::space::RigidTransform;
+        match frame.axis() {
+            // `x [±e_K; 0]`: a column of the rotation, and its moment.
+            Some(a) => {
+                let column = x.rot.column(a.turned);
+                let ang = if a.reversed { -column } else { column };
+                Motion::new(ang, x.trans.cross(&ang))
+            }
+            None => x.act_motion(&j.subspace_column(k)),
         }
     }
     #[inline(always)]

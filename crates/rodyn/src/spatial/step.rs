@@ -73,6 +73,30 @@ impl<S: Scalar> TransformStep<S> {
         }
     }
 
+    /// `x` followed by this step, as one transform: for a rotation about
+    /// axis K, two columns of `x`'s rotation mix (12 products where a
+    /// general product of rotations takes 27).
+    #[inline(always)]
+    #[must_use]
+    pub fn after(&self, x: &Transform<S>) -> Transform<S> {
+        match *self {
+            Self::Axis {
+                axis,
+                cos,
+                sin,
+                trans,
+            } => {
+                let rot = match axis {
+                    0 => turn_columns_about::<S, 0>(&x.rot, cos, sin),
+                    1 => turn_columns_about::<S, 1>(&x.rot, cos, sin),
+                    _ => turn_columns_about::<S, 2>(&x.rot, cos, sin),
+                };
+                Transform::new(rot, x.rot.mul_vec(&trans) + x.trans)
+            }
+            Self::General(g) => x.compose(&g),
+        }
+    }
+
     /// `X* f` for every force of `forces`: forces in the child's frame
     /// expressed in the parent's.
     #[inline(always)]
@@ -125,6 +149,19 @@ fn turn_about_axis<S: Scalar, const K: usize>(rot: &Mat3<S>) -> Option<(S, S)> {
     let about_axis =
         m[K][K] == one && m[K][a] == zero && m[K][b] == zero && m[a][K] == zero && m[b][K] == zero;
     about_axis.then(|| (m[a][a], m[b][a]))
+}
+
+/// `m R` for a rotation `R` by `(c, s)` about axis `K`: each row of `m`
+/// turns as a plane vector in its components `(K + 1, K + 2) mod 3`.
+#[inline(always)]
+fn turn_columns_about<S: Scalar, const K: usize>(m: &Mat3<S>, c: S, s: S) -> Mat3<S> {
+    let (a, b) = ((K + 1) % 3, (K + 2) % 3);
+    let mut out = *m;
+    for (row, turned) in m.m.iter().zip(out.m.iter_mut()) {
+        turned[a] = c * row[a] + s * row[b];
+        turned[b] = c * row[b] - s * row[a];
+    }
+    out
 }
 
 /// `X* f` over `forces` for a rotation by `(c, s)` about axis `K`.
