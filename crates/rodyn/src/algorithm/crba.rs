@@ -42,7 +42,7 @@
 //! frames into the root frame, each entry a dot product (Pinocchio's world
 //! convention).
 
-use crate::algorithm::kinematics::check_state;
+use crate::algorithm::kinematics::{check_state, joint_configuration};
 use crate::algorithm::ltdl::supporting_ranges;
 use crate::algorithm::rnea;
 use crate::data::Data;
@@ -120,11 +120,12 @@ fn joint_step<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: S
 ) -> Option<G::Step<S>> {
     let frame = model.turned_frame(i);
     model.parent(i).map(|_| match q {
-        Some(q) => {
-            let t = model.topology();
-            let qi = &q[t.idx_q[i]..t.idx_q[i] + t.nq[i]];
-            G::turned_joint_step(frame, model.joint(i), model.turned_placement(i), qi)
-        }
+        Some(q) => G::turned_joint_step(
+            frame,
+            model.joint(i),
+            model.turned_placement(i),
+            joint_configuration(model, i, q),
+        ),
         None => G::turned_step(frame, &li_m_i[i], model.turned_placement(i)),
     })
 }

@@ -31,11 +31,28 @@ pub(crate) fn body_transform<
     i: usize,
     q: &[S; NQ],
 ) -> G::Transform<S> {
-    let t = model.topology();
-    let iq = t.idx_q[i];
     model
         .joint(i)
-        .placed_transform(model.placement(i), &q[iq..iq + t.nq[i]])
+        .placed_transform(model.placement(i), joint_configuration(model, i, q))
+}
+
+/// Body `i`'s joint configuration: its slice of `q`.
+#[inline(always)]
+pub(crate) fn joint_configuration<
+    'q,
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    i: usize,
+    q: &'q [S; NQ],
+) -> &'q [S] {
+    let t = model.topology();
+    let iq = t.idx_q[i];
+    &q[iq..iq + t.nq[i]]
 }
 
 /// Body `i`'s joint rates: its slice of `v` (which holds every joint's
