@@ -261,6 +261,43 @@ pub trait Space: Copy + Debug + PartialEq + 'static {
     ) -> Self::Step<S>;
     /// `x.act_force(f)` through a prepared step, for every force of `forces`.
     fn step_forces<S: Scalar>(step: &Self::Step<S>, forces: &mut [Self::Force<S>]);
+    /// CRBA's whole step at a body with one coordinate, fused, when its
+    /// joint turns about coordinate axis `axis.0` of the columns' frame
+    /// (the opposite way when `axis.1`) and `step` turns about that same
+    /// axis: the body's column `Iᶜ S` into `columns[0]`; for each column
+    /// `F_d` of `columns` (the body's subtree, its own first) the entry
+    /// `rows[d][iv] = Sᵀ F_d` and `F_d` moved through the step; then `ic`
+    /// moved and added to `parent_ic`. Returns `false`, having done
+    /// nothing, where it does not apply (the default: always).
+    #[inline(always)]
+    fn crba_axis_body<S: Scalar, const NV: usize>(
+        _step: &Self::Step<S>,
+        _axis: (usize, bool),
+        _ic: &Self::Inertia<S>,
+        _parent_ic: &mut Self::Inertia<S>,
+        _columns: &mut [Self::Force<S>],
+        _rows: &mut [[S; NV]],
+        _iv: usize,
+    ) -> bool {
+        false
+    }
+    /// CRBA's step at a root body whose joint's motion subspace is the
+    /// identity (a free flyer, linear coordinates first), fused: its own
+    /// block of `M`, the composite inertia `ic` itself, into the lower
+    /// triangle of `rows[..6]`, and its entries against the rest of its
+    /// subtree, `rows[6 + d][iv..iv + 6]` = `columns[d]` reordered. Nothing
+    /// moves from a root. Returns `false`, having done nothing, for any
+    /// other joint (the default: always).
+    #[inline(always)]
+    fn crba_free_root<S: Scalar, const NV: usize>(
+        _joint: &Self::Joint<S>,
+        _ic: &Self::Inertia<S>,
+        _columns: &[Self::Force<S>],
+        _rows: &mut [[S; NV]],
+        _iv: usize,
+    ) -> bool {
+        false
+    }
     /// `acc` plus `i` moved through the step (`x.act(i)`): the composite of
     /// a parent and its child, in the parent's frame.
     fn add_stepped_inertia<S: Scalar>(

@@ -23,6 +23,15 @@
 //! is formed. The columns moved at one body are independent of each other,
 //! so an out-of-order core overlaps them.
 //!
+//! Two cases take the whole step as one fused pass of the geometry's
+//! ([`Space::crba_axis_body`], [`Space::crba_free_root`]): a body whose
+//! revolute joint's step turns about its own coordinate axis (its column,
+//! projections, moves and inertia with that axis known at compile time),
+//! and a free-flying root, whose block of `M` is its composite inertia
+//! and whose entries are its subtree's columns reordered. Against the
+//! same steps one operation at a time: Solo12 CRBA 17 % fewer
+//! instructions, the Panda 12 %, the 20-link chain 18 %.
+//!
 //! With the bodies numbered depth first (URDF order), a body's subtree
 //! holds a contiguous range of coordinates; any other tree takes the same
 //! steps with a test of support per coordinate. Cost O(n·depth); branches
@@ -313,14 +322,45 @@ fn backward_body<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G
     let joint = model.joint(i);
     let frame = model.turned_frame(i);
     let (iv, nv) = (t.idx_v[i], t.nv[i]);
-    for k in 0..nv {
-        columns[iv + k] = G::turned_inertia_column(frame, &data.ic[i], joint, k);
-    }
     // A revolute joint's coordinate axis in the frame of the columns.
     let axis = match frame.axis() {
         Some(a) => Some((a.turned, a.reversed)),
         None => joint.revolute_axis_index().map(|k| (k, false)),
     };
+    // The geometry's fused steps where they apply: a revolute joint whose
+    // step turns about its own coordinate axis, a free-flying root.
+    if let (true, 1, Some(axis), Some(p), Some(step)) =
+        (t.subtrees_contiguous, nv, axis, t.parents[i], step)
+    {
+        let end = t.subtree_end_v[i];
+        let (ancestors, rest) = data.ic.split_at_mut(i);
+        if G::crba_axis_body(
+            step,
+            axis,
+            &rest[0],
+            &mut ancestors[p],
+            &mut columns[iv..end],
+            &mut data.mass_matrix[iv..end],
+            iv,
+        ) {
+            return;
+        }
+    }
+    if t.subtrees_contiguous && t.parents[i].is_none() && nv == 6 {
+        let end = t.subtree_end_v[i];
+        if G::crba_free_root(
+            joint,
+            &data.ic[i],
+            &columns[iv + 6..end],
+            &mut data.mass_matrix[iv..end],
+            iv,
+        ) {
+            return;
+        }
+    }
+    for k in 0..nv {
+        columns[iv + k] = G::turned_inertia_column(frame, &data.ic[i], joint, k);
+    }
     if t.subtrees_contiguous {
         let end = t.subtree_end_v[i];
         project_rows(joint, axis, iv, nv, iv..end, &mut data.mass_matrix, columns);
@@ -556,7 +596,6 @@ mod tests {
 
     #[test]
     fn the_root_frame_pass_gives_rneas_columns_with_and_without_turns() {
-        use crate::algorithm::rnea::rnea;
         let plain = long_chain();
         assert!(super::about_root_pays::<f64, 32, 32>(plain.topology()));
         let turned = plain.with_recognised_turns();
@@ -565,41 +604,141 @@ mod tests {
             .count();
         assert!(turned_bodies >= 8, "{turned_bodies} turned bodies");
         let q: [f64; 32] = core::array::from_fn(|k| (0.7 * k as f64).sin() * 1.5);
-        let v = [0.0; 32];
-        // Column k of M is RNEA's torque for the unit acceleration of
-        // coordinate k, without gravity and velocities.
+        for model in [&plain, &turned] {
+            assert_rneas_columns(model, &q);
+        }
+    }
+
+    /// Holds `M` from [`crba`], from the joint transforms and fused with
+    /// the bias forces to RNEA's columns (column k is the torque for the
+    /// unit acceleration of coordinate k, without velocities), to 1e-12.
+    /// The model has no gravity.
+    fn assert_rneas_columns<const NB: usize, const NQ: usize, const NV: usize>(
+        model: &Model<f64, NB, NQ, NV, Spatial>,
+        q: &[f64; NQ],
+    ) {
+        use crate::algorithm::rnea::rnea;
+        let v = [0.0; NV];
         let mut data = Data::new();
-        let mut expected = [[0.0; 32]; 32];
-        for k in 0..32 {
-            let mut a = [0.0; 32];
+        let mut expected = [[0.0; NV]; NV];
+        for k in 0..NV {
+            let mut a = [0.0; NV];
             a[k] = 1.0;
-            let tau = *rnea(&plain, &mut data, &q, &v, &a, None).unwrap();
-            for r in 0..32 {
+            let tau = *rnea(model, &mut data, q, &v, &a, None).unwrap();
+            for r in 0..NV {
                 expected[r][k] = tau[r];
             }
         }
         let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * (1.0 + a.abs().max(b.abs()));
-        for model in [&plain, &turned] {
-            let m = *crba(model, &mut data, &q).unwrap();
-            for i in 0..32 {
-                data.li_m_i[i] = body_transform(model, i, &q);
-            }
-            crba_lower(model, &mut data, None);
-            let from_transforms = data.mass_matrix;
-            bias_and_mass_lower(model, &mut data, &q, &v, None);
-            for r in 0..32 {
-                for c in 0..=r {
-                    let e = expected[r][c];
-                    for (what, got) in [
-                        ("crba", m[r][c]),
-                        ("from transforms", from_transforms[r][c]),
-                        ("fused", data.mass_matrix[r][c]),
-                    ] {
-                        assert!(close(got, e), "{what}: M[{r}][{c}] {got} against {e}");
-                    }
+        let m = *crba(model, &mut data, q).unwrap();
+        for i in 0..NB {
+            data.li_m_i[i] = body_transform(model, i, q);
+        }
+        crba_lower(model, &mut data, None);
+        let from_transforms = data.mass_matrix;
+        bias_and_mass_lower(model, &mut data, q, &v, None);
+        for r in 0..NV {
+            for c in 0..NV {
+                let e = expected[r][c];
+                assert!(
+                    close(m[r][c], e),
+                    "crba: M[{r}][{c}] {} against {e}",
+                    m[r][c]
+                );
+                if c > r {
+                    continue;
+                }
+                for (what, got) in [
+                    ("from transforms", from_transforms[r][c]),
+                    ("fused", data.mass_matrix[r][c]),
+                ] {
+                    assert!(close(got, e), "{what}: M[{r}][{c}] {got} against {e}");
                 }
             }
         }
+    }
+
+    /// A free-flying base with two limbs (`parents`): joints about every
+    /// axis behind quarter turns, behind placements that turn about the
+    /// joint's own axis or not at all, a prismatic joint and a general
+    /// axis; no gravity.
+    fn floating_tree(parents: [Option<usize>; 8]) -> Model<f64, 8, 14, 13, Spatial> {
+        let turned =
+            |p: AxisPermutation, t: [f64; 3]| Transform::new(p.matrix(), Vec3::from_array(t));
+        let (s, c) = 0.3f64.sin_cos();
+        Model::new(
+            parents,
+            [
+                Joint::free_flyer(),
+                Joint::revolute(Axis::X),
+                Joint::revolute(Axis::Z),
+                Joint::revolute(Axis::Y),
+                Joint::revolute(Axis::Z),
+                Joint::revolute(Axis::Y),
+                Joint::prismatic(Axis::X),
+                Joint::revolute(Axis::Unit(Vec3::new(0.0, 0.6, 0.8))),
+            ],
+            [
+                Transform::IDENTITY,
+                turned(QUARTER_Y, [0.1, 0.2, 0.0]),
+                turned(QUARTER_X, [0.0, 0.0, 0.3]),
+                turned(HALF_Z_THEN_X, [0.05, 0.3, 0.0]),
+                Transform::new(Mat3::from_axis_index(2, s, c), Vec3::new(-0.1, 0.2, 0.0)),
+                Transform::new(Mat3::IDENTITY, Vec3::new(0.0, 0.25, 0.1)),
+                turned(CYCLE, [0.2, 0.0, -0.1]),
+                Transform::new(Mat3::IDENTITY, Vec3::new(0.0, 0.1, 0.15)),
+            ],
+            core::array::from_fn(|i| {
+                let k = i as f64;
+                Inertia::new(
+                    0.7 + k,
+                    Vec3::new(0.04 * k, -0.03, 0.02 * k),
+                    Sym3::new(0.3, 0.01 * k, -0.02, 0.4, 0.03, 0.5 + 0.1 * k),
+                )
+            }),
+            Motion::new(Vec3::ZERO, Vec3::ZERO),
+        )
+        .with_recognised_turns()
+    }
+
+    #[test]
+    fn a_floating_tree_gives_rneas_columns_in_either_body_order() {
+        // Limbs {1, 2, 3} and {4, 5, 6, 7} (5 branching), each subtree's
+        // coordinates contiguous; then the same joints with the limbs'
+        // bodies interleaved, which the pass walks with a test of support.
+        let contiguous = floating_tree([
+            None,
+            Some(0),
+            Some(1),
+            Some(2),
+            Some(0),
+            Some(4),
+            Some(5),
+            Some(5),
+        ]);
+        assert!(contiguous.topology().subtrees_contiguous);
+        let interleaved = floating_tree([
+            None,
+            Some(0),
+            Some(1),
+            Some(2),
+            Some(0),
+            Some(4),
+            Some(5),
+            Some(3),
+        ]);
+        assert!(!interleaved.topology().subtrees_contiguous);
+        for model in [&contiguous, &interleaved] {
+            let turned = (1..8)
+                .filter(|&i| model.turned_frame(i).axis().is_some())
+                .count();
+            assert!(turned >= 3, "{turned} turned bodies");
+        }
+        let mut q: [f64; 14] = core::array::from_fn(|k| (0.9 * k as f64 + 0.4).sin() * 1.3);
+        let norm = q[3..7].iter().map(|x| x * x).sum::<f64>().sqrt();
+        q[3..7].iter_mut().for_each(|x| *x /= norm);
+        assert_rneas_columns(&contiguous, &q);
+        assert_rneas_columns(&interleaved, &q);
     }
 
     #[test]

@@ -7,6 +7,7 @@
 
 mod articulated;
 pub(crate) mod axis_permutation;
+mod crba_body;
 mod force;
 mod inertia;
 mod mat3;
@@ -138,6 +139,32 @@ impl Space for Spatial {
         i: &Inertia<S>,
     ) {
         add_shifted_inertia(acc, &step.rotate_inertia(i), &step.translation());
+    }
+    #[inline(always)]
+    fn crba_axis_body<S: Scalar, const NV: usize>(
+        step: &TransformStep<S>,
+        axis: (usize, bool),
+        ic: &Inertia<S>,
+        parent_ic: &mut Inertia<S>,
+        columns: &mut [Force<S>],
+        rows: &mut [[S; NV]],
+        iv: usize,
+    ) -> bool {
+        crba_body::axis_body(step, axis, ic, parent_ic, columns, rows, iv)
+    }
+    #[inline(always)]
+    fn crba_free_root<S: Scalar, const NV: usize>(
+        joint: &Joint<S>,
+        ic: &Inertia<S>,
+        columns: &[Force<S>],
+        rows: &mut [[S; NV]],
+        iv: usize,
+    ) -> bool {
+        let free = matches!(joint, Joint::FreeFlyer(_));
+        if free {
+            crba_body::free_flyer_root(ic, columns, rows, iv);
+        }
+        free
     }
     #[inline(always)]
     fn inertia_column<S: Scalar>(i: &Inertia<S>, j: &Joint<S>, k: usize) -> Force<S> {
@@ -284,7 +311,7 @@ fn linear_inertia_column<S: Scalar, const K: usize>(i: &Inertia<S>) -> Force<S> 
 /// `I [e_K; 0]`: the centre of mass's momentum `m e_K × c`, and its moment
 /// about the origin.
 #[inline(always)]
-fn revolute_inertia_column<S: Scalar, const K: usize>(i: &Inertia<S>) -> Force<S> {
+pub(super) fn revolute_inertia_column<S: Scalar, const K: usize>(i: &Inertia<S>) -> Force<S> {
     let c = &i.com;
     let axis_cross_com = match K {
         0 => Vec3::new(S::ZERO, -c.z, c.y),
@@ -298,7 +325,7 @@ fn revolute_inertia_column<S: Scalar, const K: usize>(i: &Inertia<S>) -> Force<S
 /// `acc` plus `i` with its centre of mass moved by `t`: as
 /// `Inertia::combine`, without building the moved inertia.
 #[inline(always)]
-fn add_shifted_inertia<S: Scalar>(acc: &mut Inertia<S>, i: &Inertia<S>, t: &Vec3<S>) {
+pub(super) fn add_shifted_inertia<S: Scalar>(acc: &mut Inertia<S>, i: &Inertia<S>, t: &Vec3<S>) {
     let com_i = i.com + *t;
     let mass = acc.mass + i.mass;
     // A massless pair keeps a zero inertia rather than dividing by zero.

@@ -181,7 +181,11 @@ fn act_forces_about<S: Scalar, const K: usize>(
 
 /// `(m, R c, R Ī Rᵀ)` for a rotation by `(c, s)` about axis `K`.
 #[inline(always)]
-fn rotate_inertia_about<S: Scalar, const K: usize>(c: S, s: S, i: &Inertia<S>) -> Inertia<S> {
+pub(super) fn rotate_inertia_about<S: Scalar, const K: usize>(
+    c: S,
+    s: S,
+    i: &Inertia<S>,
+) -> Inertia<S> {
     Inertia::new(
         i.mass,
         rotate_about::<S, K>(c, s, &i.com),
@@ -192,7 +196,7 @@ fn rotate_inertia_about<S: Scalar, const K: usize>(c: S, s: S, i: &Inertia<S>) -
 /// `R v` for a rotation by `(c, s)` about axis `K`: the components
 /// `(a, b) = (K + 1, K + 2) mod 3` turn as a plane vector.
 #[inline(always)]
-fn rotate_about<S: Scalar, const K: usize>(c: S, s: S, v: &Vec3<S>) -> Vec3<S> {
+pub(super) fn rotate_about<S: Scalar, const K: usize>(c: S, s: S, v: &Vec3<S>) -> Vec3<S> {
     match K {
         0 => Vec3::new(v.x, c * v.y - s * v.z, s * v.y + c * v.z),
         1 => Vec3::new(s * v.z + c * v.x, v.y, c * v.z - s * v.x),
