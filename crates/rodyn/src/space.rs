@@ -195,6 +195,10 @@ pub trait ArticulatedInertia<S: Scalar>: Copy + Debug {
 pub trait Space: Copy + Debug + PartialEq + 'static {
     /// Dimension of motion and force vectors (6 or 3).
     const DIM: usize;
+    /// Whether the geometry has fused CRBA steps ([`Self::crba_axis_body`],
+    /// [`Self::crba_free_root`]): without them CRBA does not look for
+    /// them, and carries no code for the test.
+    const FUSES_CRBA_STEPS: bool = false;
     /// Motion vectors.
     type Motion<S: Scalar>: MotionVector<S, Force = Self::Force<S>>;
     /// Force vectors.

@@ -329,9 +329,13 @@ fn backward_body<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G
     };
     // The geometry's fused steps where they apply: a revolute joint whose
     // step turns about its own coordinate axis, a free-flying root.
-    if let (true, 1, Some(axis), Some(p), Some(step)) =
-        (t.subtrees_contiguous, nv, axis, t.parents[i], step)
-    {
+    if let (true, 1, Some(axis), Some(p), Some(step)) = (
+        G::FUSES_CRBA_STEPS && t.subtrees_contiguous,
+        nv,
+        axis,
+        t.parents[i],
+        step,
+    ) {
         let end = t.subtree_end_v[i];
         let (ancestors, rest) = data.ic.split_at_mut(i);
         if G::crba_axis_body(
@@ -346,7 +350,7 @@ fn backward_body<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G
             return;
         }
     }
-    if t.subtrees_contiguous && t.parents[i].is_none() && nv == 6 {
+    if G::FUSES_CRBA_STEPS && t.subtrees_contiguous && t.parents[i].is_none() && nv == 6 {
         let end = t.subtree_end_v[i];
         if G::crba_free_root(
             joint,

@@ -41,6 +41,7 @@ pub struct Spatial;
 
 impl Space for Spatial {
     const DIM: usize = 6;
+    const FUSES_CRBA_STEPS: bool = true;
     type Motion<S: Scalar> = Motion<S>;
     type Force<S: Scalar> = Force<S>;
     type Point<S: Scalar> = Vec3<S>;
