@@ -67,16 +67,18 @@ fn library_sin_cos(x: f64) -> (f64, f64) {
 /// `(sin x, cos x)`.
 #[inline]
 pub(crate) fn sin_cos(x: f64) -> (f64, f64) {
-    if x.is_nan() || x.abs() > FAST_LIMIT {
-        return library_sin_cos(x);
+    // One comparison: NaN fails it too, and takes the library's path.
+    if x.abs() <= FAST_LIMIT {
+        // k = round(x · 2/π), without a branch or a saturating conversion:
+        // adding 1.5 · 2⁵² rounds to an integer (ties to even) held in the
+        // low bits of the sum, so k mod 4 is read from its bit pattern.
+        let shifted = x * FRAC_2_PI + ROUND_SHIFT;
+        let k_f = shifted - ROUND_SHIFT;
+        let y = ((x - k_f * PIO2_1) - k_f * PIO2_2) - k_f * PIO2_3;
+        turn_by_quadrant(shifted.to_bits(), sin_kernel(y), cos_kernel(y))
+    } else {
+        library_sin_cos(x)
     }
-    // k = round(x · 2/π), without a branch or a saturating conversion:
-    // adding 1.5 · 2⁵² rounds to an integer (ties to even) held in the low
-    // bits of the sum, so k mod 4 is read from its bit pattern.
-    let shifted = x * FRAC_2_PI + ROUND_SHIFT;
-    let k_f = shifted - ROUND_SHIFT;
-    let y = ((x - k_f * PIO2_1) - k_f * PIO2_2) - k_f * PIO2_3;
-    turn_by_quadrant(shifted.to_bits(), sin_kernel(y), cos_kernel(y))
 }
 
 /// `(sin x, cos x)` from `(sin y, cos y)` with `x = y + k π/2`: `sin x =
