@@ -54,7 +54,8 @@ pub struct Data<S: Scalar, const NB: usize, const NV: usize, G: Space = Spatial>
     /// forward dynamics fill the lower one).
     pub mass_matrix: [[S; NV]; NV],
     /// `M` factored as `Lᵀ D L`: `D` on the diagonal, `L` transposed above it
-    /// (`ltdl[i][k] = L[k][i]`, i < k; the lower triangle is not written).
+    /// (`ltdl[i][k] = L[k][i]`, i < k). The lower triangle is the
+    /// factorisation's working storage (on long chains, `L` untransposed).
     pub ltdl: [[S; NV]; NV],
     /// Composite rigid-body inertias.
     pub ic: [G::Inertia<S>; NB],
