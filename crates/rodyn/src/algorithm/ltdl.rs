@@ -191,7 +191,7 @@ struct Pivots<S, const NV: usize> {
     scale: S,
     /// The smallest pivot accepted.
     tolerance: S,
-    /// `D[s]` for the coordinates s formed so far (all above k).
+    /// `D[s]` for the coordinates s formed so far (those after k).
     d: [S; NV],
 }
 
