@@ -330,15 +330,26 @@ pub trait Space: Copy + Debug + PartialEq + 'static {
     fn axis_permutation<S: Scalar>(_x: &Self::Transform<S>) -> Option<AxisPermutation> {
         None
     }
+    /// The angle of body i's joint whose sine and cosine
+    /// [`Self::turned_joint_step`] takes when given them (`None`: it takes
+    /// none), so that a caller can form many at once
+    /// ([`Scalar::sin_cos_array`]).
+    #[inline(always)]
+    fn step_angle<S: Scalar>(_frame: &TurnedFrame, _j: &Self::Joint<S>, _q: &[S]) -> Option<S> {
+        None
+    }
     /// [`Self::joint_step`] from body i's turned frame to its parent's,
     /// given its placement seen from the parent's turned frame
     /// ([`Model::turned_placement`](crate::Model::turned_placement)).
+    /// `sin_cos`, when the caller has formed it, is the sine and cosine of
+    /// [`Self::step_angle`].
     #[inline(always)]
     fn turned_joint_step<S: Scalar>(
         _frame: &TurnedFrame,
         j: &Self::Joint<S>,
         turned_placement: &Self::Transform<S>,
         q: &[S],
+        _sin_cos: Option<(S, S)>,
     ) -> Self::Step<S> {
         Self::joint_step(j, turned_placement, q)
     }

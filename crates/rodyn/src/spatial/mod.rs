@@ -193,17 +193,23 @@ impl Space for Spatial {
     fn axis_permutation<S: Scalar>(x: &Transform<S>) -> Option<AxisPermutation> {
         AxisPermutation::from_matrix(&x.rot)
     }
+    /// A joint whose frame turns about a coordinate axis: its angle.
+    #[inline(always)]
+    fn step_angle<S: Scalar>(frame: &TurnedFrame, _j: &Joint<S>, q: &[S]) -> Option<S> {
+        frame.axis().map(|_| q[0])
+    }
     #[inline(always)]
     fn turned_joint_step<S: Scalar>(
         frame: &TurnedFrame,
         j: &Joint<S>,
         turned_placement: &Transform<S>,
         q: &[S],
+        sin_cos: Option<(S, S)>,
     ) -> TransformStep<S> {
         match frame.axis() {
             // The placement's turn is in the frames: the joint angle alone.
             Some(a) => {
-                let (sin, cos) = q[0].sin_cos();
+                let (sin, cos) = sin_cos.unwrap_or_else(|| q[0].sin_cos());
                 TransformStep::Axis {
                     axis: a.turned,
                     cos,
