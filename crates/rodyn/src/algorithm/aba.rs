@@ -15,7 +15,7 @@
 //! Pass 3 (root to leaves): `q̈ᵢ = D⁻¹ (u - Uᵀ a')`, `aᵢ = a' + S q̈ᵢ`, with
 //! `a₀ = -g`.
 
-use crate::algorithm::kinematics::{body_transform, check_state, joint_rates};
+use crate::algorithm::kinematics::{body_transform_with, check_state, joint_rates, JointSinCos};
 use crate::algorithm::rnea::check_external;
 use crate::data::Data;
 use crate::error::{Error, Quantity, Result};
@@ -85,8 +85,9 @@ fn velocity_and_bias_pass<
     v: &[S; NV],
     f_ext: Option<&[G::Force<S>; NB]>,
 ) {
+    let sin_cos = JointSinCos::at(model, q);
     for i in 0..NB {
-        data.li_m_i[i] = body_transform(model, i, q);
+        data.li_m_i[i] = body_transform_with(model, i, q, sin_cos.as_ref());
         let v_parent = match model.parent(i) {
             Some(p) => data.li_m_i[i].act_inv_motion(&data.v[p]),
             None => G::Motion::<S>::ZERO,

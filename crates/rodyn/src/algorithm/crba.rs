@@ -51,7 +51,9 @@
 //! frames into the root frame, each entry a dot product (Pinocchio's world
 //! convention).
 
-use crate::algorithm::kinematics::{check_state, joint_configuration};
+use crate::algorithm::kinematics::{
+    body_transform_with, check_state, joint_configuration, JointSinCos, ANGLES_FIRST,
+};
 use crate::algorithm::ltdl::supporting_ranges;
 use crate::algorithm::rnea;
 use crate::data::Data;
@@ -122,15 +124,6 @@ pub(crate) fn crba_lower<S: Scalar, const NB: usize, const NQ: usize, const NV: 
     add_armature(model, data);
 }
 
-/// Whether [`crba_lower`] forms the sines and cosines of all the joint
-/// angles before its backward pass, on hosts: each pair is a chain of
-/// about 20 dependent operations, which one body's work beside it does not
-/// cover; formed in a pass of their own, two at a time, they overlap
-/// (x86-64, CRBA time: Panda -13 %, Solo12 -11 %, 10-link chain -17 %).
-/// The Cortex-M4, which runs one instruction after the other, would only
-/// pay for storing them.
-const ANGLES_FIRST: bool = cfg!(not(target_arch = "arm"));
-
 /// `(sin, cos)` of each body's [`Space::step_angle`], in one pass over
 /// the bodies ([`Scalar::sin_cos_array`]); the entries of bodies without
 /// one are those of a zero angle, unused.
@@ -193,8 +186,9 @@ pub(crate) fn bias_and_mass_lower<
 ) {
     let t = model.topology();
     let minus_g = -*model.gravity();
+    let sin_cos = JointSinCos::at(model, q);
     for i in 0..NB {
-        let li_m_i = crate::algorithm::kinematics::body_transform(model, i, q);
+        let li_m_i = body_transform_with(model, i, q, sin_cos.as_ref());
         data.ic[i] = *model.turned_inertia(i);
         rnea::forward_body(model, data, i, li_m_i, v, None, f_ext, &minus_g);
     }

@@ -36,6 +36,66 @@ pub(crate) fn body_transform<
         .placed_transform(model.placement(i), joint_configuration(model, i, q))
 }
 
+/// Whether the passes over the bodies form the sines and cosines of all
+/// the joint angles before the bodies' work ([`JointSinCos`]), on hosts:
+/// each pair is a chain of about 20 dependent operations, which one
+/// body's work beside it does not cover; formed in a pass of their own,
+/// two at a time, they overlap. The Cortex-M4, which runs one instruction
+/// after the other, would only pay for storing them.
+pub(crate) const ANGLES_FIRST: bool = cfg!(not(target_arch = "arm"));
+
+/// The sine and cosine of each body's joint angle
+/// ([`JointModel::angle`]; a zero angle's for a joint without one), formed
+/// in one pass ([`Scalar::sin_cos_array`]).
+pub(crate) struct JointSinCos<S, const NB: usize> {
+    sin: [S; NB],
+    cos: [S; NB],
+}
+
+impl<S: Scalar, const NB: usize> JointSinCos<S, NB> {
+    /// At configuration `q`; `None` where [`ANGLES_FIRST`] is false.
+    #[inline(always)]
+    pub(crate) fn at<const NQ: usize, const NV: usize, G: Space>(
+        model: &Model<S, NB, NQ, NV, G>,
+        q: &[S; NQ],
+    ) -> Option<Self> {
+        ANGLES_FIRST.then(|| {
+            let angle = core::array::from_fn(|i| {
+                let q = joint_configuration(model, i, q);
+                model.joint(i).angle(q).unwrap_or(S::ZERO)
+            });
+            let (sin, cos) = S::sin_cos_array(&angle);
+            Self { sin, cos }
+        })
+    }
+}
+
+/// [`body_transform`], from the sines and cosines in `sin_cos` when given.
+#[inline(always)]
+pub(crate) fn body_transform_with<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    i: usize,
+    q: &[S; NQ],
+    sin_cos: Option<&JointSinCos<S, NB>>,
+) -> G::Transform<S> {
+    match sin_cos {
+        // `ANGLES_FIRST` again so that the Cortex-M4's build drops the arm
+        // before inlining (its planar forward dynamics, 92 instructions).
+        Some(t) if ANGLES_FIRST => model.joint(i).placed_transform_from_sin_cos(
+            model.placement(i),
+            joint_configuration(model, i, q),
+            (t.sin[i], t.cos[i]),
+        ),
+        _ => body_transform(model, i, q),
+    }
+}
+
 /// Body `i`'s joint configuration: its slice of `q`.
 #[inline(always)]
 pub(crate) fn joint_configuration<
@@ -249,4 +309,63 @@ pub(crate) fn body_velocity<
         .joint(i)
         .add_motion(&v_parent, joint_rates(model, i, v));
     (li_m_i, v_i)
+}
+
+#[cfg(all(test, feature = "std"))]
+mod tests {
+    use super::{body_transform, body_transform_with, JointSinCos};
+    use crate::joint::{Axis, Joint};
+    use crate::planar::{PlanarInertia, PlanarJoint, PlanarMotion, PlanarTransform, Vec2};
+    use crate::spatial::{Inertia, Mat3, Motion, Sym3, Transform, Vec3};
+    use crate::Model;
+
+    /// The transforms from the sines and cosines formed first are those
+    /// formed body by body, bit for bit, for every joint type.
+    #[test]
+    fn transforms_from_the_angles_formed_first_are_the_same() {
+        let tilted = Mat3::from_axis_angle(&Vec3::new(0.6, 0.0, 0.8), 0.4);
+        let spatial: Model<f64, 5, 11, 10, _> = Model::new(
+            [None, Some(0), Some(1), Some(2), Some(3)],
+            [
+                Joint::free_flyer(),
+                Joint::revolute(Axis::Y),
+                Joint::revolute(Axis::Unit(Vec3::new(0.0, 0.6, 0.8))),
+                Joint::prismatic(Axis::X),
+                Joint::revolute(Axis::Z),
+            ],
+            [Transform::new(tilted, Vec3::new(0.1, -0.2, 0.3)); 5],
+            [Inertia::new(1.0, Vec3::new(0.1, 0.0, 0.0), Sym3::diagonal(0.1, 0.2, 0.3)); 5],
+            Motion::new(Vec3::ZERO, Vec3::new(0.0, 0.0, -9.81)),
+        );
+        let mut q = [0.7, -0.3, 0.2, 0.0, 0.6, 0.0, 0.8, 2.9, -7.4, 0.35, 1.0e6];
+        q[3..7].copy_from_slice(&[0.0, 0.6, 0.0, 0.8]);
+        let sin_cos = JointSinCos::at(&spatial, &q).expect("hosts form the angles first");
+        for i in 0..5 {
+            let (a, b) = (
+                body_transform_with(&spatial, i, &q, Some(&sin_cos)),
+                body_transform(&spatial, i, &q),
+            );
+            assert_eq!(a, b, "body {i}");
+        }
+        let planar: Model<f64, 3, 3, 3, _> = Model::new_planar(
+            [None, Some(0), Some(1)],
+            [
+                PlanarJoint::Revolute,
+                PlanarJoint::Prismatic(Vec2::new(0.6, 0.8)),
+                PlanarJoint::Revolute,
+            ],
+            [PlanarTransform::from_angle(0.3, Vec2::new(0.5, 0.1)); 3],
+            [PlanarInertia::new(1.0, Vec2::new(0.2, 0.0), 0.1); 3],
+            PlanarMotion::new(0.0, Vec2::new(0.0, -9.81)),
+        );
+        let q = [-2.2, 0.4, 4.1];
+        let sin_cos = JointSinCos::at(&planar, &q).expect("hosts form the angles first");
+        for i in 0..3 {
+            let (a, b) = (
+                body_transform_with(&planar, i, &q, Some(&sin_cos)),
+                body_transform(&planar, i, &q),
+            );
+            assert_eq!(a, b, "planar body {i}");
+        }
+    }
 }

@@ -5,7 +5,7 @@
 //! force `fᵢ = Iᵢ aᵢ + vᵢ ×* Iᵢ vᵢ - fᵢᵉˣᵗ`. Backward pass: `τᵢ = Sᵀ fᵢ`,
 //! `f_λ += ᵏX_ᵢ* fᵢ`.
 
-use crate::algorithm::kinematics::{body_transform, check_state, joint_rates};
+use crate::algorithm::kinematics::{body_transform_with, check_state, joint_rates, JointSinCos};
 use crate::data::Data;
 use crate::error::{Quantity, Result};
 use crate::joint::JointModel;
@@ -79,8 +79,9 @@ fn forward_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
     f_ext: Option<&[G::Force<S>; NB]>,
 ) {
     let minus_g = -*model.gravity();
+    let sin_cos = JointSinCos::at(model, q);
     for i in 0..NB {
-        let li_m_i = body_transform(model, i, q);
+        let li_m_i = body_transform_with(model, i, q, sin_cos.as_ref());
         forward_body(model, data, i, li_m_i, v, a, f_ext, &minus_g);
     }
 }

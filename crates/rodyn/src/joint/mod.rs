@@ -68,6 +68,27 @@ pub trait JointModel<S: Scalar, G: Space>: Copy + Debug {
         use crate::space::RigidTransform;
         placement.compose(&self.transform(q))
     }
+    /// The angle whose sine and cosine
+    /// [`placed_transform_from_sin_cos`](Self::placed_transform_from_sin_cos)
+    /// takes (a revolute joint's `q[0]`), or `None`. An algorithm that
+    /// forms many joints' transforms forms these together
+    /// ([`Scalar::sin_cos_array`]).
+    #[inline]
+    fn angle(&self, _q: &[S]) -> Option<S> {
+        None
+    }
+    /// [`placed_transform`](Self::placed_transform) given `sin_cos`, the
+    /// sine and cosine of [`angle`](Self::angle); a joint without an angle
+    /// ignores it.
+    #[inline]
+    fn placed_transform_from_sin_cos(
+        &self,
+        placement: &G::Transform<S>,
+        q: &[S],
+        _sin_cos: (S, S),
+    ) -> G::Transform<S> {
+        self.placed_transform(placement, q)
+    }
     /// The joint velocity `S qd`.
     fn motion(&self, qd: &[S]) -> G::Motion<S>;
     /// `m + S qd`. Coordinate-axis joints override it to touch one component.
@@ -212,6 +233,22 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
         match self {
             Self::Revolute(j) => j.placed_transform(placement, q[0]),
             _ => placement.compose(&self.transform(q)),
+        }
+    }
+    #[inline(always)]
+    fn angle(&self, q: &[S]) -> Option<S> {
+        matches!(self, Self::Revolute(_)).then(|| q[0])
+    }
+    #[inline(always)]
+    fn placed_transform_from_sin_cos(
+        &self,
+        placement: &Transform<S>,
+        q: &[S],
+        (sin, cos): (S, S),
+    ) -> Transform<S> {
+        match self {
+            Self::Revolute(j) => j.placed_transform_from_sin_cos(placement, sin, cos),
+            _ => self.placed_transform(placement, q),
         }
     }
     #[inline(always)]

@@ -20,6 +20,12 @@ impl<S: Scalar> Revolute<S> {
     #[must_use]
     pub fn transform(&self, q: S) -> Transform<S> {
         let (s, c) = q.sin_cos();
+        self.transform_from_sin_cos(s, c)
+    }
+    /// `jMi(q)` given `sin q` and `cos q`.
+    #[inline]
+    #[must_use]
+    pub fn transform_from_sin_cos(&self, s: S, c: S) -> Transform<S> {
         let rot = match self.axis.index() {
             Some(k) => Mat3::from_axis_index(k, s, c),
             None => Mat3::from_axis_sin_cos(&self.axis.vector(), s, c),
@@ -34,12 +40,22 @@ impl<S: Scalar> Revolute<S> {
     #[cfg_attr(target_arch = "arm", inline)]
     #[must_use]
     pub fn placed_transform(&self, placement: &Transform<S>, q: S) -> Transform<S> {
+        let (s, c) = q.sin_cos();
+        self.placed_transform_from_sin_cos(placement, s, c)
+    }
+    /// [`placed_transform`](Self::placed_transform) given `sin q` and `cos q`.
+    #[cfg_attr(not(target_arch = "arm"), inline(always))]
+    #[cfg_attr(target_arch = "arm", inline)]
+    #[must_use]
+    pub fn placed_transform_from_sin_cos(
+        &self,
+        placement: &Transform<S>,
+        s: S,
+        c: S,
+    ) -> Transform<S> {
         match self.axis.index() {
-            Some(k) => {
-                let (s, c) = q.sin_cos();
-                Transform::new(placement.rot.mul_axis_rotation(k, s, c), placement.trans)
-            }
-            None => placement.compose(&self.transform(q)),
+            Some(k) => Transform::new(placement.rot.mul_axis_rotation(k, s, c), placement.trans),
+            None => placement.compose(&self.transform_from_sin_cos(s, c)),
         }
     }
     /// `S qd`.

@@ -69,6 +69,25 @@ impl<S: Scalar> JointModel<S, Planar> for PlanarJoint<S> {
             Self::Floating => PlanarTransform::from_angle(q[2], Vec2::new(q[0], q[1])),
         }
     }
+    #[inline(always)]
+    fn angle(&self, q: &[S]) -> Option<S> {
+        matches!(self, Self::Revolute).then(|| q[0])
+    }
+    #[inline(always)]
+    fn placed_transform_from_sin_cos(
+        &self,
+        placement: &PlanarTransform<S>,
+        q: &[S],
+        (sin, cos): (S, S),
+    ) -> PlanarTransform<S> {
+        match self {
+            Self::Revolute => crate::space::RigidTransform::compose(
+                placement,
+                &PlanarTransform::from_cos_sin(cos, sin, Vec2::ZERO),
+            ),
+            _ => self.placed_transform(placement, q),
+        }
+    }
     #[inline]
     fn motion(&self, qd: &[S]) -> PlanarMotion<S> {
         match self {
