@@ -116,7 +116,7 @@ pub(crate) fn crba_lower<S: Scalar, const NB: usize, const NQ: usize, const NV: 
         let angles = q.filter(|_| ANGLES_FIRST).map(|q| step_sin_cos(model, q));
         let mut columns = [G::Force::<S>::ZERO; NV];
         for i in (0..NB).rev() {
-            let sin_cos = angles.as_ref().map(|(sin, cos)| (sin[i], cos[i]));
+            let sin_cos = angles.as_ref().map(|a| a.get(i));
             let step = joint_step(model, &data.li_m_i, q, sin_cos, i);
             backward_body(model, data, i, step.as_ref(), &mut columns);
         }
@@ -124,19 +124,16 @@ pub(crate) fn crba_lower<S: Scalar, const NB: usize, const NQ: usize, const NV: 
     add_armature(model, data);
 }
 
-/// `(sin, cos)` of each body's [`Space::step_angle`], in one pass over
-/// the bodies ([`Scalar::sin_cos_array`]); the entries of bodies without
-/// one are those of a zero angle, unused.
+/// The sines and cosines of each body's [`Space::step_angle`].
 #[inline(always)]
 fn step_sin_cos<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     model: &Model<S, NB, NQ, NV, G>,
     q: &[S; NQ],
-) -> ([S; NB], [S; NB]) {
-    let angle = core::array::from_fn(|i| {
+) -> JointSinCos<S, NB> {
+    JointSinCos::from_angles(|i| {
         let q = joint_configuration(model, i, q);
-        G::step_angle(model.turned_frame(i), model.joint(i), q).unwrap_or(S::ZERO)
-    });
-    S::sin_cos_array(&angle)
+        G::step_angle(model.turned_frame(i), model.joint(i), q)
+    })
 }
 
 /// Body i's step from its turned frame to its parent's, from `q` or, with

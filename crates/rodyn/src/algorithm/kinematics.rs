@@ -59,14 +59,22 @@ impl<S: Scalar, const NB: usize> JointSinCos<S, NB> {
         model: &Model<S, NB, NQ, NV, G>,
         q: &[S; NQ],
     ) -> Option<Self> {
-        ANGLES_FIRST.then(|| {
-            let angle = core::array::from_fn(|i| {
-                let q = joint_configuration(model, i, q);
-                model.joint(i).angle(q).unwrap_or(S::ZERO)
-            });
-            let (sin, cos) = S::sin_cos_array(&angle);
-            Self { sin, cos }
-        })
+        ANGLES_FIRST
+            .then(|| Self::from_angles(|i| model.joint(i).angle(joint_configuration(model, i, q))))
+    }
+
+    /// Of `angle(i)` for each body i, a zero angle's where it is `None`.
+    #[inline(always)]
+    pub(crate) fn from_angles(angle: impl Fn(usize) -> Option<S>) -> Self {
+        let angle = core::array::from_fn(|i| angle(i).unwrap_or(S::ZERO));
+        let (sin, cos) = S::sin_cos_array(&angle);
+        Self { sin, cos }
+    }
+
+    /// Body i's `(sin, cos)`.
+    #[inline(always)]
+    pub(crate) fn get(&self, i: usize) -> (S, S) {
+        (self.sin[i], self.cos[i])
     }
 }
 
@@ -90,7 +98,7 @@ pub(crate) fn body_transform_with<
         Some(t) if ANGLES_FIRST => model.joint(i).placed_transform_from_sin_cos(
             model.placement(i),
             joint_configuration(model, i, q),
-            (t.sin[i], t.cos[i]),
+            t.get(i),
         ),
         _ => body_transform(model, i, q),
     }
