@@ -9,7 +9,7 @@
 
 use crate::description::{ForceLaw, JointType, ModelDescription};
 use crate::diagnostic::{Diagnostic, Location, Result};
-use crate::geometry::{snap_signed_permutation, Mat3, Pose, Vec3, IDENTITY};
+use crate::geometry::{snap_deviation, snap_signed_permutation, Mat3, Pose, Vec3, IDENTITY};
 use crate::names::{check_distinct, constant_name, module_name};
 
 /// Rust source of `model` as `pub mod <module>`. `source` names the model
@@ -271,6 +271,13 @@ fn model_macro(w: &mut Writer, model: &ModelDescription) -> Result<()> {
             b.joint_name,
             model.body_name(b.parent)
         ));
+        // A quarter turn written to a few digits is rounded: say by how much.
+        match snap_deviation(&b.placement.rot) {
+            Some(moved) if !model.planar && moved > 1e-15 => w.line(&format!(
+                "// (rotation rounded to a quarter turn: entries moved by up to {moved:.1e})"
+            )),
+            _ => {}
+        }
         w.line(&format!("{},", placement(model.planar, &b.placement)));
     }
     w.close("],");

@@ -86,16 +86,21 @@ pub fn rotation_from_rpy(rpy: &Vec3) -> Mat3 {
 
 /// How close (absolute) an entry must be to 0 or ±1 for
 /// [`snap_signed_permutation`] to round it: far above the 1e-16 that
-/// `cos(π/2)` leaves, far below any deliberate rotation.
-pub const SNAP_TOLERANCE: f64 = 1e-12;
+/// `cos(π/2)` leaves and the 4.9e-12 of π/2 written to 12 digits
+/// (`1.57079632679`, as the UR descriptions write it), ten times below the
+/// 1e-9 to which rodyn is held against Pinocchio, and far below any
+/// deliberate rotation.
+pub const SNAP_TOLERANCE: f64 = 1e-10;
 
 /// `m` with its entries rounded to exactly 0 or ±1 when every entry is within
 /// [`SNAP_TOLERANCE`] of one of them and the result is a rotation (a signed
 /// permutation: one ±1 per row and column, determinant +1); otherwise `None`.
 ///
 /// A URDF `rpy` of 0 or ±π/2 gives such a rotation up to 6e-17 entries where
-/// zeros belong; exact entries keep the generated source readable and the
-/// products with them exact.
+/// zeros belong, or up to 5e-12 when π/2 is written to 12 digits; exact
+/// entries keep the generated source readable and the products with them
+/// exact, and let the algorithms take the quarter turn into their frames.
+/// [`snap_deviation`] says how far the entries moved.
 #[must_use]
 pub fn snap_signed_permutation(m: &Mat3) -> Option<Mat3> {
     let mut out = [[0.0; 3]; 3];
@@ -118,6 +123,20 @@ pub fn snap_signed_permutation(m: &Mat3) -> Option<Mat3> {
         - out[0][1] * (out[1][0] * out[2][2] - out[1][2] * out[2][0])
         + out[0][2] * (out[1][0] * out[2][1] - out[1][1] * out[2][0]);
     (one_per_line && det == 1.0).then_some(out)
+}
+
+/// The largest change of an entry of `m` that [`snap_signed_permutation`]
+/// makes; `None` where it does not snap.
+#[must_use]
+pub fn snap_deviation(m: &Mat3) -> Option<f64> {
+    let snapped = snap_signed_permutation(m)?;
+    Some(
+        m.iter()
+            .flatten()
+            .zip(snapped.iter().flatten())
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max),
+    )
 }
 
 /// A rigid pose `aMb` (rotation, then translation).
@@ -283,6 +302,8 @@ mod tests {
     }
 
     #[test]
+    // π/2 as URDF files write it, on purpose.
+    #[allow(clippy::approx_constant)]
     fn quarter_turns_snap_to_exact_signed_permutations_and_nothing_else_does() {
         let half_pi = core::f64::consts::FRAC_PI_2;
         let quarter = rotation_from_rpy(&[half_pi, 0.0, -half_pi]);
@@ -298,6 +319,15 @@ mod tests {
         for (a, b) in snapped.iter().flatten().zip(quarter.iter().flatten()) {
             assert!((a - b).abs() < 1e-15);
         }
+        // π/2 to 12 digits, as the UR descriptions write it: rounded, and
+        // the change said; to 10 digits (1.8e-9 off): kept.
+        let ur = rotation_from_rpy(&[0.0, 1.57079632679, 0.0]);
+        let moved = snap_deviation(&ur).expect("a quarter turn to 12 digits");
+        assert!(moved > 4.8e-12 && moved < 5.0e-12, "{moved}");
+        assert_eq!(
+            snap_deviation(&rotation_from_rpy(&[0.0, 1.570796327, 0.0])),
+            None
+        );
         // A small deliberate rotation is kept as it is.
         assert_eq!(
             snap_signed_permutation(&rotation_from_rpy(&[1e-9, 0.0, 0.0])),
