@@ -270,10 +270,12 @@ pub trait Space: Copy + Debug + PartialEq + 'static {
     /// (the opposite way when `axis.1`) and `step` turns about that same
     /// axis: the body's column `Iᶜ S` into `columns[0]`; for each column
     /// `F_d` of `columns` (the body's subtree, its own first) the entry
-    /// `rows[d][iv] = Sᵀ F_d` and `F_d` moved through the step; then `ic`
-    /// moved and added to `parent_ic`. Returns `false`, having done
+    /// `rows[d][iv] = Sᵀ F_d` (with `upper`, also `rows[0][iv + d]`, its
+    /// mirror above the diagonal) and `F_d` moved through the step; then
+    /// `ic` moved and added to `parent_ic`. Returns `false`, having done
     /// nothing, where it does not apply (the default: always).
     #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
     fn crba_axis_body<S: Scalar, const NV: usize>(
         _step: &Self::Step<S>,
         _axis: (usize, bool),
@@ -282,6 +284,7 @@ pub trait Space: Copy + Debug + PartialEq + 'static {
         _columns: &mut [Self::Force<S>],
         _rows: &mut [[S; NV]],
         _iv: usize,
+        _upper: bool,
     ) -> bool {
         false
     }
@@ -289,9 +292,10 @@ pub trait Space: Copy + Debug + PartialEq + 'static {
     /// identity (a free flyer, linear coordinates first), fused: its own
     /// block of `M`, the composite inertia `ic` itself, into the lower
     /// triangle of `rows[..6]`, and its entries against the rest of its
-    /// subtree, `rows[6 + d][iv..iv + 6]` = `columns[d]` reordered. Nothing
-    /// moves from a root. Returns `false`, having done nothing, for any
-    /// other joint (the default: always).
+    /// subtree, `rows[6 + d][iv..iv + 6]` = `columns[d]` reordered; with
+    /// `upper`, their mirrors above the diagonal too. Nothing moves from a
+    /// root. Returns `false`, having done nothing, for any other joint (the
+    /// default: always).
     #[inline(always)]
     fn crba_free_root<S: Scalar, const NV: usize>(
         _joint: &Self::Joint<S>,
@@ -299,6 +303,7 @@ pub trait Space: Copy + Debug + PartialEq + 'static {
         _columns: &[Self::Force<S>],
         _rows: &mut [[S; NV]],
         _iv: usize,
+        _upper: bool,
     ) -> bool {
         false
     }

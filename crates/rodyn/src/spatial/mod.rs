@@ -150,8 +150,9 @@ impl Space for Spatial {
         columns: &mut [Force<S>],
         rows: &mut [[S; NV]],
         iv: usize,
+        upper: bool,
     ) -> bool {
-        crba_body::axis_body(step, axis, ic, parent_ic, columns, rows, iv)
+        crba_body::axis_body(step, axis, ic, parent_ic, columns, rows, iv, upper)
     }
     #[inline(always)]
     fn crba_free_root<S: Scalar, const NV: usize>(
@@ -160,10 +161,11 @@ impl Space for Spatial {
         columns: &[Force<S>],
         rows: &mut [[S; NV]],
         iv: usize,
+        upper: bool,
     ) -> bool {
         let free = matches!(joint, Joint::FreeFlyer(_));
         if free {
-            crba_body::free_flyer_root(ic, columns, rows, iv);
+            crba_body::free_flyer_root(ic, columns, rows, iv, upper);
         }
         free
     }
