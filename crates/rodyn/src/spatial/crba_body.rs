@@ -107,6 +107,8 @@ impl<S: Scalar> AxisTurn<S> {
             };
             own_row[iv] = sign * own.ang.get(K);
             *column = turned(&own);
+            // The last bound never binds (`rows` ends at row NV at most);
+            // it tells the compiler that the mirror's slice fits.
             let n = columns.len().min(rows.len()).min(NV.saturating_sub(iv + 1));
             let (columns, rows) = (&mut columns[..n], &mut rows[..n]);
             let mirror = &mut own_row[iv + 1..iv + 1 + n];
