@@ -102,14 +102,52 @@ pub fn crba<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
         false
     };
     if !upper_written {
-        let m = &mut data.mass_matrix;
+        mirror_lower(&mut data.mass_matrix);
+    }
+    Ok(&data.mass_matrix)
+}
+
+/// Copies the lower triangle of `m` onto the upper. On hosts two rows by
+/// two columns at a time, so that each row above takes its entries in
+/// adjacent pairs (60-link chain CRBA time -3 %); the Cortex-M4, which
+/// pays per instruction, one entry at a time (the blocked form measured
+/// there: quadruped CRBA +470 instructions).
+#[inline]
+fn mirror_lower<S: Scalar, const NV: usize>(m: &mut [[S; NV]; NV]) {
+    if cfg!(target_arch = "arm") {
         for r in 1..NV {
             for c in 0..r {
                 m[c][r] = m[r][c];
             }
         }
+        return;
     }
-    Ok(&data.mass_matrix)
+    let mut r = 1;
+    while r + 1 < NV {
+        // Rows r and r + 1, their common columns in 2 x 2 blocks.
+        let mut c = 0;
+        while c + 1 < r {
+            let (a0, a1, b0, b1) = (m[r][c], m[r][c + 1], m[r + 1][c], m[r + 1][c + 1]);
+            m[c][r] = a0;
+            m[c][r + 1] = b0;
+            m[c + 1][r] = a1;
+            m[c + 1][r + 1] = b1;
+            c += 2;
+        }
+        // The rest: at most one column of row r, two of row r + 1.
+        for k in c..=r {
+            if k < r {
+                m[k][r] = m[r][k];
+            }
+            m[k][r + 1] = m[r + 1][k];
+        }
+        r += 2;
+    }
+    if r < NV {
+        for k in 0..r {
+            m[k][r] = m[r][k];
+        }
+    }
 }
 
 /// [`crba`] without the check of `q` and without mirroring: leaves `M`'s
@@ -312,21 +350,26 @@ fn about_root<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: S
     for i in (0..NB).rev() {
         let (joint, frame) = (model.joint(i), model.turned_frame(i));
         let iv = t.idx_v[i];
-        for k in 0..t.nv[i] {
-            let c = iv + k;
+        let mut f_root = [[S::ZERO; 6]; MAX_JOINT_NV];
+        for (k, f_k) in f_root.iter_mut().enumerate().take(t.nv[i]) {
             let f = G::turned_inertia_column(frame, &data.ic[i], joint, k);
             let f = to_root[i].act_force(&f);
-            let f: [S; 6] =
-                core::array::from_fn(|d| if d < G::DIM { f.component(d) } else { S::ZERO });
-            let row = &mut data.mass_matrix[c];
-            // Every supporting coordinate, the joint's own up to c included.
-            for (first, last) in supporting_ranges(t, Some(c)) {
-                dot_columns::<S, NV, G>(&mut row[first..=last], &s_root, first, &f);
-            }
+            *f_k = core::array::from_fn(|d| if d < G::DIM { f.component(d) } else { S::ZERO });
         }
+        // The composite inertias form one chain of dependent steps: the
+        // parent's is stepped before this body's rows, so that it overlaps
+        // their dot products (60-link chain CRBA time -6 %).
         if let (Some(p), Some(step)) = (t.parents[i], &steps[i]) {
             let ic_i = data.ic[i];
             G::add_stepped_inertia(&mut data.ic[p], step, &ic_i);
+        }
+        for (k, f) in f_root.iter().enumerate().take(t.nv[i]) {
+            let c = iv + k;
+            let row = &mut data.mass_matrix[c];
+            // Every supporting coordinate, the joint's own up to c included.
+            for (first, last) in supporting_ranges(t, Some(c)) {
+                dot_columns::<S, NV, G>(&mut row[first..=last], &s_root, first, f);
+            }
         }
     }
 }
@@ -893,6 +936,35 @@ mod tests {
         q[3..7].iter_mut().for_each(|x| *x /= norm);
         assert_rneas_columns(&contiguous, &q);
         assert_rneas_columns(&interleaved, &q);
+    }
+
+    /// Every entry above the diagonal is its mirror's, at every parity of
+    /// the size (the host's copy goes by 2 x 2 blocks).
+    fn assert_mirrors<const N: usize>() {
+        let mut m = [[f64::NAN; N]; N];
+        for (r, row) in m.iter_mut().enumerate() {
+            for (c, e) in row.iter_mut().enumerate().take(r + 1) {
+                *e = (10 * r + c) as f64;
+            }
+        }
+        super::mirror_lower(&mut m);
+        for r in 0..N {
+            for c in 0..N {
+                let e = (10 * r.max(c) + r.min(c)) as f64;
+                assert_eq!(m[r][c], e, "N = {N}: M[{r}][{c}]");
+            }
+        }
+    }
+
+    #[test]
+    fn the_mirror_fills_the_upper_triangle_at_every_size() {
+        assert_mirrors::<1>();
+        assert_mirrors::<2>();
+        assert_mirrors::<3>();
+        assert_mirrors::<4>();
+        assert_mirrors::<5>();
+        assert_mirrors::<8>();
+        assert_mirrors::<13>();
     }
 
     #[test]
