@@ -11,7 +11,8 @@
 //! ```
 //!
 //! Without a profiler it prints the wall-clock time per call.
-//! Models: `panda`, `ur5`, `solo12`, `chainN` and `chainN_planar` (N in 5, 10, 20, 60).
+//! Models: `panda`, `ur5`, `solo12`, `chainN` (N in 5, 10, 20, 30, 40, 50, 60)
+//! and `chainN_planar` (N in 5, 10, 20, 60).
 
 use rodyn_bench::cases::{Case, ModelCase};
 use rodyn_bench::models::{planar_chain, planar_chain_3d, PANDA, SOLO12, UR5};
@@ -27,6 +28,9 @@ fn case(name: &str) -> Option<Box<dyn Case>> {
         "chain5" => Box::new(ModelCase::new(planar_chain_3d::<5>(), STATES, SEED)),
         "chain10" => Box::new(ModelCase::new(planar_chain_3d::<10>(), STATES, SEED)),
         "chain20" => Box::new(ModelCase::new(planar_chain_3d::<20>(), STATES, SEED)),
+        "chain30" => Box::new(ModelCase::new(planar_chain_3d::<30>(), STATES, SEED)),
+        "chain40" => Box::new(ModelCase::new(planar_chain_3d::<40>(), STATES, SEED)),
+        "chain50" => Box::new(ModelCase::new(planar_chain_3d::<50>(), STATES, SEED)),
         "chain60" => Box::new(ModelCase::new(planar_chain_3d::<60>(), STATES, SEED)),
         "chain5_planar" => Box::new(ModelCase::new(planar_chain::<5>(), STATES, SEED)),
         "chain10_planar" => Box::new(ModelCase::new(planar_chain::<10>(), STATES, SEED)),

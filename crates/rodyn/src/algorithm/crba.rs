@@ -296,15 +296,18 @@ pub(crate) fn bias_and_mass_lower<
 
 /// Whether [`about_root`] pays: in double precision, on trees whose
 /// columns walk past at least `MIN_DEPTH` moving bodies on average (a
-/// chain of 31 links or more; an arm or a legged robot never). x86-64,
-/// f64, CRBA time: 20-link chain +10 %, 30-link even, 40-link -8 %,
-/// 60-link -16 %; the root frames form one chain of dependent 3x3
-/// products, which short chains do not repay. The condition on `NV` is
-/// implied by the depth and known at compile time, so smaller models
-/// carry no second copy of the pass.
+/// chain of 51 links or more; an arm or a legged robot never). x86-64,
+/// f64, the root-frame pass against the local one (`profile` binary,
+/// fastest of alternating runs), CRBA time: 20-link chain +32 %, 30-link
+/// +20 %, 40-link +8 %, 50-link +2 %, 60-link -3.5 %; CRBA forward
+/// dynamics: 40-link +4 %, 50-link -1 %, 60-link -2.5 %. The root frames
+/// and the root-frame columns cost two general transforms per body, which
+/// only long chains repay. The condition on `NV` is implied by the depth
+/// and known at compile time, so smaller models carry no second copy of
+/// the pass.
 #[inline(always)]
 fn about_root_pays<S: Scalar, const NB: usize, const NV: usize>(t: &Topology<NB, NV>) -> bool {
-    const MIN_DEPTH: usize = 15;
+    const MIN_DEPTH: usize = 25;
     NV > 2 * MIN_DEPTH && S::EPSILON < 1.0e-10 && t.mean_support_depth >= MIN_DEPTH
 }
 
@@ -753,10 +756,10 @@ mod tests {
         }
     }
 
-    /// A 32-link chain, long enough in `f64` for the root-frame pass:
+    /// A 52-link chain, long enough in `f64` for the root-frame pass:
     /// joints about every axis behind quarter turns, tilted placements, a
     /// prismatic joint and a general axis.
-    fn long_chain() -> Model<f64, 32, 32, 32, Spatial> {
+    fn long_chain() -> Model<f64, 52, 52, 52, Spatial> {
         let turns = [QUARTER_X, QUARTER_Y, HALF_Z_THEN_X, CYCLE];
         let tilted = Mat3::from_axis_angle(&Vec3::new(0.6, 0.0, 0.8), 0.4);
         Model::new(
@@ -790,13 +793,13 @@ mod tests {
     #[test]
     fn the_root_frame_pass_gives_rneas_columns_with_and_without_turns() {
         let plain = long_chain();
-        assert!(super::about_root_pays::<f64, 32, 32>(plain.topology()));
+        assert!(super::about_root_pays::<f64, 52, 52>(plain.topology()));
         let turned = plain.with_recognised_turns();
-        let turned_bodies = (0..32)
+        let turned_bodies = (0..52)
             .filter(|&i| turned.turned_frame(i).axis().is_some())
             .count();
         assert!(turned_bodies >= 8, "{turned_bodies} turned bodies");
-        let q: [f64; 32] = core::array::from_fn(|k| (0.7 * k as f64).sin() * 1.5);
+        let q: [f64; 52] = core::array::from_fn(|k| (0.7 * k as f64).sin() * 1.5);
         for model in [&plain, &turned] {
             assert_rneas_columns(model, &q);
         }
