@@ -12,7 +12,7 @@
 //!
 //! Without a profiler it prints the wall-clock time per call.
 //! Models: `panda`, `ur5`, `solo12`, `chainN` (N in 5, 10, 20, 30, 40, 50, 60)
-//! and `chainN_planar` (N in 5, 10, 20, 60).
+//! and `chainN_planar` (N in 5, 10, 20, 30, 40, 50, 60).
 
 use rodyn_bench::cases::{Case, ModelCase};
 use rodyn_bench::models::{planar_chain, planar_chain_3d, PANDA, SOLO12, UR5};
@@ -35,6 +35,9 @@ fn case(name: &str) -> Option<Box<dyn Case>> {
         "chain5_planar" => Box::new(ModelCase::new(planar_chain::<5>(), STATES, SEED)),
         "chain10_planar" => Box::new(ModelCase::new(planar_chain::<10>(), STATES, SEED)),
         "chain20_planar" => Box::new(ModelCase::new(planar_chain::<20>(), STATES, SEED)),
+        "chain30_planar" => Box::new(ModelCase::new(planar_chain::<30>(), STATES, SEED)),
+        "chain40_planar" => Box::new(ModelCase::new(planar_chain::<40>(), STATES, SEED)),
+        "chain50_planar" => Box::new(ModelCase::new(planar_chain::<50>(), STATES, SEED)),
         "chain60_planar" => Box::new(ModelCase::new(planar_chain::<60>(), STATES, SEED)),
         _ => return None,
     })

@@ -300,7 +300,8 @@ pub(crate) fn bias_and_mass_lower<
 /// f64, the root-frame pass against the local one (`profile` binary,
 /// fastest of alternating runs), CRBA time: 20-link chain +32 %, 30-link
 /// +20 %, 40-link +8 %, 50-link +2 %, 60-link -3.5 %; CRBA forward
-/// dynamics: 40-link +4 %, 50-link -1 %, 60-link -2.5 %. The root frames
+/// dynamics: 40-link +4 %, 50-link -1 %, 60-link -2.5 %; planar algebra,
+/// CRBA: 40-link +16 %, 50-link +4 %, 60-link -12 %. The root frames
 /// and the root-frame columns cost two general transforms per body, which
 /// only long chains repay. The condition on `NV` is implied by the depth
 /// and known at compile time, so smaller models carry no second copy of
