@@ -98,11 +98,11 @@ const ROWS_PER_COMBINATION: usize = 4;
 /// (the combination fills SIMD lanes the Cortex-M4 does not have), on
 /// trees whose coordinates sit below at least `MIN_DEPTH` moving bodies
 /// on average (chains of 31 links or more; never an arm or a legged
-/// robot). x86-64, f64, instructions per CRBA
-/// forward dynamics, by combination against by dots only: 20-link chain
-/// 42,079 against 39,777, 30-link 77,493 against 74,544, 40-link 122,227
-/// against 131,469, 60-link 240,371 against 278,070. The condition on
-/// `NV` is known at compile time, so small models carry no second copy.
+/// robot). x86-64, f64, instructions per CRBA forward dynamics, by
+/// combination against by dots only: 20-link chain 42,079 against 39,777,
+/// 30-link 77,493 against 74,544, 40-link 122,227 against 131,469,
+/// 60-link 240,371 against 278,070. The condition on `NV` is known at
+/// compile time, so small models carry no second copy.
 #[inline(always)]
 fn combination_pays<const NB: usize, const NV: usize>(t: &Topology<NB, NV>) -> bool {
     const MIN_DEPTH: usize = 15;
