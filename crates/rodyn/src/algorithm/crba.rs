@@ -52,7 +52,7 @@
 //! Long chains in `f64` take a second form of the backward pass,
 //! `about_root`: columns and subspace columns moved once from the turned
 //! frames into the root frame, each entry a dot product (Pinocchio's world
-//! convention).
+//! convention); for [`crba`] on a host it writes each entry's mirror too.
 
 use crate::algorithm::kinematics::{
     body_transform_with, check_state, joint_configuration, JointSinCos, ANGLES_FIRST,
@@ -69,7 +69,8 @@ use crate::Scalar;
 
 /// Whether the local backward pass writes `M`'s zeros (those between
 /// unrelated limbs) and, for [`crba`], its entries above the diagonal
-/// itself, as it meets each entry, on hosts: the separate clear and mirror
+/// itself, as it meets each entry, on hosts (the root-frame pass, for
+/// [`crba`], the entries above the diagonal): the separate clear and mirror
 /// passes are stores to scattered rows that an out-of-order core
 /// otherwise waits on, where the stores in the pass hide among its
 /// arithmetic (x86-64 CRBA time: Solo12 -12 %, the UR5 -7 %, the Panda
