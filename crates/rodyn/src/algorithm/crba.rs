@@ -826,18 +826,25 @@ mod tests {
 
     /// A 52-link chain, long enough in `f64` for the root-frame pass.
     fn long_chain() -> Model<f64, 52, 52, 52, Spatial> {
-        long_tree(core::array::from_fn(|i| i.checked_sub(1)))
+        long_tree(
+            core::array::from_fn(|i| i.checked_sub(1)),
+            Joint::revolute(Axis::X),
+        )
     }
 
-    /// A tree of single-coordinate joints on `parents`: joints about every
-    /// axis behind quarter turns, tilted placements, a prismatic joint and
-    /// a general axis.
-    fn long_tree<const N: usize>(parents: [Option<usize>; N]) -> Model<f64, N, N, N, Spatial> {
+    /// A tree on `parents`, body 0 on `root`, the others on
+    /// single-coordinate joints: about every axis behind quarter turns,
+    /// tilted placements, a prismatic joint and a general axis.
+    fn long_tree<const NB: usize, const NQ: usize, const NV: usize>(
+        parents: [Option<usize>; NB],
+        root: Joint<f64>,
+    ) -> Model<f64, NB, NQ, NV, Spatial> {
         let turns = [QUARTER_X, QUARTER_Y, HALF_Z_THEN_X, CYCLE];
         let tilted = Mat3::from_axis_angle(&Vec3::new(0.6, 0.0, 0.8), 0.4);
         Model::new(
             parents,
             core::array::from_fn(|i| match i % 7 {
+                _ if i == 0 => root,
                 3 => Joint::prismatic(Axis::Y),
                 5 => Joint::revolute(Axis::Unit(Vec3::new(0.0, 0.6, 0.8))),
                 k => Joint::revolute([Axis::X, Axis::Y, Axis::Z][k % 3]),
@@ -882,16 +889,33 @@ mod tests {
     fn the_root_frame_pass_fills_the_zeros_between_branches() {
         // A 40-link trunk; a 10-link branch from its tip and another from
         // its 31st link, whose coordinates and the first's share zeros.
-        let model = long_tree::<60>(core::array::from_fn(|i| match i {
+        let parents = core::array::from_fn(|i| match i {
             0 => None,
             50 => Some(30),
             i => Some(i - 1),
-        }));
+        });
+        let model = long_tree::<60, 60, 60>(parents, Joint::revolute(Axis::X));
         assert!(super::about_root_pays::<f64, 60, 60>(model.topology()));
         let q: [f64; 60] = core::array::from_fn(|k| (0.9 * k as f64).cos() * 1.2);
         assert_rneas_columns(&model, &q);
         let m = *crba(&model, &mut Data::new(), &q).unwrap();
         assert_eq!((m[55][45], m[45][55]), (0.0, 0.0));
+    }
+
+    #[test]
+    fn the_root_frame_pass_takes_a_free_flying_root() {
+        // A 60-link chain on a free flyer: the root's six coordinates form
+        // a block whose entries below its diagonal are dot products too.
+        let parents = core::array::from_fn(|i: usize| i.checked_sub(1));
+        let model = long_tree::<61, 67, 66>(parents, Joint::free_flyer());
+        assert!(super::about_root_pays::<f64, 61, 66>(model.topology()));
+        let norm = (0.01f64 + 0.04 + 0.09 + 0.86).sqrt();
+        let q: [f64; 67] = core::array::from_fn(|k| match k {
+            0..3 => 0.3 * k as f64 - 0.2,
+            3..7 => [0.1, -0.2, 0.3, 0.86f64.sqrt()][k - 3] / norm,
+            k => (0.9 * k as f64).cos() * 1.2,
+        });
+        assert_rneas_columns(&model, &q);
     }
 
     /// Holds `M` from [`crba`], from the joint transforms and fused with
