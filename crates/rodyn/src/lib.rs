@@ -53,6 +53,7 @@ pub mod data;
 pub mod drive;
 pub mod endpoint;
 pub mod error;
+pub mod frame;
 pub mod joint;
 pub mod model;
 pub mod planar;
@@ -66,6 +67,7 @@ pub mod topology;
 pub use data::Data;
 pub use endpoint::Endpoint;
 pub use error::{Error, Result};
+pub use frame::Frame;
 pub use model::Model;
 pub use scalar::{Dual, Scalar};
 
