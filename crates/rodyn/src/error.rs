@@ -109,6 +109,19 @@ pub enum Error {
         /// The problem.
         problem: DriveProblem,
     },
+    /// A frame fixed on a body the model does not have.
+    FrameBodyOutOfRange {
+        /// The frame's body index.
+        body: usize,
+    },
+    /// An iterative solver (inverse kinematics) used its whole iteration
+    /// budget without meeting its tolerance.
+    NotConverged {
+        /// Iterations run.
+        iterations: usize,
+        /// The residual's norm when it stopped.
+        residual: f64,
+    },
 }
 
 impl fmt::Display for Error {
@@ -150,6 +163,16 @@ impl fmt::Display for Error {
                 "body {body}: custom joints cannot be converted to another scalar type"
             ),
             Self::InvalidDrive { problem } => write!(f, "invalid drive element: {problem:?}"),
+            Self::FrameBodyOutOfRange { body } => {
+                write!(f, "frame on body {body}, which the model does not have")
+            }
+            Self::NotConverged {
+                iterations,
+                residual,
+            } => write!(
+                f,
+                "no convergence in {iterations} iterations (residual {residual:e})"
+            ),
         }
     }
 }
@@ -197,6 +220,18 @@ impl defmt::Format for Error {
             Self::InvalidDrive { problem } => {
                 defmt::write!(f, "invalid drive element: {}", problem)
             }
+            Self::FrameBodyOutOfRange { body } => {
+                defmt::write!(f, "frame on missing body {}", body)
+            }
+            Self::NotConverged {
+                iterations,
+                residual,
+            } => defmt::write!(
+                f,
+                "no convergence in {} iterations ({})",
+                iterations,
+                residual
+            ),
         }
     }
 }

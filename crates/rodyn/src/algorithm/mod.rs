@@ -9,11 +9,17 @@
 //! | [`aba`]               | forward dynamics in O(n)                        | Table 7.1     |
 //! | [`forward_dynamics`]  | ABA or CRBA behind one interface                |               |
 //! | [`energy`]            | kinetic, potential energy, centre of mass       |               |
+//! | [`frames`]            | frame placements, velocities, accelerations     | §2.11         |
+//! | [`jacobian`]          | joint and frame Jacobians, their derivatives    | §4.4          |
+//! | [`centroidal`]        | CoM Jacobian, centroidal momentum matrix, CCRBA | Orin 2013     |
 
 pub mod aba;
+pub mod centroidal;
 pub mod crba;
 pub mod energy;
 pub mod forward_dynamics;
+pub mod frames;
+pub mod jacobian;
 pub mod kinematics;
 pub mod ltdl;
 pub mod rnea;

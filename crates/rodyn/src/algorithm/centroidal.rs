@@ -1,0 +1,207 @@
+//! Centroidal dynamics: the centre of mass, its Jacobian, the centroidal
+//! momentum matrix `A_g`, its product `Ȧ_g v`, and the centroidal composite
+//! rigid-body inertia `I_g` (Orin, Goswami & Lee, "Centroidal dynamics of a
+//! humanoid robot", Autonomous Robots 35, 2013; Pinocchio's `ccrba`,
+//! `computeCentroidalMap`, `computeCentroidalMomentumTimeVariation`).
+//!
+//! The centroidal frame G has the world's axes and its origin at the centre
+//! of mass c. With `ᵒIᶜᵢ` the composite inertia of body i's subtree in the
+//! world, column k of joint i is `A_gₖ = ᴳX_o* ᵒIᶜᵢ ᵒJₖ` (the subtree's
+//! momentum per unit rate about c); `h_G = A_g v` is the centroidal
+//! momentum (`[k; l]`, rodyn's order: angular about c first, then linear).
+//! Its time derivative is the sum of the bodies' net forces moved to G
+//! (the momentum about the moving centre of mass changes only by them,
+//! since ċ × m ċ = 0), so `Ȧ_g v` is that sum at zero joint accelerations.
+//!
+//! Bodies welded to the world (Pinocchio's universe inertia) are not part
+//! of the model and do not count.
+
+use super::frames::FrameSpace;
+use super::kinematics::{forward_kinematics, forward_kinematics_acceleration};
+use crate::data::Data;
+use crate::error::Result;
+use crate::joint::JointModel;
+use crate::model::Model;
+use crate::space::{BodyInertia, RigidTransform, Space, VectorOps};
+use crate::spatial::Spatial;
+use crate::Scalar;
+
+/// The centroidal algorithms' workspace. Its own type so that a firmware
+/// without them pays no RAM for it.
+#[derive(Clone, Debug)]
+pub struct CentroidalData<S: Scalar, const NB: usize, const NV: usize, G: Space = Spatial> {
+    /// `ᵒIᶜᵢ`: body i's subtree's composite inertia in the world frame.
+    pub o_ic: [G::Inertia<S>; NB],
+    /// The whole model's inertia in the world frame (its mass, kg, and
+    /// centre of mass, m, through [`BodyInertia`]).
+    pub total: G::Inertia<S>,
+    /// `A_g`: one column per coordinate, a momentum in G (kg m²/s and
+    /// kg m/s per unit rate).
+    pub ag: [G::Force<S>; NV],
+    /// `I_g`: the centroidal composite rigid-body inertia, in G (its centre
+    /// of mass at G's origin).
+    pub ig: G::Inertia<S>,
+    /// `h_G = A_g v`, the centroidal momentum.
+    pub hg: G::Force<S>,
+    /// `ḣ_G = A_g a + Ȧ_g v`, its rate (N m, N); `Ȧ_g v` at `a = 0`.
+    pub dhg: G::Force<S>,
+}
+
+impl<S: Scalar, const NB: usize, const NV: usize, G: Space> CentroidalData<S, NB, NV, G> {
+    /// A zeroed workspace.
+    #[must_use]
+    pub fn new() -> Self {
+        let zero_force = <G::Force<S> as VectorOps<S>>::ZERO;
+        let zero_inertia = <G::Inertia<S> as BodyInertia<S>>::ZERO;
+        Self {
+            o_ic: [zero_inertia; NB],
+            total: zero_inertia,
+            ag: [zero_force; NV],
+            ig: zero_inertia,
+            hg: zero_force,
+            dhg: zero_force,
+        }
+    }
+
+    /// The model's mass (kg), valid after [`centroidal_map`].
+    #[must_use]
+    pub fn mass(&self) -> S {
+        self.total.mass()
+    }
+
+    /// The centre of mass in the world (m), valid after [`centroidal_map`].
+    #[must_use]
+    pub fn com(&self) -> G::Point<S> {
+        self.total.com()
+    }
+}
+
+impl<S: Scalar, const NB: usize, const NV: usize, G: Space> Default
+    for CentroidalData<S, NB, NV, G>
+{
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// The centroidal momentum matrix and the centroidal composite inertia at
+/// `q` (NQ) (Pinocchio's `computeCentroidalMap` and, but for `h_G`,
+/// `ccrba`). Runs [`forward_kinematics`]. Leaves valid `data.li_m_i`,
+/// `data.o_m_i`, `cd.o_ic`, `cd.total`, `cd.ag`, `cd.ig`; `cd.hg` and
+/// `cd.dhg` stale.
+///
+/// # Errors
+/// As [`forward_kinematics`].
+pub fn centroidal_map<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: FrameSpace,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    cd: &mut CentroidalData<S, NB, NV, G>,
+    q: &[S; NQ],
+) -> Result<()> {
+    forward_kinematics(model, data, q)?;
+    map_pass(model, data, cd);
+    Ok(())
+}
+
+/// [`centroidal_map`] and the momentum and its rate at `(q, v, a)` (NQ, NV,
+/// NV): `cd.hg = A_g v`, `cd.dhg = A_g a + Ȧ_g v` (with `a = 0`, `Ȧ_g v`),
+/// as Pinocchio's `ccrba` and `computeCentroidalMomentumTimeVariation`.
+/// Runs [`forward_kinematics_acceleration`]; leaves valid what it and
+/// [`centroidal_map`] do, and `cd.hg`, `cd.dhg`.
+///
+/// # Errors
+/// As [`forward_kinematics_acceleration`].
+pub fn centroidal_momentum<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: FrameSpace,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    cd: &mut CentroidalData<S, NB, NV, G>,
+    q: &[S; NQ],
+    v: &[S; NV],
+    a: &[S; NV],
+) -> Result<()> {
+    forward_kinematics_acceleration(model, data, q, v, a)?;
+    map_pass(model, data, cd);
+    let o_m_g = G::from_translation(&cd.com());
+    let mut h = <G::Force<S> as VectorOps<S>>::ZERO;
+    let mut dh = h;
+    for i in 0..NB {
+        let inertia = model.inertia(i);
+        let x = &data.o_m_i[i];
+        h += x.act_force(&inertia.mul_motion(&data.v[i]));
+        dh += x.act_force(&inertia.net_force(&data.v[i], &data.a[i]));
+    }
+    cd.hg = o_m_g.act_inv_force(&h);
+    cd.dhg = o_m_g.act_inv_force(&dh);
+    Ok(())
+}
+
+/// Composite inertias in the world, `I_g` and `A_g`, from `data.o_m_i`.
+fn map_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: FrameSpace>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &Data<S, NB, NV, G>,
+    cd: &mut CentroidalData<S, NB, NV, G>,
+) {
+    for i in 0..NB {
+        cd.o_ic[i] = model.inertia(i).act(&data.o_m_i[i]);
+    }
+    let mut total = <G::Inertia<S> as BodyInertia<S>>::ZERO;
+    for i in (0..NB).rev() {
+        match model.parent(i) {
+            Some(p) => cd.o_ic[p] = cd.o_ic[p].combine(&cd.o_ic[i]),
+            None => total = total.combine(&cd.o_ic[i]),
+        }
+    }
+    cd.total = total;
+    let o_m_g = G::from_translation(&total.com());
+    cd.ig = total.act(&o_m_g.inverse());
+    let t = model.topology();
+    for i in 0..NB {
+        let joint = model.joint(i);
+        let iv = t.idx_v[i];
+        for k in 0..t.nv[i] {
+            let o_s = data.o_m_i[i].act_motion(&joint.subspace_column(k));
+            cd.ag[iv + k] = o_m_g.act_inv_force(&cd.o_ic[i].mul_motion(&o_s));
+        }
+    }
+}
+
+/// The centre-of-mass Jacobian into `out` (NV columns, m per unit rate, in
+/// the world): `out[k]` is the linear part of `A_gₖ` over the mass
+/// (Pinocchio's `jacobianCenterOfMass`), so that `Σₖ out[k] vₖ` is the
+/// centre of mass's velocity. Reads `cd.ag` and `cd.total`, valid after
+/// [`centroidal_map`].
+pub fn com_jacobian<S: Scalar, const NB: usize, const NV: usize, G: FrameSpace>(
+    cd: &CentroidalData<S, NB, NV, G>,
+    out: &mut [G::Point<S>; NV],
+) {
+    let inv_mass = S::ONE / cd.mass().max(S::from_f64(S::EPSILON));
+    for k in 0..NV {
+        out[k] = G::scale_point(&G::force_linear_vector(&cd.ag[k]), inv_mass);
+    }
+}
+
+/// The centre of mass's velocity (m/s) and acceleration (m/s², gravity
+/// excluded) in the world: the linear parts of `cd.hg` and `cd.dhg` over
+/// the mass, valid after [`centroidal_momentum`].
+#[must_use]
+pub fn com_velocity_acceleration<S: Scalar, const NB: usize, const NV: usize, G: FrameSpace>(
+    cd: &CentroidalData<S, NB, NV, G>,
+) -> (G::Point<S>, G::Point<S>) {
+    let inv_mass = S::ONE / cd.mass().max(S::from_f64(S::EPSILON));
+    (
+        G::scale_point(&G::force_linear_vector(&cd.hg), inv_mass),
+        G::scale_point(&G::force_linear_vector(&cd.dhg), inv_mass),
+    )
+}

@@ -1,0 +1,225 @@
+//! Frames: placements, velocities and accelerations of bodies and of
+//! [`Frame`]s, in Pinocchio's three reference frames.
+//!
+//! A spatial motion `(ω, v)` of a frame f can be expressed
+//! ([`ReferenceFrame`]):
+//!
+//! * [`Local`](ReferenceFrame::Local): in f's own axes, `v` the velocity of
+//!   f's origin (`ᶠX_o m`);
+//! * [`World`](ReferenceFrame::World): in the world's axes, `v` the velocity
+//!   of the body point that passes the world's origin (Featherstone's
+//!   spatial velocity, `ᵒX_f m`);
+//! * [`LocalWorldAligned`](ReferenceFrame::LocalWorldAligned): in the
+//!   world's axes, `v` the velocity of f's origin (the usual "linear and
+//!   angular velocity of the tool").
+//!
+//! The classical acceleration of a point is the time derivative of its
+//! velocity, `v̇ = a + ω × v` with `(ω, v)` and the spatial acceleration
+//! `a` at the point (Featherstone §2.11).
+//!
+//! Everything here reads the bodies' poses, velocities and accelerations
+//! that [`kinematics`](crate::algorithm::kinematics) leaves in [`Data`].
+
+use crate::data::Data;
+use crate::error::{Error, Result};
+use crate::frame::Frame;
+use crate::planar::{Planar, PlanarForce, PlanarMotion, PlanarTransform, Vec2};
+use crate::space::{MotionVector, RigidTransform, Space, VectorOps};
+use crate::spatial::{Force, Motion, Spatial, Transform, Vec3};
+use crate::Scalar;
+
+/// The frame a frame's motion or Jacobian is expressed in (Pinocchio's
+/// `ReferenceFrame`; see the [module](self) for each).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum ReferenceFrame {
+    /// The frame's own axes, at its origin.
+    Local,
+    /// The world's axes, at the world's origin.
+    World,
+    /// The world's axes, at the frame's origin.
+    LocalWorldAligned,
+}
+
+/// What the frame and centroidal algorithms need of a geometry beyond
+/// [`Space`]: pure translations and linear parts (implemented for
+/// [`Spatial`] and [`Planar`]).
+pub trait FrameSpace: Space {
+    /// The transform that moves the origin to `p` and keeps the axes.
+    fn from_translation<S: Scalar>(p: &Self::Point<S>) -> Self::Transform<S>;
+    /// The linear part of `m`, angular part zero.
+    fn linear_part<S: Scalar>(m: &Self::Motion<S>) -> Self::Motion<S>;
+    /// The linear part of `m` as a vector (m/s for a velocity).
+    fn linear_vector<S: Scalar>(m: &Self::Motion<S>) -> Self::Point<S>;
+    /// The linear part of `f` as a vector (N, or kg m/s for a momentum).
+    fn force_linear_vector<S: Scalar>(f: &Self::Force<S>) -> Self::Point<S>;
+    /// `p s`.
+    fn scale_point<S: Scalar>(p: &Self::Point<S>, s: S) -> Self::Point<S>;
+    /// The transform with `x`'s translation and no rotation.
+    #[inline]
+    fn translation_only<S: Scalar>(x: &Self::Transform<S>) -> Self::Transform<S> {
+        Self::from_translation(&x.translation())
+    }
+}
+
+impl FrameSpace for Spatial {
+    #[inline]
+    fn from_translation<S: Scalar>(p: &Vec3<S>) -> Transform<S> {
+        Transform::from_translation(*p)
+    }
+    #[inline]
+    fn linear_part<S: Scalar>(m: &Motion<S>) -> Motion<S> {
+        Motion::new(Vec3::ZERO, m.lin)
+    }
+    #[inline]
+    fn linear_vector<S: Scalar>(m: &Motion<S>) -> Vec3<S> {
+        m.lin
+    }
+    #[inline]
+    fn force_linear_vector<S: Scalar>(f: &Force<S>) -> Vec3<S> {
+        f.lin
+    }
+    #[inline]
+    fn scale_point<S: Scalar>(p: &Vec3<S>, s: S) -> Vec3<S> {
+        *p * s
+    }
+}
+
+impl FrameSpace for Planar {
+    #[inline]
+    fn from_translation<S: Scalar>(p: &Vec2<S>) -> PlanarTransform<S> {
+        PlanarTransform::from_translation(*p)
+    }
+    #[inline]
+    fn linear_part<S: Scalar>(m: &PlanarMotion<S>) -> PlanarMotion<S> {
+        PlanarMotion::new(S::ZERO, m.lin)
+    }
+    #[inline]
+    fn linear_vector<S: Scalar>(m: &PlanarMotion<S>) -> Vec2<S> {
+        m.lin
+    }
+    #[inline]
+    fn force_linear_vector<S: Scalar>(f: &PlanarForce<S>) -> Vec2<S> {
+        f.lin
+    }
+    #[inline]
+    fn scale_point<S: Scalar>(p: &Vec2<S>, s: S) -> Vec2<S> {
+        *p * s
+    }
+}
+
+/// `m`, a motion of a frame whose pose is `o_m_f` given in the world
+/// (`ᵒX_f`-form, at the world's origin), expressed in `reference`.
+#[inline]
+pub fn express_world_motion<S: Scalar, G: FrameSpace>(
+    o_m_f: &G::Transform<S>,
+    m: &G::Motion<S>,
+    reference: ReferenceFrame,
+) -> G::Motion<S> {
+    match reference {
+        ReferenceFrame::World => *m,
+        ReferenceFrame::Local => o_m_f.act_inv_motion(m),
+        ReferenceFrame::LocalWorldAligned => G::translation_only(o_m_f).act_inv_motion(m),
+    }
+}
+
+/// World frame from frame f (`ᵒMf`), from the body poses in
+/// `data.o_m_i` (valid after any of the `forward_kinematics*` functions).
+///
+/// # Errors
+/// [`Error::FrameBodyOutOfRange`] when `frame.body` is not below `NB`.
+#[inline]
+pub fn frame_placement<S: Scalar, const NB: usize, const NV: usize, G: Space>(
+    data: &Data<S, NB, NV, G>,
+    frame: &Frame<S, G>,
+) -> Result<G::Transform<S>> {
+    frame
+        .world_placement(&data.o_m_i)
+        .ok_or(Error::FrameBodyOutOfRange { body: frame.body })
+}
+
+/// The spatial velocity of frame f in `reference` (rad/s, m/s; rodyn's
+/// component order, angular first), from `data.o_m_i` and `data.v`, valid
+/// after [`forward_kinematics_velocity`](crate::algorithm::kinematics::forward_kinematics_velocity)
+/// or [`forward_kinematics_acceleration`](crate::algorithm::kinematics::forward_kinematics_acceleration).
+/// A body's own velocity is that of a frame with the identity placement.
+///
+/// # Errors
+/// [`Error::FrameBodyOutOfRange`] when `frame.body` is not below `NB`.
+pub fn frame_velocity<S: Scalar, const NB: usize, const NV: usize, G: FrameSpace>(
+    data: &Data<S, NB, NV, G>,
+    frame: &Frame<S, G>,
+    reference: ReferenceFrame,
+) -> Result<G::Motion<S>> {
+    frame_motion(data, frame, &data.v, reference)
+}
+
+/// The spatial acceleration of frame f in `reference` (rad/s², m/s²),
+/// gravity excluded, from `data.o_m_i` and `data.a`, valid after
+/// [`forward_kinematics_acceleration`](crate::algorithm::kinematics::forward_kinematics_acceleration).
+/// Its linear part is not the acceleration of f's origin: see
+/// [`frame_classical_acceleration`].
+///
+/// # Errors
+/// [`Error::FrameBodyOutOfRange`] when `frame.body` is not below `NB`.
+pub fn frame_acceleration<S: Scalar, const NB: usize, const NV: usize, G: FrameSpace>(
+    data: &Data<S, NB, NV, G>,
+    frame: &Frame<S, G>,
+    reference: ReferenceFrame,
+) -> Result<G::Motion<S>> {
+    frame_motion(data, frame, &data.a, reference)
+}
+
+/// The classical acceleration of frame f in `reference`: the spatial
+/// acceleration plus `ω × v` on the linear part, with `(ω, v)` the frame's
+/// velocity in the same reference (Pinocchio's
+/// `getFrameClassicalAcceleration`). In
+/// [`Local`](ReferenceFrame::Local) and
+/// [`LocalWorldAligned`](ReferenceFrame::LocalWorldAligned) its linear part
+/// is the acceleration of f's origin (m/s²) in f's or the world's axes, and
+/// its angular part the angular acceleration; in
+/// [`World`](ReferenceFrame::World) the linear part belongs to no point and
+/// is given for comparison with Pinocchio only. Reads `data.o_m_i`,
+/// `data.v`, `data.a`, valid after
+/// [`forward_kinematics_acceleration`](crate::algorithm::kinematics::forward_kinematics_acceleration);
+/// with zero joint accelerations it is `J̇ v` for f's classical Jacobian.
+///
+/// # Errors
+/// [`Error::FrameBodyOutOfRange`] when `frame.body` is not below `NB`.
+pub fn frame_classical_acceleration<S: Scalar, const NB: usize, const NV: usize, G: FrameSpace>(
+    data: &Data<S, NB, NV, G>,
+    frame: &Frame<S, G>,
+    reference: ReferenceFrame,
+) -> Result<G::Motion<S>> {
+    let v = frame_velocity(data, frame, reference)?;
+    let a = frame_acceleration(data, frame, reference)?;
+    // (ω, v) × (0, v) = (0, ω × v).
+    Ok(a + v.cross_motion(&G::linear_part(&v)))
+}
+
+/// `motions[frame.body]` (a body-frame quantity) seen at frame f in `reference`.
+fn frame_motion<S: Scalar, const NB: usize, const NV: usize, G: FrameSpace>(
+    data: &Data<S, NB, NV, G>,
+    frame: &Frame<S, G>,
+    motions: &[G::Motion<S>; NB],
+    reference: ReferenceFrame,
+) -> Result<G::Motion<S>> {
+    let body = frame.body;
+    let (Some(o_m_i), Some(m)) = (data.o_m_i.get(body), motions.get(body)) else {
+        return Err(Error::FrameBodyOutOfRange { body });
+    };
+    Ok(match reference {
+        ReferenceFrame::Local => frame.placement.act_inv_motion(m),
+        ReferenceFrame::World => o_m_i.act_motion(m),
+        ReferenceFrame::LocalWorldAligned => {
+            let o_m_f = o_m_i.compose(&frame.placement);
+            G::translation_only(&o_m_f).act_inv_motion(&o_m_i.act_motion(m))
+        }
+    })
+}
+
+/// A zero motion, for callers that fill arrays of them.
+#[inline]
+pub(crate) fn zero_motion<S: Scalar, G: Space>() -> G::Motion<S> {
+    <G::Motion<S> as VectorOps<S>>::ZERO
+}

@@ -1,0 +1,240 @@
+//! Jacobians: every joint's motion-subspace columns in the world, in one
+//! pass, and the Jacobian of any frame in each [`ReferenceFrame`]
+//! (Pinocchio's `computeJointJacobians`, `getFrameJacobian`,
+//! `computeJointJacobiansTimeVariation`).
+//!
+//! Column k of the joint Jacobian is `ᵒX_i Sₖ`, joint i's k-th motion
+//! subspace column in the world (Featherstone §4.4, the world-frame form of
+//! `J = [... ⁱX_j S_j ...]`). The Jacobian of a frame on body b has the
+//! columns of b's supporting joints only; the others are zero. Its time
+//! derivative in the world is `ᵒJ̇ₖ = ᵒvᵢ × ᵒJₖ`, `ᵒvᵢ` body i's velocity in
+//! the world (the columns move with their bodies).
+//!
+//! Results are columns of motion vectors (rodyn's order, angular first):
+//! `[G::Motion<S>; NV]`. [`to_linear_first`] turns a 3-D one into the 6×NV
+//! array, linear rows first, that Pinocchio returns.
+
+use super::frames::{
+    express_world_motion, frame_placement, zero_motion, FrameSpace, ReferenceFrame,
+};
+use super::kinematics::{forward_kinematics, forward_kinematics_velocity};
+use crate::data::Data;
+use crate::error::Result;
+use crate::frame::Frame;
+use crate::joint::JointModel;
+use crate::model::Model;
+use crate::space::{MotionVector, RigidTransform, Space};
+use crate::spatial::{Motion, Spatial};
+use crate::Scalar;
+
+/// The joint Jacobians' workspace: NV columns in the world, and their time
+/// derivatives. Its own type so that a firmware without Jacobians pays no
+/// RAM for them.
+#[derive(Clone, Debug)]
+pub struct JacobianData<S: Scalar, const NV: usize, G: Space = Spatial> {
+    /// `ᵒJₖ = ᵒX_i Sₖ` for every coordinate k of body i: world axes, at the
+    /// world's origin (rad/s and m/s per unit rate).
+    pub j: [G::Motion<S>; NV],
+    /// `ᵒJ̇ₖ = ᵒvᵢ × ᵒJₖ`, same frame (per second).
+    pub dj: [G::Motion<S>; NV],
+}
+
+impl<S: Scalar, const NV: usize, G: Space> JacobianData<S, NV, G> {
+    /// Zero columns.
+    #[must_use]
+    pub fn new() -> Self {
+        Self {
+            j: [zero_motion::<S, G>(); NV],
+            dj: [zero_motion::<S, G>(); NV],
+        }
+    }
+}
+
+impl<S: Scalar, const NV: usize, G: Space> Default for JacobianData<S, NV, G> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// All joint Jacobians at configuration `q` (NQ): `jac.j` (NV world
+/// columns). Runs [`forward_kinematics`]; leaves valid `data.li_m_i`,
+/// `data.o_m_i` and `jac.j`; `jac.dj` is stale.
+///
+/// # Errors
+/// As [`forward_kinematics`].
+pub fn joint_jacobians<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    jac: &mut JacobianData<S, NV, G>,
+    q: &[S; NQ],
+) -> Result<()> {
+    forward_kinematics(model, data, q)?;
+    columns_pass(model, data, jac);
+    Ok(())
+}
+
+/// All joint Jacobians and their time derivatives at `(q, v)`: `jac.j` and
+/// `jac.dj` (world columns). Runs
+/// [`forward_kinematics_velocity`]; leaves valid `data.li_m_i`,
+/// `data.o_m_i`, `data.v`, `data.c`, `jac.j`, `jac.dj`.
+///
+/// # Errors
+/// As [`forward_kinematics_velocity`].
+pub fn joint_jacobians_time_variation<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    jac: &mut JacobianData<S, NV, G>,
+    q: &[S; NQ],
+    v: &[S; NV],
+) -> Result<()> {
+    forward_kinematics_velocity(model, data, q, v)?;
+    columns_pass(model, data, jac);
+    let t = model.topology();
+    for i in 0..NB {
+        let o_v = data.o_m_i[i].act_motion(&data.v[i]);
+        for k in t.idx_v[i]..t.idx_v[i] + t.nv[i] {
+            jac.dj[k] = o_v.cross_motion(&jac.j[k]);
+        }
+    }
+    Ok(())
+}
+
+/// `ᵒJₖ = ᵒX_i Sₖ` from the poses in `data.o_m_i`.
+fn columns_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &Data<S, NB, NV, G>,
+    jac: &mut JacobianData<S, NV, G>,
+) {
+    let t = model.topology();
+    for i in 0..NB {
+        let joint = model.joint(i);
+        let iv = t.idx_v[i];
+        for k in 0..t.nv[i] {
+            jac.j[iv + k] = data.o_m_i[i].act_motion(&joint.subspace_column(k));
+        }
+    }
+}
+
+/// Calls `f(k)` for every velocity coordinate k of the bodies that support
+/// `body` (itself included), leaf to root.
+#[inline]
+fn for_each_supporting_coordinate<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    body: usize,
+    mut f: impl FnMut(usize),
+) {
+    let t = model.topology();
+    let mut b = Some(body);
+    // Parents come before children, so the walk ends within NB steps.
+    while let Some(i) = b {
+        for k in t.idx_v[i]..t.idx_v[i] + t.nv[i] {
+            f(k);
+        }
+        b = t.parents[i];
+    }
+}
+
+/// The Jacobian of `frame` in `reference` into `out` (NV columns): column k
+/// maps coordinate k's rate to the frame's spatial velocity in `reference`
+/// (see [`ReferenceFrame`]), so that `Σₖ out[k] vₖ` is
+/// [`frame_velocity`](super::frames::frame_velocity). Columns of joints
+/// that do not support the frame's body are zero. A body's Jacobian is that
+/// of a frame with the identity placement.
+///
+/// Reads `jac.j` and `data.o_m_i`, valid after [`joint_jacobians`] (or
+/// [`joint_jacobians_time_variation`]); changes neither.
+///
+/// # Errors
+/// [`Error::FrameBodyOutOfRange`](crate::Error::FrameBodyOutOfRange) when
+/// `frame.body` is not below `NB`.
+pub fn frame_jacobian<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: FrameSpace,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &Data<S, NB, NV, G>,
+    jac: &JacobianData<S, NV, G>,
+    frame: &Frame<S, G>,
+    reference: ReferenceFrame,
+    out: &mut [G::Motion<S>; NV],
+) -> Result<()> {
+    let o_m_f = frame_placement(data, frame)?;
+    *out = [zero_motion::<S, G>(); NV];
+    for_each_supporting_coordinate(model, frame.body, |k| {
+        out[k] = express_world_motion::<S, G>(&o_m_f, &jac.j[k], reference);
+    });
+    Ok(())
+}
+
+/// The time derivative of [`frame_jacobian`]'s result in
+/// [`World`](ReferenceFrame::World): `ᵒJ̇ₖ` for the supporting columns,
+/// zero elsewhere (a world-frame spatial Jacobian does not depend on the
+/// frame's point). Reads `jac.dj`, valid after
+/// [`joint_jacobians_time_variation`]. For task-space control in a frame's
+/// own axes, the product `J̇ v` is
+/// [`frame_classical_acceleration`](super::frames::frame_classical_acceleration)
+/// at zero joint acceleration.
+///
+/// # Errors
+/// [`Error::FrameBodyOutOfRange`](crate::Error::FrameBodyOutOfRange) when
+/// `frame.body` is not below `NB`.
+pub fn frame_jacobian_time_variation_world<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: FrameSpace,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &Data<S, NB, NV, G>,
+    jac: &JacobianData<S, NV, G>,
+    frame: &Frame<S, G>,
+    out: &mut [G::Motion<S>; NV],
+) -> Result<()> {
+    frame_placement(data, frame)?;
+    *out = [zero_motion::<S, G>(); NV];
+    for_each_supporting_coordinate(model, frame.body, |k| out[k] = jac.dj[k]);
+    Ok(())
+}
+
+/// A 3-D Jacobian's columns as the 6×NV array Pinocchio returns: rows 0-2
+/// linear, rows 3-5 angular.
+#[must_use]
+pub fn to_linear_first<S: Scalar, const NV: usize>(columns: &[Motion<S>; NV]) -> [[S; NV]; 6] {
+    let mut m = [[S::ZERO; NV]; 6];
+    for (k, c) in columns.iter().enumerate() {
+        let l = c.to_linear_first();
+        for r in 0..6 {
+            m[r][k] = l[r];
+        }
+    }
+    m
+}
+
+/// `Σₖ columns[k] v[k]`: a Jacobian times joint rates (or, with `dj`, `J̇ v`).
+#[must_use]
+pub fn mul_rates<S: Scalar, const NV: usize, G: Space>(
+    columns: &[G::Motion<S>; NV],
+    v: &[S; NV],
+) -> G::Motion<S> {
+    let mut acc = zero_motion::<S, G>();
+    for k in 0..NV {
+        acc += columns[k] * v[k];
+    }
+    acc
+}
