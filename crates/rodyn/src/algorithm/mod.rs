@@ -12,6 +12,7 @@
 //! | [`frames`]            | frame placements, velocities, accelerations     | §2.11         |
 //! | [`jacobian`]          | joint and frame Jacobians, their derivatives    | §4.4          |
 //! | [`centroidal`]        | CoM Jacobian, centroidal momentum matrix, CCRBA | Orin 2013     |
+//! | [`inverse_kinematics`] | damped least-squares steps to a frame pose     |               |
 
 pub mod aba;
 pub mod centroidal;
@@ -19,6 +20,7 @@ pub mod crba;
 pub mod energy;
 pub mod forward_dynamics;
 pub mod frames;
+pub mod inverse_kinematics;
 pub mod jacobian;
 pub mod kinematics;
 pub mod ltdl;

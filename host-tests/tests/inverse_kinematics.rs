@@ -1,0 +1,137 @@
+//! Inverse kinematics: the damped least-squares iteration reaches reachable
+//! targets (poses of the frame at other random configurations) and reports
+//! unreachable ones; the rotation log it measures errors with inverts
+//! `Mat3::from_axis_angle` up to half a turn.
+
+use rodyn::algorithm::frames::frame_placement;
+use rodyn::algorithm::inverse_kinematics::{log3, pose_error, solve, IkData, IkSettings};
+use rodyn::algorithm::kinematics::forward_kinematics;
+use rodyn::prelude::*;
+use rodyn::Frame;
+use rodyn_host_tests::fixture::Fixture;
+use rodyn_host_tests::random::Rng;
+
+#[test]
+fn log3_inverts_axis_angle() {
+    let mut rng = Rng::new(0x1C_0001);
+    for angle in [
+        0.0,
+        1e-9,
+        1e-4,
+        0.5,
+        2.0,
+        2.7,
+        3.0,
+        3.14,
+        std::f64::consts::PI - 1e-7,
+    ] {
+        for _ in 0..20 {
+            let axis = rng.unit_vector();
+            let w = log3(&Mat3::from_axis_angle(&axis, angle));
+            let expected = axis * angle;
+            let err = (w - expected).norm();
+            assert!(
+                err < 1e-7 * angle.max(1e-3),
+                "angle {angle}: error {err:e}, {w:?} vs {expected:?}"
+            );
+        }
+    }
+}
+
+/// A Panda whose flange frame sits 0.1 m out along the last body's z axis,
+/// turned by 45° about it (as the Panda's hand is).
+fn panda() -> (Model<f64, 7, 7, 7>, Frame<f64>) {
+    let model = Fixture::load_named("panda")
+        .unwrap()
+        .model::<7, 7, 7>()
+        .unwrap();
+    let flange = Frame::new(
+        6,
+        Transform::new(
+            Mat3::from_axis_angle(&Vec3::new(0.0, 0.0, 1.0), -std::f64::consts::FRAC_PI_4),
+            Vec3::new(0.0, 0.0, 0.107),
+        ),
+    );
+    (model, flange)
+}
+
+#[test]
+fn reaches_reachable_targets_f64_and_f32() {
+    let (model, flange) = panda();
+    let model32 = model.cast::<f32>().unwrap();
+    let flange32 = Frame::new(flange.body, flange.placement.cast::<f32>());
+    let mut rng = Rng::new(0x1C_0002);
+    let mut data = Data::new();
+    let mut data32 = Data::new();
+    let mut ws = IkData::new();
+    let mut ws32 = IkData::new();
+    let settings = IkSettings::<f64>::new();
+    let settings32 = IkSettings::<f32>::new();
+    let mut worst_iterations = 0;
+    for _ in 0..20 {
+        let q_target: [f64; 7] = rng.vector(2.0);
+        forward_kinematics(&model, &mut data, &q_target).unwrap();
+        let target = frame_placement(&data, &flange).unwrap();
+        // A start 0.5 rad away in every joint.
+        let start: [f64; 7] = core::array::from_fn(|k| q_target[k] + rng.uniform(-0.5, 0.5));
+
+        let mut q = start;
+        let iterations = solve(
+            &model, &mut data, &mut ws, &flange, &target, &settings, &mut q,
+        )
+        .unwrap_or_else(|e| panic!("from {start:?} to {q_target:?}: {e}"));
+        worst_iterations = worst_iterations.max(iterations);
+        forward_kinematics(&model, &mut data, &q).unwrap();
+        let e = pose_error(&frame_placement(&data, &flange).unwrap(), &target);
+        let size = e
+            .to_linear_first()
+            .iter()
+            .fold(0.0f64, |m, x| m.max(x.abs()));
+        assert!(
+            size <= 1e-6,
+            "f64: residual {size:e} after {iterations} iterations"
+        );
+
+        let mut q32 = start.map(|x| x as f32);
+        let target32 = target.cast::<f32>();
+        solve(
+            &model32,
+            &mut data32,
+            &mut ws32,
+            &flange32,
+            &target32,
+            &settings32,
+            &mut q32,
+        )
+        .unwrap_or_else(|e| panic!("f32, from {start:?} to {q_target:?}: {e}"));
+    }
+    println!("worst iterations (f64): {worst_iterations}");
+    assert!(worst_iterations < settings.max_iterations);
+}
+
+#[test]
+fn reports_unreachable_targets() {
+    let (model, flange) = panda();
+    let mut rng = Rng::new(0x1C_0003);
+    let mut data = Data::new();
+    let mut ws = IkData::new();
+    let settings = IkSettings::new();
+    for _ in 0..5 {
+        // 3 m from the base: the arm reaches about 1.2 m.
+        let target = Transform::new(rng.rotation(), rng.unit_vector() * 3.0);
+        let mut q: [f64; 7] = rng.vector(2.0);
+        match solve(
+            &model, &mut data, &mut ws, &flange, &target, &settings, &mut q,
+        ) {
+            Err(Error::NotConverged {
+                iterations,
+                residual,
+            }) => {
+                assert_eq!(iterations, settings.max_iterations);
+                assert!(residual > 1.0, "residual {residual} for a target 3 m away");
+                assert!(q.iter().all(|x| x.is_finite()));
+            }
+            other => panic!("expected NotConverged, got {other:?}"),
+        }
+    }
+}
