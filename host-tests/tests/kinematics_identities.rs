@@ -3,7 +3,8 @@
 //!
 //! * `J v` equals the frame's velocity, in each reference frame;
 //! * `J̇ v` equals the derivative of `J(q(t)) v` along `q̇ = Q(q) v` (taken
-//!   exactly with forward-mode dual numbers): in LOCAL the spatial
+//!   exactly with forward-mode dual numbers), with J̇'s columns in each
+//!   reference frame, and as accelerations: in LOCAL the spatial
 //!   acceleration at zero joint acceleration, in WORLD `Σ J̇ₖ vₖ`, in
 //!   LOCAL_WORLD_ALIGNED the classical acceleration;
 //! * `A_g v` equals the sum of the bodies' momenta about the centre of mass;
@@ -25,8 +26,8 @@ use rodyn::algorithm::frames::{
     frame_acceleration, frame_classical_acceleration, frame_velocity, ReferenceFrame,
 };
 use rodyn::algorithm::jacobian::{
-    frame_jacobian, frame_jacobian_time_variation_world, joint_jacobians,
-    joint_jacobians_time_variation, mul_rates, JacobianData,
+    frame_jacobian, frame_jacobian_time_variation, joint_jacobians, joint_jacobians_time_variation,
+    mul_rates, JacobianData,
 };
 use rodyn::algorithm::kinematics::forward_kinematics_acceleration;
 use rodyn::planar::{Planar, PlanarMotion, PlanarTransform, Vec2};
@@ -123,14 +124,18 @@ fn check_model<const NB: usize, const NQ: usize, const NV: usize>(
                 )
                 .unwrap();
                 let d_jv = du6(&mul_rates::<Dual, NV, Spatial>(&dual_cols, &v_dual));
+                let mut dj = [Motion::ZERO; NV];
+                frame_jacobian_time_variation(model, &data, &jac, f, reference, &mut dj).unwrap();
+                let dj_v = mul_rates::<f64, NV, Spatial>(&dj, &v);
+                assert_close(
+                    &format!("J-dot columns times v, body {} {reference:?}", f.body),
+                    &m6(&dj_v),
+                    &d_jv,
+                    TOL,
+                );
                 let jdot_v = match reference {
                     ReferenceFrame::Local => frame_acceleration(&data, f, reference).unwrap(),
-                    ReferenceFrame::World => {
-                        let mut dj = [Motion::ZERO; NV];
-                        frame_jacobian_time_variation_world(model, &data, &jac, f, &mut dj)
-                            .unwrap();
-                        mul_rates::<f64, NV, Spatial>(&dj, &v)
-                    }
+                    ReferenceFrame::World => dj_v,
                     ReferenceFrame::LocalWorldAligned => {
                         frame_classical_acceleration(&data, f, reference).unwrap()
                     }

@@ -18,8 +18,8 @@ use rodyn::algorithm::frames::{
     frame_classical_acceleration, frame_placement, frame_velocity, ReferenceFrame,
 };
 use rodyn::algorithm::jacobian::{
-    frame_jacobian, frame_jacobian_time_variation_world, joint_jacobians,
-    joint_jacobians_time_variation, to_linear_first, JacobianData,
+    frame_jacobian, frame_jacobian_time_variation, joint_jacobians, joint_jacobians_time_variation,
+    to_linear_first, JacobianData,
 };
 use rodyn::algorithm::kinematics::forward_kinematics_acceleration;
 use rodyn::prelude::*;
@@ -174,12 +174,15 @@ fn compare<S: Scalar, const NB: usize, const NQ: usize, const NV: usize>(name: &
             &flat(&r["joint_jacobians_dot"]),
         );
         for (f, rf) in frames.iter().zip(r["frames"].as_array().unwrap()) {
-            frame_jacobian_time_variation_world(&model, &data, &jac, f, &mut cols).unwrap();
-            errors.add(
-                "frame_jacobian_dot_world",
-                &mat_rows(&to_linear_first(&cols)),
-                &flat(&rf["jacobian_dot_world"]),
-            );
+            for (key, reference) in REFERENCES {
+                frame_jacobian_time_variation(&model, &data, &jac, f, reference, &mut cols)
+                    .unwrap();
+                errors.add(
+                    &format!("frame_jacobian_dot_{key}"),
+                    &mat_rows(&to_linear_first(&cols)),
+                    &flat(&rf[format!("jacobian_dot_{key}")]),
+                );
+            }
         }
 
         forward_kinematics_acceleration(&model, &mut data, &s.q, &s.v, &s.a).unwrap();

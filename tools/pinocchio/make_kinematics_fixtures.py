@@ -16,7 +16,7 @@ placements (a rotation and an offset from the joint frame, Pinocchio's
 * `joint_jacobians`, `joint_jacobians_dot`: `computeJointJacobians` and
   `computeJointJacobiansTimeVariation` (world frame, 6 x nv, [linear; angular]);
 * per frame: its world placement, `getFrameJacobian` in LOCAL, WORLD and
-  LOCAL_WORLD_ALIGNED, `getFrameJacobianTimeVariation` in WORLD,
+  LOCAL_WORLD_ALIGNED, `getFrameJacobianTimeVariation` in the same three,
   `getFrameVelocity` and `getFrameClassicalAcceleration` in the three frames
   (at the state's a and at a = 0, the latter being J-dot v);
 * `com`, `com_velocity`, `com_acceleration` (`centerOfMass(q, v, a)`),
@@ -80,9 +80,8 @@ def state_results(model, data, frame_ids, q, v, a) -> dict:
     pin.updateFramePlacements(model, data)
     out["joint_jacobians_dot"] = floats(data.dJ)
     for entry, fid in zip(frames, frame_ids):
-        entry["jacobian_dot_world"] = floats(
-            pin.getFrameJacobianTimeVariation(model, data, fid, pin.ReferenceFrame.WORLD)
-        )
+        for name, rf in RF.items():
+            entry[f"jacobian_dot_{name}"] = floats(pin.getFrameJacobianTimeVariation(model, data, fid, rf))
     pin.forwardKinematics(model, data, q, v, a)
     pin.updateFramePlacements(model, data)
     for entry, fid in zip(frames, frame_ids):

@@ -48,18 +48,16 @@ pub struct CentroidalData<S: Scalar, const NB: usize, const NV: usize, G: Space 
 }
 
 impl<S: Scalar, const NB: usize, const NV: usize, G: Space> CentroidalData<S, NB, NV, G> {
-    /// A zeroed workspace.
+    /// A zeroed workspace; `const`, so it can initialise a `static`.
     #[must_use]
-    pub fn new() -> Self {
-        let zero_force = <G::Force<S> as VectorOps<S>>::ZERO;
-        let zero_inertia = <G::Inertia<S> as BodyInertia<S>>::ZERO;
+    pub const fn new() -> Self {
         Self {
-            o_ic: [zero_inertia; NB],
-            total: zero_inertia,
-            ag: [zero_force; NV],
-            ig: zero_inertia,
-            hg: zero_force,
-            dhg: zero_force,
+            o_ic: [<G::Inertia<S> as BodyInertia<S>>::ZERO; NB],
+            total: <G::Inertia<S> as BodyInertia<S>>::ZERO,
+            ag: [<G::Force<S> as VectorOps<S>>::ZERO; NV],
+            ig: <G::Inertia<S> as BodyInertia<S>>::ZERO,
+            hg: <G::Force<S> as VectorOps<S>>::ZERO,
+            dhg: <G::Force<S> as VectorOps<S>>::ZERO,
         }
     }
 

@@ -120,9 +120,9 @@ pub struct IkData<S: Scalar, const NV: usize> {
 }
 
 impl<S: Scalar, const NV: usize> IkData<S, NV> {
-    /// A zeroed workspace.
+    /// A zeroed workspace; `const`, so it can initialise a `static`.
     #[must_use]
-    pub fn new() -> Self {
+    pub const fn new() -> Self {
         Self {
             jac: JacobianData::new(),
             frame_jacobian: [Motion::new(Vec3::ZERO, Vec3::ZERO); NV],

@@ -15,7 +15,7 @@
 //! array, linear rows first, that Pinocchio returns.
 
 use super::frames::{
-    express_world_motion, frame_placement, zero_motion, FrameSpace, ReferenceFrame,
+    express_world_motion, frame_placement, frame_velocity, zero_motion, FrameSpace, ReferenceFrame,
 };
 use super::kinematics::{forward_kinematics, forward_kinematics_velocity};
 use crate::data::Data;
@@ -23,7 +23,7 @@ use crate::error::Result;
 use crate::frame::Frame;
 use crate::joint::JointModel;
 use crate::model::Model;
-use crate::space::{MotionVector, RigidTransform, Space};
+use crate::space::{MotionVector, RigidTransform, Space, VectorOps};
 use crate::spatial::{Motion, Spatial};
 use crate::Scalar;
 
@@ -40,12 +40,12 @@ pub struct JacobianData<S: Scalar, const NV: usize, G: Space = Spatial> {
 }
 
 impl<S: Scalar, const NV: usize, G: Space> JacobianData<S, NV, G> {
-    /// Zero columns.
+    /// Zero columns; `const`, so it can initialise a `static`.
     #[must_use]
-    pub fn new() -> Self {
+    pub const fn new() -> Self {
         Self {
-            j: [zero_motion::<S, G>(); NV],
-            dj: [zero_motion::<S, G>(); NV],
+            j: [<G::Motion<S> as VectorOps<S>>::ZERO; NV],
+            dj: [<G::Motion<S> as VectorOps<S>>::ZERO; NV],
         }
     }
 }
@@ -181,19 +181,25 @@ pub fn frame_jacobian<
     Ok(())
 }
 
-/// The time derivative of [`frame_jacobian`]'s result in
-/// [`World`](ReferenceFrame::World): `ᵒJ̇ₖ` for the supporting columns,
-/// zero elsewhere (a world-frame spatial Jacobian does not depend on the
-/// frame's point). Reads `jac.dj`, valid after
-/// [`joint_jacobians_time_variation`]. For task-space control in a frame's
-/// own axes, the product `J̇ v` is
+/// The time derivative of [`frame_jacobian`]'s result in `reference`
+/// (Pinocchio's `getFrameJacobianTimeVariation`), into `out` (NV columns,
+/// per second), zero for joints that do not support the frame. In the
+/// world it is `ᵒJ̇ₖ`; moved to a frame whose transform `ᶠX_o` changes as
+/// `−(v_f ×) ᶠX_o` (`v_f` that frame's own velocity: the frame's spatial
+/// velocity in [`Local`](ReferenceFrame::Local), the translation `(0, ṗ)`
+/// in [`LocalWorldAligned`](ReferenceFrame::LocalWorldAligned)) it is
+/// `ᶠX_o ᵒJ̇ₖ − v_f × ᶠJₖ`. For task-space control, the product `J̇ v` of
+/// a frame's classical Jacobian is
 /// [`frame_classical_acceleration`](super::frames::frame_classical_acceleration)
 /// at zero joint acceleration.
+///
+/// Reads `jac.j`, `jac.dj`, `data.o_m_i` and `data.v`, valid after
+/// [`joint_jacobians_time_variation`].
 ///
 /// # Errors
 /// [`Error::FrameBodyOutOfRange`](crate::Error::FrameBodyOutOfRange) when
 /// `frame.body` is not below `NB`.
-pub fn frame_jacobian_time_variation_world<
+pub fn frame_jacobian_time_variation<
     S: Scalar,
     const NB: usize,
     const NQ: usize,
@@ -204,11 +210,23 @@ pub fn frame_jacobian_time_variation_world<
     data: &Data<S, NB, NV, G>,
     jac: &JacobianData<S, NV, G>,
     frame: &Frame<S, G>,
+    reference: ReferenceFrame,
     out: &mut [G::Motion<S>; NV],
 ) -> Result<()> {
-    frame_placement(data, frame)?;
+    let o_m_f = frame_placement(data, frame)?;
+    let v_f = match reference {
+        ReferenceFrame::World => zero_motion::<S, G>(),
+        ReferenceFrame::Local => frame_velocity(data, frame, reference)?,
+        ReferenceFrame::LocalWorldAligned => {
+            G::linear_part(&frame_velocity(data, frame, reference)?)
+        }
+    };
     *out = [zero_motion::<S, G>(); NV];
-    for_each_supporting_coordinate(model, frame.body, |k| out[k] = jac.dj[k]);
+    for_each_supporting_coordinate(model, frame.body, |k| {
+        let dj = express_world_motion::<S, G>(&o_m_f, &jac.dj[k], reference);
+        let j = express_world_motion::<S, G>(&o_m_f, &jac.j[k], reference);
+        out[k] = dj - v_f.cross_motion(&j);
+    });
     Ok(())
 }
 
