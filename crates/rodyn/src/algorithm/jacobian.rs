@@ -149,7 +149,7 @@ fn for_each_supporting_coordinate<
 /// The Jacobian of `frame` in `reference` into `out` (NV columns): column k
 /// maps coordinate k's rate to the frame's spatial velocity in `reference`
 /// (see [`ReferenceFrame`]), so that `Σₖ out[k] vₖ` is
-/// [`frame_velocity`](super::frames::frame_velocity). Columns of joints
+/// [`frame_velocity`]. Columns of joints
 /// that do not support the frame's body are zero. A body's Jacobian is that
 /// of a frame with the identity placement.
 ///
