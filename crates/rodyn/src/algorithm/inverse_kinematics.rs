@@ -20,7 +20,6 @@ use crate::data::Data;
 use crate::error::{Error, Result};
 use crate::frame::Frame;
 use crate::model::Model;
-use crate::sim::manifold::configuration_rate;
 use crate::spatial::{Mat3, Motion, Spatial, Transform, Vec3};
 use crate::Scalar;
 
@@ -137,8 +136,8 @@ impl<S: Scalar, const NV: usize> Default for IkData<S, NV> {
 }
 
 /// One damped least-squares step: the error at `q` (returned, as
-/// [`pose_error`]) and `q` moved by `Δq = Jᵀ (J Jᵀ + λ² I)⁻¹ e` (quaternions
-/// renormalised). Runs [`joint_jacobians`]; leaves valid `data.li_m_i`,
+/// [`pose_error`]) and `q` moved by `Δq = Jᵀ (J Jᵀ + λ² I)⁻¹ e` on the
+/// configuration manifold ([`Model::integrate`]). Runs [`joint_jacobians`]; leaves valid `data.li_m_i`,
 /// `data.o_m_i` (at the `q` before the step), `ws.jac.j`,
 /// `ws.frame_jacobian`.
 ///
@@ -191,11 +190,7 @@ pub fn step<S: Scalar, const NB: usize, const NQ: usize, const NV: usize>(
             residual: f64::INFINITY,
         });
     }
-    let q_dot = configuration_rate(model, q, &dq);
-    for k in 0..NQ {
-        q[k] += q_dot[k];
-    }
-    model.normalize(q);
+    *q = model.integrate(q, &dq, S::ONE);
     Ok(e)
 }
 
