@@ -13,6 +13,37 @@
 //! Results are columns of motion vectors (rodyn's order, angular first):
 //! `[G::Motion<S>; NV]`. [`to_linear_first`] turns a 3-D one into the 6×NV
 //! array, linear rows first, that Pinocchio returns.
+//!
+//! ```
+//! use rodyn::prelude::*;
+//! use rodyn::algorithm::frames::{frame_velocity, ReferenceFrame};
+//! use rodyn::algorithm::jacobian::{frame_jacobian, joint_jacobians, to_linear_first, JacobianData};
+//! use rodyn::algorithm::kinematics::forward_kinematics_velocity;
+//! use rodyn::Frame;
+//!
+//! // A two-link arm about z, links 1 m; a tool 0.5 m beyond the second joint.
+//! const LINK: Inertia<f64> = Inertia::point_mass(1.0, Vec3::new(0.5, 0.0, 0.0));
+//! const ARM: Model<f64, 2, 2, 2> = Model::new(
+//!     [None, Some(0)],
+//!     [Joint::revolute(Axis::Z), Joint::revolute(Axis::Z)],
+//!     [Transform::IDENTITY, Transform::from_translation(Vec3::new(1.0, 0.0, 0.0))],
+//!     [LINK, LINK],
+//!     Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
+//! );
+//! let tool = Frame::new(1, Transform::from_translation(Vec3::new(0.5, 0.0, 0.0)));
+//! let (mut data, mut jac) = (Data::new(), JacobianData::new());
+//! let (q, v) = ([0.3, -0.6], [1.0, 2.0]);
+//! joint_jacobians(&ARM, &mut data, &mut jac, &q)?;
+//! let mut columns = [Motion::ZERO; 2];
+//! frame_jacobian(&ARM, &data, &jac, &tool, ReferenceFrame::LocalWorldAligned, &mut columns)?;
+//! let j: [[f64; 2]; 6] = to_linear_first(&columns); // rows: vx vy vz wx wy wz
+//! // The tool's velocity is J v.
+//! forward_kinematics_velocity(&ARM, &mut data, &q, &v)?;
+//! let velocity = frame_velocity(&data, &tool, ReferenceFrame::LocalWorldAligned)?;
+//! let vx = j[0][0] * v[0] + j[0][1] * v[1];
+//! assert!((vx - velocity.lin.x).abs() < 1e-12);
+//! # Ok::<(), rodyn::Error>(())
+//! ```
 
 use super::frames::{
     express_world_motion, frame_placement, frame_velocity, zero_motion, FrameSpace, ReferenceFrame,
