@@ -17,7 +17,8 @@
 //! of the model and do not count.
 
 use super::frames::FrameSpace;
-use super::kinematics::{forward_kinematics, forward_kinematics_acceleration};
+use super::jacobian::poses;
+use super::kinematics::forward_kinematics_acceleration;
 use crate::data::Data;
 use crate::error::Result;
 use crate::joint::JointModel;
@@ -84,12 +85,12 @@ impl<S: Scalar, const NB: usize, const NV: usize, G: Space> Default
 
 /// The centroidal momentum matrix and the centroidal composite inertia at
 /// `q` (NQ) (Pinocchio's `computeCentroidalMap` and, but for `h_G`,
-/// `ccrba`). Runs [`forward_kinematics`]. Leaves valid `data.li_m_i`,
+/// `ccrba`). Runs [`forward_kinematics`](super::kinematics::forward_kinematics). Leaves valid `data.li_m_i`,
 /// `data.o_m_i`, `cd.o_ic`, `cd.total`, `cd.ag`, `cd.ig`; `cd.hg` and
 /// `cd.dhg` stale.
 ///
 /// # Errors
-/// As [`forward_kinematics`].
+/// As [`forward_kinematics`](super::kinematics::forward_kinematics).
 pub fn centroidal_map<
     S: Scalar,
     const NB: usize,
@@ -102,7 +103,8 @@ pub fn centroidal_map<
     cd: &mut CentroidalData<S, NB, NV, G>,
     q: &[S; NQ],
 ) -> Result<()> {
-    forward_kinematics(model, data, q)?;
+    model.check_configuration(q)?;
+    poses(model, data, q);
     map_pass(model, data, cd);
     Ok(())
 }

@@ -48,7 +48,7 @@
 use super::frames::{
     express_world_motion, frame_placement, frame_velocity, zero_motion, FrameSpace, ReferenceFrame,
 };
-use super::kinematics::{forward_kinematics, forward_kinematics_velocity};
+use super::kinematics::{body_transform_with, forward_kinematics_velocity, JointSinCos};
 use crate::data::Data;
 use crate::error::Result;
 use crate::frame::Frame;
@@ -88,20 +88,64 @@ impl<S: Scalar, const NV: usize, G: Space> Default for JacobianData<S, NV, G> {
 }
 
 /// All joint Jacobians at configuration `q` (NQ): `jac.j` (NV world
-/// columns). Runs [`forward_kinematics`]; leaves valid `data.li_m_i`,
+/// columns). Runs [`forward_kinematics`](super::kinematics::forward_kinematics); leaves valid `data.li_m_i`,
 /// `data.o_m_i` and `jac.j`; `jac.dj` is stale.
 ///
 /// # Errors
-/// As [`forward_kinematics`].
+/// As [`forward_kinematics`](super::kinematics::forward_kinematics).
 pub fn joint_jacobians<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     model: &Model<S, NB, NQ, NV, G>,
     data: &mut Data<S, NB, NV, G>,
     jac: &mut JacobianData<S, NV, G>,
     q: &[S; NQ],
 ) -> Result<()> {
-    forward_kinematics(model, data, q)?;
-    columns_pass(model, data, jac);
+    model.check_configuration(q)?;
+    let t = model.topology();
+    let sin_cos = JointSinCos::at(model, q);
+    for i in 0..NB {
+        let o_m_i = pose_step(model, data, i, q, sin_cos.as_ref());
+        let joint = model.joint(i);
+        let iv = t.idx_v[i];
+        for k in 0..t.nv[i] {
+            jac.j[iv + k] = o_m_i.act_motion(&joint.subspace_column(k));
+        }
+    }
     Ok(())
+}
+
+/// Body poses at `q` (as [`forward_kinematics`](super::kinematics::forward_kinematics): `data.li_m_i`,
+/// `data.o_m_i`), the joint angles' sines and cosines formed first on
+/// hosts. `q` must already be checked.
+#[inline]
+pub(crate) fn poses<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    q: &[S; NQ],
+) {
+    let sin_cos = JointSinCos::at(model, q);
+    for i in 0..NB {
+        pose_step(model, data, i, q, sin_cos.as_ref());
+    }
+}
+
+/// Body i's `ˡⁱMᵢ` and `ᵒMᵢ` into `data`, its parent's pose already there;
+/// returns `ᵒMᵢ`.
+#[inline(always)]
+fn pose_step<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    i: usize,
+    q: &[S; NQ],
+    sin_cos: Option<&JointSinCos<S, NB>>,
+) -> G::Transform<S> {
+    let li_m_i = body_transform_with(model, i, q, sin_cos);
+    let o_m_i = match model.parent(i) {
+        Some(p) => data.o_m_i[p].compose(&li_m_i),
+        None => li_m_i,
+    };
+    data.li_m_i[i] = li_m_i;
+    data.o_m_i[i] = o_m_i;
+    o_m_i
 }
 
 /// All joint Jacobians and their time derivatives at `(q, v)`: `jac.j` and
