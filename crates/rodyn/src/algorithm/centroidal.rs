@@ -21,7 +21,6 @@ use super::jacobian::poses;
 use super::kinematics::forward_kinematics_acceleration;
 use crate::data::Data;
 use crate::error::Result;
-use crate::joint::JointModel;
 use crate::model::Model;
 use crate::space::{BodyInertia, RigidTransform, Space, VectorOps};
 use crate::spatial::Spatial;
@@ -171,7 +170,7 @@ fn map_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Fra
         let joint = model.joint(i);
         let iv = t.idx_v[i];
         for k in 0..t.nv[i] {
-            let o_s = data.o_m_i[i].act_motion(&joint.subspace_column(k));
+            let o_s = G::act_subspace_column(&data.o_m_i[i], joint, k);
             cd.ag[iv + k] = o_m_g.act_inv_force(&cd.o_ic[i].mul_motion(&o_s));
         }
     }

@@ -23,6 +23,7 @@
 use crate::data::Data;
 use crate::error::{Error, Result};
 use crate::frame::Frame;
+use crate::joint::{Joint, JointModel};
 use crate::planar::{Planar, PlanarForce, PlanarMotion, PlanarTransform, Vec2};
 use crate::space::{MotionVector, RigidTransform, Space, VectorOps};
 use crate::spatial::{Force, Motion, Spatial, Transform, Vec3};
@@ -60,6 +61,16 @@ pub trait FrameSpace: Space {
     fn translation_only<S: Scalar>(x: &Self::Transform<S>) -> Self::Transform<S> {
         Self::from_translation(&x.translation())
     }
+    /// `x Sₖ`: column k of joint `j`'s motion subspace moved by `x` (into
+    /// the world, for a body pose).
+    #[inline(always)]
+    fn act_subspace_column<S: Scalar>(
+        x: &Self::Transform<S>,
+        j: &Self::Joint<S>,
+        k: usize,
+    ) -> Self::Motion<S> {
+        x.act_motion(&j.subspace_column(k))
+    }
 }
 
 impl FrameSpace for Spatial {
@@ -82,6 +93,17 @@ impl FrameSpace for Spatial {
     #[inline]
     fn scale_point<S: Scalar>(p: &Vec3<S>, s: S) -> Vec3<S> {
         *p * s
+    }
+    #[inline(always)]
+    fn act_subspace_column<S: Scalar>(x: &Transform<S>, j: &Joint<S>, k: usize) -> Motion<S> {
+        match j.revolute_axis_index() {
+            // `x [e_a; 0]`: a column of the rotation, and its moment.
+            Some(a) => {
+                let ang = x.rot.column(a);
+                Motion::new(ang, x.trans.cross(&ang))
+            }
+            None => x.act_motion(&j.subspace_column(k)),
+        }
     }
 }
 

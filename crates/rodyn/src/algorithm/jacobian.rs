@@ -52,7 +52,6 @@ use super::kinematics::{body_transform_with, forward_kinematics_velocity, JointS
 use crate::data::Data;
 use crate::error::Result;
 use crate::frame::Frame;
-use crate::joint::JointModel;
 use crate::model::Model;
 use crate::space::{MotionVector, RigidTransform, Space, VectorOps};
 use crate::spatial::{Motion, Spatial};
@@ -93,7 +92,13 @@ impl<S: Scalar, const NV: usize, G: Space> Default for JacobianData<S, NV, G> {
 ///
 /// # Errors
 /// As [`forward_kinematics`](super::kinematics::forward_kinematics).
-pub fn joint_jacobians<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
+pub fn joint_jacobians<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: FrameSpace,
+>(
     model: &Model<S, NB, NQ, NV, G>,
     data: &mut Data<S, NB, NV, G>,
     jac: &mut JacobianData<S, NV, G>,
@@ -107,7 +112,7 @@ pub fn joint_jacobians<S: Scalar, const NB: usize, const NQ: usize, const NV: us
         let joint = model.joint(i);
         let iv = t.idx_v[i];
         for k in 0..t.nv[i] {
-            jac.j[iv + k] = o_m_i.act_motion(&joint.subspace_column(k));
+            jac.j[iv + k] = G::act_subspace_column(&o_m_i, joint, k);
         }
     }
     Ok(())
@@ -160,7 +165,7 @@ pub fn joint_jacobians_time_variation<
     const NB: usize,
     const NQ: usize,
     const NV: usize,
-    G: Space,
+    G: FrameSpace,
 >(
     model: &Model<S, NB, NQ, NV, G>,
     data: &mut Data<S, NB, NV, G>,
@@ -181,7 +186,7 @@ pub fn joint_jacobians_time_variation<
 }
 
 /// `ᵒJₖ = ᵒX_i Sₖ` from the poses in `data.o_m_i`.
-fn columns_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
+fn columns_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: FrameSpace>(
     model: &Model<S, NB, NQ, NV, G>,
     data: &Data<S, NB, NV, G>,
     jac: &mut JacobianData<S, NV, G>,
@@ -191,7 +196,7 @@ fn columns_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
         let joint = model.joint(i);
         let iv = t.idx_v[i];
         for k in 0..t.nv[i] {
-            jac.j[iv + k] = data.o_m_i[i].act_motion(&joint.subspace_column(k));
+            jac.j[iv + k] = G::act_subspace_column(&data.o_m_i[i], joint, k);
         }
     }
 }
