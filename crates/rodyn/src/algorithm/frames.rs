@@ -96,13 +96,20 @@ impl FrameSpace for Spatial {
     }
     #[inline(always)]
     fn act_subspace_column<S: Scalar>(x: &Transform<S>, j: &Joint<S>, k: usize) -> Motion<S> {
-        match j.revolute_axis_index() {
+        if let Some(a) = j.revolute_axis_index() {
             // `x [e_a; 0]`: a column of the rotation, and its moment.
-            Some(a) => {
-                let ang = x.rot.column(a);
+            let ang = x.rot.column(a);
+            return Motion::new(ang, x.trans.cross(&ang));
+        }
+        match j {
+            // Linear coordinates first: `x [0; e_k]` is a column of the
+            // rotation; `x [e_k; 0]` one and its moment.
+            Joint::FreeFlyer(_) if k < 3 => Motion::new(Vec3::ZERO, x.rot.column(k)),
+            Joint::FreeFlyer(_) => {
+                let ang = x.rot.column(k - 3);
                 Motion::new(ang, x.trans.cross(&ang))
             }
-            None => x.act_motion(&j.subspace_column(k)),
+            _ => x.act_motion(&j.subspace_column(k)),
         }
     }
 }
