@@ -30,6 +30,8 @@ use crate::Scalar;
 /// without them pays no RAM for it.
 #[derive(Clone, Debug)]
 pub struct CentroidalData<S: Scalar, const NB: usize, const NV: usize, G: Space = Spatial> {
+    /// `ᵒIᶜᵢ`: body i's subtree's composite inertia in the world frame.
+    pub o_ic: [G::Inertia<S>; NB],
     /// The whole model's inertia in the world frame (its mass, kg, and
     /// centre of mass, m, through [`BodyInertia`]).
     pub total: G::Inertia<S>,
@@ -50,6 +52,7 @@ impl<S: Scalar, const NB: usize, const NV: usize, G: Space> CentroidalData<S, NB
     #[must_use]
     pub const fn new() -> Self {
         Self {
+            o_ic: [<G::Inertia<S> as BodyInertia<S>>::ZERO; NB],
             total: <G::Inertia<S> as BodyInertia<S>>::ZERO,
             ag: [<G::Force<S> as VectorOps<S>>::ZERO; NV],
             ig: <G::Inertia<S> as BodyInertia<S>>::ZERO,
@@ -82,7 +85,7 @@ impl<S: Scalar, const NB: usize, const NV: usize, G: Space> Default
 /// The centroidal momentum matrix and the centroidal composite inertia at
 /// `q` (NQ) (Pinocchio's `computeCentroidalMap` and, but for `h_G`,
 /// `ccrba`). Runs [`forward_kinematics`](super::kinematics::forward_kinematics). Leaves valid `data.li_m_i`,
-/// `data.o_m_i`, `cd.total`, `cd.ag`, `cd.ig`; `cd.hg` and
+/// `data.o_m_i`, `cd.o_ic`, `cd.total`, `cd.ag`, `cd.ig`; `cd.hg` and
 /// `cd.dhg` stale.
 ///
 /// # Errors
@@ -144,33 +147,31 @@ pub fn centroidal_momentum<
 }
 
 /// Composite inertias in the world, `I_g` and `A_g`, from `data.o_m_i`.
-/// The composites are summed in additive form ([`FrameSpace::Composite`]),
-/// on the stack.
 fn map_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: FrameSpace>(
     model: &Model<S, NB, NQ, NV, G>,
     data: &Data<S, NB, NV, G>,
     cd: &mut CentroidalData<S, NB, NV, G>,
 ) {
-    let mut o_ic: [G::Composite<S>; NB] =
-        core::array::from_fn(|i| G::composite(model.inertia(i), &data.o_m_i[i]));
-    let mut total = G::composite_zero::<S>();
+    for i in 0..NB {
+        cd.o_ic[i] = model.inertia(i).act(&data.o_m_i[i]);
+    }
+    let mut total = <G::Inertia<S> as BodyInertia<S>>::ZERO;
     for i in (0..NB).rev() {
-        let sub = o_ic[i];
         match model.parent(i) {
-            Some(p) => G::composite_add(&mut o_ic[p], &sub),
-            None => G::composite_add(&mut total, &sub),
+            Some(p) => cd.o_ic[p] = cd.o_ic[p].combine(&cd.o_ic[i]),
+            None => total = total.combine(&cd.o_ic[i]),
         }
     }
-    cd.total = G::composite_inertia(&total);
-    let o_m_g = G::from_translation(&cd.total.com());
-    cd.ig = cd.total.act(&o_m_g.inverse());
+    cd.total = total;
+    let o_m_g = G::from_translation(&total.com());
+    cd.ig = total.act(&o_m_g.inverse());
     let t = model.topology();
     for i in 0..NB {
         let joint = model.joint(i);
         let iv = t.idx_v[i];
         for k in 0..t.nv[i] {
             let o_s = G::act_subspace_column(&data.o_m_i[i], joint, k);
-            cd.ag[iv + k] = o_m_g.act_inv_force(&G::composite_momentum(&o_ic[i], &o_s));
+            cd.ag[iv + k] = o_m_g.act_inv_force(&cd.o_ic[i].mul_motion(&o_s));
         }
     }
 }

@@ -24,9 +24,9 @@ use crate::data::Data;
 use crate::error::{Error, Result};
 use crate::frame::Frame;
 use crate::joint::{Joint, JointModel};
-use crate::planar::{Planar, PlanarForce, PlanarInertia, PlanarMotion, PlanarTransform, Vec2};
-use crate::space::{BodyInertia, MotionVector, RigidTransform, Space, VectorOps};
-use crate::spatial::{Force, Inertia, Motion, Spatial, Sym3, Transform, Vec3};
+use crate::planar::{Planar, PlanarForce, PlanarMotion, PlanarTransform, Vec2};
+use crate::space::{MotionVector, RigidTransform, Space, VectorOps};
+use crate::spatial::{Force, Motion, Spatial, Transform, Vec3};
 use crate::Scalar;
 
 /// The frame a frame's motion or Jacobian is expressed in (Pinocchio's
@@ -61,26 +61,6 @@ pub trait FrameSpace: Space {
     fn translation_only<S: Scalar>(x: &Self::Transform<S>) -> Self::Transform<S> {
         Self::from_translation(&x.translation())
     }
-    /// A rigid-body inertia in additive form, about the world's origin
-    /// (mass, first moment `m c`, rotational inertia about the origin): the
-    /// inertias of many bodies add without the division by the total mass
-    /// that [`BodyInertia::combine`](crate::space::BodyInertia::combine)
-    /// needs for their common centre of mass.
-    type Composite<S: Scalar>: Copy + core::fmt::Debug;
-    /// The massless composite.
-    fn composite_zero<S: Scalar>() -> Self::Composite<S>;
-    /// Inertia `i`, given in a body frame whose pose is `x` (world from
-    /// body), as a composite.
-    fn composite<S: Scalar>(i: &Self::Inertia<S>, x: &Self::Transform<S>) -> Self::Composite<S>;
-    /// `acc += o`.
-    fn composite_add<S: Scalar>(acc: &mut Self::Composite<S>, o: &Self::Composite<S>);
-    /// The momentum of the composite moving with `m` (world frame, at the
-    /// origin).
-    fn composite_momentum<S: Scalar>(c: &Self::Composite<S>, m: &Self::Motion<S>)
-        -> Self::Force<S>;
-    /// The composite as an inertia in the world frame (a massless one as
-    /// [`BodyInertia::ZERO`](crate::space::BodyInertia::ZERO)).
-    fn composite_inertia<S: Scalar>(c: &Self::Composite<S>) -> Self::Inertia<S>;
     /// `x Sₖ`: column k of joint `j`'s motion subspace moved by `x` (into
     /// the world, for a body pose).
     #[inline(always)]
@@ -93,75 +73,7 @@ pub trait FrameSpace: Space {
     }
 }
 
-/// [`FrameSpace::Composite`] in 3-D: mass (kg), first moment `m c` (kg m),
-/// rotational inertia about the origin (kg m²).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Composite3<S> {
-    mass: S,
-    moment: Vec3<S>,
-    rot_inertia: Sym3<S>,
-}
-
-/// `m (|c|² 1 − c cᵀ)` from `c` and `h = m c`.
-#[inline(always)]
-fn mass_parallel_axis<S: Scalar>(c: &Vec3<S>, h: &Vec3<S>) -> Sym3<S> {
-    Sym3::new(
-        c.y * h.y + c.z * h.z,
-        -c.x * h.y,
-        -c.x * h.z,
-        c.x * h.x + c.z * h.z,
-        -c.y * h.z,
-        c.x * h.x + c.y * h.y,
-    )
-}
-
 impl FrameSpace for Spatial {
-    type Composite<S: Scalar> = Composite3<S>;
-    #[inline]
-    fn composite_zero<S: Scalar>() -> Composite3<S> {
-        Composite3 {
-            mass: S::ZERO,
-            moment: Vec3::ZERO,
-            rot_inertia: Sym3::ZERO,
-        }
-    }
-    #[inline]
-    fn composite<S: Scalar>(i: &Inertia<S>, x: &Transform<S>) -> Composite3<S> {
-        let c = x.act_point(&i.com);
-        let h = c * i.mass;
-        Composite3 {
-            mass: i.mass,
-            moment: h,
-            rot_inertia: i.rot_inertia.rotate(&x.rot) + mass_parallel_axis(&c, &h),
-        }
-    }
-    #[inline]
-    fn composite_add<S: Scalar>(acc: &mut Composite3<S>, o: &Composite3<S>) {
-        acc.mass += o.mass;
-        acc.moment += o.moment;
-        acc.rot_inertia += o.rot_inertia;
-    }
-    #[inline]
-    fn composite_momentum<S: Scalar>(c: &Composite3<S>, m: &Motion<S>) -> Force<S> {
-        // A point mass at p moves at v + ω × p: the sums are m v + ω × h
-        // and, about the origin, h × v + I_o ω.
-        Force::new(
-            c.rot_inertia.mul_vec(&m.ang) + c.moment.cross(&m.lin),
-            m.lin * c.mass + m.ang.cross(&c.moment),
-        )
-    }
-    #[inline]
-    fn composite_inertia<S: Scalar>(c: &Composite3<S>) -> Inertia<S> {
-        if c.mass <= S::ZERO {
-            return <Inertia<S> as BodyInertia<S>>::ZERO;
-        }
-        let com = c.moment * (S::ONE / c.mass);
-        Inertia::new(
-            c.mass,
-            com,
-            c.rot_inertia - mass_parallel_axis(&com, &c.moment),
-        )
-    }
     #[inline]
     fn from_translation<S: Scalar>(p: &Vec3<S>) -> Transform<S> {
         Transform::from_translation(*p)
@@ -202,55 +114,7 @@ impl FrameSpace for Spatial {
     }
 }
 
-/// [`FrameSpace::Composite`] in the plane: mass (kg), first moment `m c`
-/// (kg m), moment of inertia about the origin (kg m²).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Composite2<S> {
-    mass: S,
-    moment: Vec2<S>,
-    izz: S,
-}
-
 impl FrameSpace for Planar {
-    type Composite<S: Scalar> = Composite2<S>;
-    #[inline]
-    fn composite_zero<S: Scalar>() -> Composite2<S> {
-        Composite2 {
-            mass: S::ZERO,
-            moment: Vec2::ZERO,
-            izz: S::ZERO,
-        }
-    }
-    #[inline]
-    fn composite<S: Scalar>(i: &PlanarInertia<S>, x: &PlanarTransform<S>) -> Composite2<S> {
-        let c = x.act_point(&i.com);
-        Composite2 {
-            mass: i.mass,
-            moment: c * i.mass,
-            izz: i.izz + c.norm_squared() * i.mass,
-        }
-    }
-    #[inline]
-    fn composite_add<S: Scalar>(acc: &mut Composite2<S>, o: &Composite2<S>) {
-        acc.mass += o.mass;
-        acc.moment += o.moment;
-        acc.izz += o.izz;
-    }
-    #[inline]
-    fn composite_momentum<S: Scalar>(c: &Composite2<S>, m: &PlanarMotion<S>) -> PlanarForce<S> {
-        PlanarForce::new(
-            c.izz * m.ang + c.moment.cross(&m.lin),
-            m.lin * c.mass + c.moment.perp_scaled(m.ang),
-        )
-    }
-    #[inline]
-    fn composite_inertia<S: Scalar>(c: &Composite2<S>) -> PlanarInertia<S> {
-        if c.mass <= S::ZERO {
-            return <PlanarInertia<S> as BodyInertia<S>>::ZERO;
-        }
-        let com = c.moment * (S::ONE / c.mass);
-        PlanarInertia::new(c.mass, com, c.izz - com.dot(&c.moment))
-    }
     #[inline]
     fn from_translation<S: Scalar>(p: &Vec2<S>) -> PlanarTransform<S> {
         PlanarTransform::from_translation(*p)
