@@ -19,7 +19,13 @@
 
 use std::ffi::{c_char, c_int, c_void, CString};
 use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::sync::Mutex;
 use std::time::Instant;
+
+/// One solve at a time per process: the sequential MUMPS that Debian's
+/// IPOPT uses keeps global state and aborts the process when two solves
+/// run at once (as parallel tests do).
+static ONE_SOLVE_AT_A_TIME: Mutex<()> = Mutex::new(());
 
 /// A nonlinear program for IPOPT, with the constraint Jacobian in
 /// coordinate (triplet) form.
@@ -408,12 +414,18 @@ enum OptionValue<'a> {
 const NO_BOUND: f64 = 1e19;
 
 /// Solves `problem` with IPOPT (MUMPS for the linear systems, L-BFGS for
-/// the Hessian of the Lagrangian).
+/// the Hessian of the Lagrangian). Solves from several threads run one
+/// after the other.
 ///
 /// # Errors
 /// [`SetupError`] when IPOPT refuses the problem or an option. A solve that
 /// stops without converging returns `Ok` with its [`Status`].
 pub fn solve<P: Nlp>(problem: &mut P, options: &Options) -> Result<Solution, SetupError> {
+    // A poisoned lock only means another solve panicked in Rust code; the
+    // solver's state is released by then.
+    let _one_at_a_time = ONE_SOLVE_AT_A_TIME
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
     let (n, m) = (problem.variables(), problem.constraints());
     let structure = problem.jacobian_structure();
     let index = |size: usize| Index::try_from(size).map_err(|_| SetupError::TooLarge);
