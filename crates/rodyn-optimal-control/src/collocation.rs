@@ -14,7 +14,15 @@
 //! each depending on two nodes only, so the Jacobian is block-banded with
 //! the blocks `−I − h/2 A_k`, `−h/2 B_k`, `I − h/2 A_{k+1}`, `−h/2 B_{k+1}`
 //! from the state Jacobians `A = ∂f/∂x` and `B = ∂f/∂u`. The objective is
-//! the effort `∫ Σᵢ wᵢ uᵢ² dt` by the trapezoidal rule.
+//!
+//! ```text
+//! J = ∫ (Σᵢ sᵢ xᵢ² + Σᵢ wᵢ uᵢ²) dt + Σᵢ rᵢ ∫ u̇ᵢ² dt
+//! ```
+//!
+//! with the first integral by the trapezoidal rule and the control-rate
+//! term as `Σ_k (u_{k+1} − u_k)² / h` (exact for controls linear between
+//! nodes): quadratic weights on states, controls and control rates
+//! ([`Weights`]).
 
 use crate::ipopt::Nlp;
 
@@ -60,9 +68,20 @@ pub struct Node<const NX: usize, const NU: usize> {
     pub u: [f64; NU],
 }
 
+/// The objective's weights (see the module's documentation).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Weights<const NX: usize, const NU: usize> {
+    /// `sᵢ`, on the squared states.
+    pub state: [f64; NX],
+    /// `wᵢ`, on the squared controls.
+    pub control: [f64; NU],
+    /// `rᵢ`, on the squared control rates.
+    pub control_rate: [f64; NU],
+}
+
 /// The transcription of one optimal-control problem: `nodes` nodes
 /// (`N = nodes − 1` intervals) on `[t0, t1]`, the bounds and the initial
-/// guess of each node, and the effort weights `w`.
+/// guess of each node, and the objective's [`Weights`].
 pub struct Trapezoidal<D, const NX: usize, const NU: usize> {
     /// The system.
     pub dynamics: D,
@@ -72,8 +91,8 @@ pub struct Trapezoidal<D, const NX: usize, const NU: usize> {
     pub bounds: Vec<NodeBounds<NX, NU>>,
     /// Per-node initial guess.
     pub guess: Vec<Node<NX, NU>>,
-    /// Effort weights `wᵢ` of `∫ Σᵢ wᵢ uᵢ² dt`.
-    pub effort_weights: [f64; NU],
+    /// The objective's weights.
+    pub weights: Weights<NX, NU>,
     /// `f`, `A`, `B` at each node for the last `z` evaluated, so that the
     /// constraints and their Jacobian at one iterate share one pass.
     cache: Cache<NX, NU>,
@@ -104,7 +123,7 @@ impl<D: Dynamics<NX, NU>, const NX: usize, const NU: usize> Trapezoidal<D, NX, N
         nodes: usize,
         bounds: impl Fn(f64) -> NodeBounds<NX, NU>,
         guess: impl Fn(f64) -> Node<NX, NU>,
-        effort_weights: [f64; NU],
+        weights: Weights<NX, NU>,
     ) -> Self {
         assert!(
             nodes >= 2 && t1 > t0,
@@ -117,7 +136,7 @@ impl<D: Dynamics<NX, NU>, const NX: usize, const NU: usize> Trapezoidal<D, NX, N
             bounds: times.iter().map(|&t| bounds(t)).collect(),
             guess: times.iter().map(|&t| guess(t)).collect(),
             times,
-            effort_weights,
+            weights,
             cache: Cache {
                 z: Vec::new(),
                 with_jacobians: false,
@@ -236,36 +255,46 @@ impl<D: Dynamics<NX, NU>, const NX: usize, const NU: usize> Nlp for Trapezoidal<
     }
 
     fn objective(&mut self, z: &[f64]) -> Option<f64> {
-        let effort = z
-            .chunks_exact(Self::BLOCK)
-            .enumerate()
-            .map(|(k, block)| {
-                let u = &block[NX..];
-                let sum: f64 = u
+        let w = &self.weights;
+        let h = self.step();
+        let blocks: Vec<&[f64]> = z.chunks_exact(Self::BLOCK).collect();
+        let mut value = 0.0;
+        for (k, block) in blocks.iter().enumerate() {
+            let squares = |values: &[f64], weights: &[f64]| -> f64 {
+                values.iter().zip(weights).map(|(v, w)| w * v * v).sum()
+            };
+            value += self.weight(k)
+                * (squares(&block[..NX], &w.state) + squares(&block[NX..], &w.control));
+            if let Some(next) = blocks.get(k + 1) {
+                let rates: Vec<f64> = next[NX..]
                     .iter()
-                    .zip(&self.effort_weights)
-                    .map(|(u, w)| w * u * u)
-                    .sum();
-                self.weight(k) * sum
-            })
-            .sum();
-        Some(effort)
+                    .zip(&block[NX..])
+                    .map(|(b, a)| b - a)
+                    .collect();
+                value += squares(&rates, &w.control_rate) / h;
+            }
+        }
+        Some(value)
     }
 
     fn objective_gradient(&mut self, z: &[f64], gradient: &mut [f64]) -> bool {
+        let w = self.weights;
+        let h = self.step();
         gradient.fill(0.0);
-        for (k, (block, grad)) in z
-            .chunks_exact(Self::BLOCK)
-            .zip(gradient.chunks_exact_mut(Self::BLOCK))
-            .enumerate()
-        {
+        for k in 0..self.nodes() {
             let weight = self.weight(k);
-            for ((g, u), w) in grad[NX..]
-                .iter_mut()
-                .zip(&block[NX..])
-                .zip(&self.effort_weights)
-            {
-                *g = 2.0 * weight * w * u;
+            let at = k * Self::BLOCK;
+            for i in 0..NX {
+                gradient[at + i] = 2.0 * weight * w.state[i] * z[at + i];
+            }
+            for i in 0..NU {
+                gradient[at + NX + i] += 2.0 * weight * w.control[i] * z[at + NX + i];
+                if k + 1 < self.nodes() {
+                    let next = at + Self::BLOCK + NX + i;
+                    let rate = 2.0 * w.control_rate[i] * (z[next] - z[at + NX + i]) / h;
+                    gradient[next] += rate;
+                    gradient[at + NX + i] -= rate;
+                }
             }
         }
         true
@@ -386,7 +415,11 @@ mod tests {
                 x: [t, 0.0],
                 u: [0.0],
             },
-            [1.0],
+            Weights {
+                state: [0.0; 2],
+                control: [1.0],
+                control_rate: [0.0],
+            },
         );
         let solution = solve(&mut problem, &Options::default()).unwrap();
         assert!(solution.status.converged(), "{:?}", solution.status);
@@ -416,5 +449,49 @@ mod tests {
             "cost {}",
             solution.objective
         );
+    }
+
+    /// The objective's gradient against central differences, every weight
+    /// non-zero.
+    #[test]
+    fn objective_gradient_matches_differences() {
+        let mut problem = Trapezoidal::new(
+            DoubleIntegrator,
+            0.0,
+            1.0,
+            6,
+            |_| NodeBounds {
+                x_lower: [f64::NEG_INFINITY; 2],
+                x_upper: [f64::INFINITY; 2],
+                u_lower: [f64::NEG_INFINITY],
+                u_upper: [f64::INFINITY],
+            },
+            |t| Node {
+                t,
+                x: [t.sin(), t.cos()],
+                u: [3.0 * t * t - 1.0],
+            },
+            Weights {
+                state: [0.7, 1.3],
+                control: [2.0],
+                control_rate: [0.4],
+            },
+        );
+        let mut z = vec![0.0; problem.variables()];
+        problem.initial_point(&mut z);
+        let mut gradient = vec![0.0; z.len()];
+        assert!(problem.objective_gradient(&z, &mut gradient));
+        for j in 0..z.len() {
+            let (mut plus, mut minus) = (z.clone(), z.clone());
+            plus[j] += 1e-6;
+            minus[j] -= 1e-6;
+            let difference =
+                (problem.objective(&plus).unwrap() - problem.objective(&minus).unwrap()) / 2e-6;
+            assert!(
+                (gradient[j] - difference).abs() < 1e-7,
+                "{j}: {} against {difference}",
+                gradient[j]
+            );
+        }
     }
 }

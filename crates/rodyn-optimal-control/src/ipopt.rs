@@ -112,8 +112,9 @@ pub struct Options {
     /// IPOPT's own `print_level` (0 silences it).
     pub print_level: i32,
     /// Called after every iteration with `(iteration, objective, primal
-    /// infeasibility)`: the progress report of long runs.
-    pub progress: Option<fn(usize, f64, f64)>,
+    /// infeasibility, dual infeasibility)`: the progress report of long
+    /// runs.
+    pub progress: Option<fn(usize, f64, f64, f64)>,
 }
 
 impl Default for Options {
@@ -227,7 +228,7 @@ struct Context<'p, P> {
     problem: &'p mut P,
     structure: Vec<(usize, usize)>,
     iterations: usize,
-    progress: Option<fn(usize, f64, f64)>,
+    progress: Option<fn(usize, f64, f64, f64)>,
 }
 
 /// Recovers the context and a slice from IPOPT's raw arguments, and runs
@@ -353,7 +354,7 @@ extern "C" fn intermediate<P: Nlp>(
     iteration: Index,
     objective: f64,
     primal_infeasibility: f64,
-    _: f64,
+    dual_infeasibility: f64,
     _: f64,
     _: f64,
     _: f64,
@@ -365,7 +366,12 @@ extern "C" fn intermediate<P: Nlp>(
     guarded::<P>(data, |c| {
         c.iterations = usize::try_from(iteration).unwrap_or(0);
         if let Some(progress) = c.progress {
-            progress(c.iterations, objective, primal_infeasibility);
+            progress(
+                c.iterations,
+                objective,
+                primal_infeasibility,
+                dual_infeasibility,
+            );
         }
         true
     })
