@@ -147,12 +147,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     Ok(())
 }
 
-/// Each muscle's share of the effort `∫ uᵢ² dt` (trapezoidal, as the
-/// objective).
-fn participation(nodes: &[Node<NX, NU>], objective: f64) -> [f64; NU] {
+/// Each muscle's share of the activation effort `∫ Σᵢ aᵢ² dt`
+/// (trapezoidal, as the objective).
+fn participation(nodes: &[Node<NX, NU>]) -> [f64; NU] {
     let h = nodes[1].t - nodes[0].t;
-    core::array::from_fn(|i| {
-        let integral: f64 = nodes
+    let integrals: [f64; NU] = core::array::from_fn(|i| {
+        nodes
             .iter()
             .enumerate()
             .map(|(k, n)| {
@@ -161,11 +161,12 @@ fn participation(nodes: &[Node<NX, NU>], objective: f64) -> [f64; NU] {
                 } else {
                     1.0
                 };
-                w * h * n.u[i] * n.u[i]
+                w * h * n.x[2 * NV + i] * n.x[2 * NV + i]
             })
-            .sum();
-        integral / objective
-    })
+            .sum()
+    });
+    let total: f64 = integrals.iter().sum();
+    integrals.map(|i| i / total)
 }
 
 fn write_controls(path: &Path, task: &Task, nodes: &[Node<NX, NU>]) -> std::io::Result<()> {
