@@ -17,7 +17,7 @@
 use clap::Parser;
 use plotters::prelude::*;
 use rodyn_optimal_control::collocation::Node;
-use rodyn_optimal_control::ipopt::{solve, Options, Solution};
+use rodyn_optimal_control::ipopt::{solve, Options, Solution, Status};
 use rodyn_optimal_control::muscle_robot::{
     resimulate, Derivatives, Task, EXCITATION_RATE_WEIGHT, NX,
 };
@@ -44,11 +44,19 @@ struct Arguments {
     single: bool,
 }
 
+/// The objective's relative change over 10 iterations below which, with
+/// the defects below 1e-7, the solve counts
+/// as converged: Thelen's muscle has kinks (the force-velocity curve's
+/// slopes differ either side of zero fibre velocity; activation and
+/// deactivation have different time constants), so the dual infeasibility
+/// stalls above IPOPT's `tol` and is reported beside.
+const STATIONARY_OBJECTIVE: f64 = 1e-8;
+
 /// RK4 step of the re-simulation, s.
 const RESIMULATION_STEP: f64 = 1e-4;
 
 fn progress(iteration: usize, objective: f64, infeasibility: f64, dual: f64) {
-    if iteration % 50 == 0 {
+    if iteration.is_multiple_of(50) {
         eprintln!(
             "    iteration {iteration:4}: objective {objective:.6e}, largest defect {infeasibility:.2e}, dual infeasibility {dual:.2e}"
         );
@@ -68,6 +76,7 @@ fn run(task: &Task, route: Derivatives) -> Result<Run, Box<dyn std::error::Error
     let mut problem = task.transcribe(route)?;
     let options = Options {
         progress: Some(progress),
+        stationary_objective: Some(STATIONARY_OBJECTIVE),
         ..Options::default()
     };
     let solution = solve(&mut problem, &options)?;
@@ -202,9 +211,10 @@ fn write_summary(
     let route = |run: &Run| {
         serde_json::json!({
             "derivatives": run.route.name(),
-            "converged": run.solution.status.converged(),
+            "converged": matches!(run.solution.status, Status::Solved | Status::SolvedToAcceptableLevel),
             "status": format!("{:?}", run.solution.status),
             "iterations": run.solution.iterations,
+            "final_dual_infeasibility": run.solution.dual_infeasibility,
             "solve_seconds": run.solution.seconds,
             "objective": run.solution.objective,
             "constraint_violation": run.max_defect,
@@ -220,7 +230,10 @@ fn write_summary(
         "nodes": task.nodes,
         "peak_angles_rad": task.peak,
         "derivatives": main.route.name(),
-        "converged": main.solution.status.converged(),
+        "converged": matches!(main.solution.status, Status::Solved | Status::SolvedToAcceptableLevel),
+        "status": format!("{:?}", main.solution.status),
+        "convergence_test": format!("IPOPT acceptable level: defects below 1e-7 and the objective's relative change below {STATIONARY_OBJECTIVE:e} for 10 iterations (the muscle model's kinks keep the dual infeasibility above IPOPT's tol)"),
+        "final_dual_infeasibility": main.solution.dual_infeasibility,
         "iterations": main.solution.iterations,
         "solve_seconds": main.solution.seconds,
         "objective": main.solution.objective,

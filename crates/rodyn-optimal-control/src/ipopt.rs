@@ -96,6 +96,9 @@ pub struct Solution {
     pub objective: f64,
     /// IPOPT's iteration count.
     pub iterations: usize,
+    /// The (scaled) dual infeasibility of the last iteration: how far the
+    /// final point is from first-order optimality.
+    pub dual_infeasibility: f64,
     /// Wall time of the solve, s.
     pub seconds: f64,
 }
@@ -109,6 +112,16 @@ pub struct Options {
     pub constraint_tolerance: f64,
     /// IPOPT's `max_iter`.
     pub max_iterations: usize,
+    /// When set, the "acceptable" stop for problems whose functions have
+    /// kinks, where the dual infeasibility cannot fall to `tolerance`: the
+    /// constraints within `acceptable_constraint_tolerance` and the
+    /// objective's relative change below this value for 10 iterations in a
+    /// row (IPOPT's `acceptable_obj_change_tol`; `acceptable_tol` is opened
+    /// to 1).
+    pub stationary_objective: Option<f64>,
+    /// IPOPT's `acceptable_constr_viol_tol`, used with
+    /// `stationary_objective`.
+    pub acceptable_constraint_tolerance: f64,
     /// IPOPT's own `print_level` (0 silences it).
     pub print_level: i32,
     /// Called after every iteration with `(iteration, objective, primal
@@ -123,6 +136,8 @@ impl Default for Options {
             tolerance: 1e-8,
             constraint_tolerance: 1e-8,
             max_iterations: 3000,
+            stationary_objective: None,
+            acceptable_constraint_tolerance: 1e-7,
             print_level: 0,
             progress: None,
         }
@@ -228,6 +243,7 @@ struct Context<'p, P> {
     problem: &'p mut P,
     structure: Vec<(usize, usize)>,
     iterations: usize,
+    dual_infeasibility: f64,
     progress: Option<fn(usize, f64, f64, f64)>,
 }
 
@@ -365,6 +381,7 @@ extern "C" fn intermediate<P: Nlp>(
 ) -> Bool {
     guarded::<P>(data, |c| {
         c.iterations = usize::try_from(iteration).unwrap_or(0);
+        c.dual_infeasibility = dual_infeasibility;
         if let Some(progress) = c.progress {
             progress(
                 c.iterations,
@@ -510,6 +527,7 @@ pub fn solve<P: Nlp>(problem: &mut P, options: &Options) -> Result<Solution, Set
         problem,
         structure,
         iterations: 0,
+        dual_infeasibility: f64::NAN,
         progress: options.progress,
     };
     let start = Instant::now();
@@ -533,6 +551,7 @@ pub fn solve<P: Nlp>(problem: &mut P, options: &Options) -> Result<Solution, Set
         x,
         objective,
         iterations: context.iterations,
+        dual_infeasibility: context.dual_infeasibility,
         seconds: start.elapsed().as_secs_f64(),
     })
 }

@@ -233,15 +233,13 @@ impl MuscleRobot {
                 for j in 0..2 * NV {
                     let (dx, du) = unit(j);
                     let rate = self.dual_rate(x, u, &dx, &du)?;
-                    for i in 0..NV {
-                        a_out[NV + i][j] = rate[NV + i].du;
+                    for (row, r) in a_out[NV..2 * NV].iter_mut().zip(&rate[NV..2 * NV]) {
+                        row[j] = r.du;
                     }
                 }
-                for i in 0..NV {
+                for (i, sensitivity) in dq_ddot_da.iter().enumerate() {
                     a_out[i][NV + i] = 1.0;
-                    for k in 0..NU {
-                        a_out[NV + i][2 * NV + k] = dq_ddot_da[i][k];
-                    }
+                    a_out[NV + i][2 * NV..].copy_from_slice(sensitivity);
                 }
                 let mut a_dot = [0.0; NU];
                 for k in 0..NU {
