@@ -14,8 +14,8 @@
 //! native static library `lapack`". The C interface is eight functions, so
 //! they are declared here, and everything unsafe stays in this file.
 //!
-//! The Hessian of the Lagrangian is not supplied: IPOPT's limited-memory
-//! quasi-Newton (L-BFGS) approximation is used, set by [`solve`].
+//! A problem supplies the Hessian of the Lagrangian or leaves it to IPOPT's
+//! limited-memory quasi-Newton (L-BFGS) approximation.
 
 use std::ffi::{c_char, c_int, c_void, CString};
 use std::panic::{catch_unwind, AssertUnwindSafe};
@@ -53,6 +53,28 @@ pub trait Nlp {
     /// The Jacobian's entries at `x`, in [`Nlp::jacobian_structure`]'s
     /// order; `false` when it cannot be evaluated.
     fn jacobian_values(&mut self, x: &[f64], values: &mut [f64]) -> bool;
+
+    /// The lower triangle's (`row ≥ column`) structurally non-zero entries
+    /// of the Hessian of the Lagrangian `σ ∇²f + Σᵢ λᵢ ∇²gᵢ`, or `None` to
+    /// let IPOPT approximate it by limited-memory quasi-Newton updates
+    /// (L-BFGS), the default.
+    fn hessian_structure(&self) -> Option<Vec<(usize, usize)>> {
+        None
+    }
+
+    /// The Hessian of the Lagrangian at `x` for the objective factor `σ`
+    /// and the constraint multipliers `λ`, in
+    /// [`Nlp::hessian_structure`]'s order; `false` when it cannot be
+    /// evaluated. Called only when that structure is `Some`.
+    fn hessian_values(
+        &mut self,
+        _x: &[f64],
+        _sigma: f64,
+        _lambda: &[f64],
+        _values: &mut [f64],
+    ) -> bool {
+        false
+    }
 }
 
 /// IPOPT's return status (`ApplicationReturnStatus`).
@@ -242,6 +264,7 @@ extern "C" {
 struct Context<'p, P> {
     problem: &'p mut P,
     structure: Vec<(usize, usize)>,
+    hessian_structure: Option<Vec<(usize, usize)>>,
     iterations: usize,
     dual_infeasibility: f64,
     progress: Option<fn(usize, f64, f64, f64)>,
@@ -344,24 +367,47 @@ extern "C" fn eval_jac_g<P: Nlp>(
     })
 }
 
-/// The Hessian is approximated by L-BFGS, so IPOPT never calls this; it
-/// reports failure should it ever do.
 #[allow(clippy::too_many_arguments)]
-extern "C" fn eval_h(
-    _: Index,
-    _: *mut f64,
+extern "C" fn eval_h<P: Nlp>(
+    n: Index,
+    x: *mut f64,
     _: Bool,
-    _: f64,
-    _: Index,
-    _: *mut f64,
+    sigma: f64,
+    m: Index,
+    lambda: *mut f64,
     _: Bool,
-    _: Index,
-    _: *mut Index,
-    _: *mut Index,
-    _: *mut f64,
-    _: *mut c_void,
+    entries: Index,
+    rows: *mut Index,
+    columns: *mut Index,
+    values: *mut f64,
+    data: *mut c_void,
 ) -> Bool {
-    0
+    guarded::<P>(data, |c| {
+        if values.is_null() {
+            let Some(structure) = &c.hessian_structure else {
+                return false;
+            };
+            let length = usize::try_from(entries).unwrap_or(0);
+            // SAFETY: IPOPT passes `iRow` and `jCol` of size nele_hess.
+            let (rows, columns) = unsafe {
+                (
+                    std::slice::from_raw_parts_mut(rows, length),
+                    std::slice::from_raw_parts_mut(columns, length),
+                )
+            };
+            for ((row, column), &(i, j)) in rows.iter_mut().zip(columns).zip(structure) {
+                *row = Index::try_from(i).unwrap_or(Index::MAX);
+                *column = Index::try_from(j).unwrap_or(Index::MAX);
+            }
+            true
+        } else {
+            // SAFETY: IPOPT passes `x` of size n, `lambda` of size m and
+            // `values` of size nele_hess.
+            let (x, lambda, values) =
+                unsafe { (slice(x, n), slice(lambda, m), slice(values, entries)) };
+            c.problem.hessian_values(x, sigma, lambda, values)
+        }
+    })
 }
 
 #[allow(clippy::too_many_arguments)]
@@ -436,8 +482,8 @@ enum OptionValue<'a> {
 /// `nlp_upper_bound_inf` default to ∓1e19).
 const NO_BOUND: f64 = 1e19;
 
-/// Solves `problem` with IPOPT (MUMPS for the linear systems, L-BFGS for
-/// the Hessian of the Lagrangian). Solves from several threads run one
+/// Solves `problem` with IPOPT (MUMPS for the linear systems; L-BFGS for
+/// the Hessian of the Lagrangian unless the problem supplies it). Solves from several threads run one
 /// after the other.
 ///
 /// # Errors
@@ -451,9 +497,16 @@ pub fn solve<P: Nlp>(problem: &mut P, options: &Options) -> Result<Solution, Set
         .unwrap_or_else(std::sync::PoisonError::into_inner);
     let (n, m) = (problem.variables(), problem.constraints());
     let structure = problem.jacobian_structure();
+    let hessian_structure = problem.hessian_structure();
     let index = |size: usize| Index::try_from(size).map_err(|_| SetupError::TooLarge);
+    let hessian_entries = index(hessian_structure.as_ref().map_or(0, Vec::len))?;
     let (n_index, m_index, entries) = (index(n)?, index(m)?, index(structure.len())?);
-    if structure.iter().any(|&(i, j)| i >= m || j >= n) {
+    let lower_triangle = |&(i, j): &(usize, usize)| i < n && j <= i;
+    if structure.iter().any(|&(i, j)| i >= m || j >= n)
+        || hessian_structure
+            .as_ref()
+            .is_some_and(|h| !h.iter().all(lower_triangle))
+    {
         return Err(SetupError::Rejected);
     }
     let clamp = |v: &mut f64| *v = v.clamp(-NO_BOUND, NO_BOUND);
@@ -480,23 +533,25 @@ pub fn solve<P: Nlp>(problem: &mut P, options: &Options) -> Result<Solution, Set
             g_l.as_mut_ptr(),
             g_u.as_mut_ptr(),
             entries,
-            0,
+            hessian_entries,
             0,
             eval_f::<P>,
             eval_g::<P>,
             eval_grad_f::<P>,
             eval_jac_g::<P>,
-            eval_h,
+            eval_h::<P>,
         )
     });
     if handle.0.is_null() {
         return Err(SetupError::Rejected);
     }
-    set_option(
-        &handle,
-        "hessian_approximation",
-        OptionValue::Str("limited-memory"),
-    )?;
+    if hessian_entries == 0 {
+        set_option(
+            &handle,
+            "hessian_approximation",
+            OptionValue::Str("limited-memory"),
+        )?;
+    }
     set_option(&handle, "tol", OptionValue::Num(options.tolerance))?;
     set_option(
         &handle,
@@ -526,6 +581,7 @@ pub fn solve<P: Nlp>(problem: &mut P, options: &Options) -> Result<Solution, Set
     let mut context = Context {
         problem,
         structure,
+        hessian_structure,
         iterations: 0,
         dual_infeasibility: f64::NAN,
         progress: options.progress,

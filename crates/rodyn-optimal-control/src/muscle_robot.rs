@@ -36,7 +36,7 @@
 //! The state Jacobians `A = ∂f/∂x`, `B = ∂f/∂u` come by one of three
 //! routes ([`Derivatives`]), compared by the example in one run.
 
-use crate::collocation::{Dynamics, Node, NodeBounds, Trapezoidal, Weights};
+use crate::collocation::{Dynamics, Hessian, Node, NodeBounds, Trapezoidal, Weights};
 use rodyn::algorithm::forward_dynamics::Aba;
 use rodyn::sim::{Integrator, Rk4};
 use rodyn::{Data, Dual};
@@ -338,6 +338,8 @@ pub struct Task {
     /// Peak angles of shoulder and elbow, rad: each joint swings from 0
     /// (hanging) to its peak and back, `q_d(t) = peak (1 − cos 2πt/T)/2`.
     pub peak: [f64; NV],
+    /// How the solver gets the Hessian of the Lagrangian.
+    pub hessian: Hessian,
 }
 
 impl Default for Task {
@@ -346,6 +348,7 @@ impl Default for Task {
             duration: 2.0,
             nodes: 101,
             peak: [0.6, 0.9],
+            hessian: Hessian::QuasiNewton,
         }
     }
 }
@@ -413,7 +416,7 @@ impl Task {
                 u: [0.1; NU],
             }
         };
-        Ok(Trapezoidal::new(
+        let mut problem = Trapezoidal::new(
             MuscleRobot::new(route)?,
             0.0,
             self.duration,
@@ -421,7 +424,9 @@ impl Task {
             bounds,
             guess,
             self.weights(),
-        ))
+        );
+        problem.hessian = self.hessian;
+        Ok(problem)
     }
 }
 
