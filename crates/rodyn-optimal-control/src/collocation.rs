@@ -445,6 +445,9 @@ impl<D: Dynamics<NX, NU>, const NX: usize, const NU: usize> Nlp for Trapezoidal<
         Some(entries)
     }
 
+    // The block's entries read `second[r][c]` and `second[c][r]` to
+    // symmetrise, which an iterator over one of them cannot express.
+    #[allow(clippy::needless_range_loop)]
     fn hessian_values(
         &mut self,
         z: &[f64],
