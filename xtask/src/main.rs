@@ -12,8 +12,10 @@
 //! | `host-profile <algorithm> <model> [--pinocchio]` | the same on the host: callgrind's count per instruction of one call of the `profile` binary (or of Pinocchio's timing program), charged line by line, and its floating-point operations |
 //!
 //! Each command installs what it needs when it is missing: the
-//! `thumbv7em-none-eabihf` target through rustup, QEMU through apt-get when
-//! running as root (otherwise it stops with the command to run).
+//! `thumbv7em-none-eabihf` target through rustup, QEMU and (for `test` and
+//! `lint`, which build `rodyn-optimal-control`) IPOPT's development files
+//! through apt-get when running as root (otherwise it stops with the
+//! command to run).
 
 mod costs;
 mod defmt_log;
@@ -79,6 +81,7 @@ fn test() -> Result<()> {
     let started = Instant::now();
     setup::ensure_target()?;
     setup::ensure_qemu()?;
+    setup::ensure_ipopt()?;
 
     shell::cargo(&["test", "--workspace"])?;
     shell::cargo(&[
@@ -123,6 +126,7 @@ fn test() -> Result<()> {
 /// Formatting, clippy and rustdoc with warnings as errors.
 fn lint() -> Result<()> {
     let started = Instant::now();
+    setup::ensure_ipopt()?;
     shell::cargo(&["fmt", "--all", "--check"])?;
     shell::cargo_in(firmware::dir(), &["fmt", "--check"])?;
     shell::cargo(&[

@@ -26,6 +26,22 @@ pub fn ensure_qemu() -> Result<()> {
     ensure_debian_tool("qemu-system-arm", "qemu-system-arm")
 }
 
+/// Installs IPOPT's development files (`coinor-libipopt-dev`, found by
+/// pkg-config), which `rodyn-optimal-control` links, the same way.
+pub fn ensure_ipopt() -> Result<()> {
+    let found = Command::new("pkg-config")
+        .args(["--exists", "ipopt"])
+        .status()
+        .is_ok_and(|s| s.success());
+    if found {
+        return Ok(());
+    }
+    install_debian_packages(
+        "IPOPT (for rodyn-optimal-control)",
+        &["pkg-config", "coinor-libipopt-dev"],
+    )
+}
+
 /// Installs valgrind (callgrind counts the host's instructions) the same way.
 pub fn ensure_valgrind() -> Result<()> {
     ensure_debian_tool("valgrind", "valgrind")
@@ -46,11 +62,18 @@ fn ensure_debian_tool(program: &str, package: &str) -> Result<()> {
     {
         return Ok(());
     }
+    install_debian_packages(program, &[package])
+}
+
+/// Installs `packages` through apt-get when running as root; otherwise
+/// stops with the command that would, naming `what` is missing.
+fn install_debian_packages(what: &str, packages: &[&str]) -> Result<()> {
     let is_root = output(Command::new("id").arg("-u")).is_ok_and(|uid| uid.trim() == "0");
     if !is_root {
         bail!(
-            "{program} is missing; install it with:\n    \
-             sudo apt-get update && sudo apt-get install -y {package}"
+            "{what} is missing; install it with:\n    \
+             sudo apt-get update && sudo apt-get install -y {}",
+            packages.join(" ")
         );
     }
     shell::run(
@@ -60,7 +83,8 @@ fn ensure_debian_tool(program: &str, package: &str) -> Result<()> {
     )?;
     shell::run(
         Command::new("apt-get")
-            .args(["install", "-y", "--no-install-recommends", package])
+            .args(["install", "-y", "--no-install-recommends"])
+            .args(packages)
             .env("DEBIAN_FRONTEND", "noninteractive"),
     )
 }
