@@ -21,6 +21,16 @@ pub enum Quantity {
     ModelParameter,
     /// An auxiliary state of a simulation, such as a muscle activation.
     AuxiliaryState,
+    /// An energy (a result).
+    Energy,
+    /// The mass matrix (a result; `index` is the diagonal entry).
+    MassMatrix,
+    /// A simulation's time or step.
+    Time,
+    /// A contact parameter or a contact point's state.
+    Contact,
+    /// A drive input `w` (a muscle activation, a motor current).
+    DriveInput,
 }
 
 /// What is wrong with a model parameter.
@@ -36,6 +46,14 @@ pub enum ModelProblem {
     AxisNotUnit,
     /// A placement whose rotation is not orthonormal.
     RotationNotOrthonormal,
+    /// A parameter with a NaN or infinite entry.
+    NonFiniteParameter,
+    /// A placement whose rotation is orthonormal but a reflection
+    /// (determinant −1), which no rigid motion is.
+    Reflection,
+    /// Finite numbers whose products (such as `m |c|²`) overflow the
+    /// scalar type, so the algorithms could not use them.
+    Overflow,
 }
 
 /// What is wrong with a drive element (see [`crate::drive`]).
@@ -56,6 +74,14 @@ pub enum DriveProblem {
     InputOutOfRange {
         /// The input index given.
         input: usize,
+    },
+    /// A muscle parameter that is non-finite or outside its physical range;
+    /// `index` counts the fields of
+    /// [`ThelenParameters`](crate::drive::ThelenParameters) in order (0:
+    /// maximum isometric force … 11: maximum lengthening force).
+    MuscleParameter {
+        /// The field's index.
+        index: usize,
     },
 }
 
@@ -122,6 +148,20 @@ pub enum Error {
         /// The residual's norm when it stopped.
         residual: f64,
     },
+    /// Finite inputs gave a non-finite result: numbers beyond what the
+    /// scalar type holds (a velocity of 1e154 squared in f64, 1e19 in f32).
+    NonFiniteResult {
+        /// Which result.
+        quantity: Quantity,
+        /// Index of the first offending entry.
+        index: usize,
+    },
+    /// A body index past the model's bodies (a parameter setter, a contact
+    /// point).
+    BodyOutOfRange {
+        /// The body index given.
+        body: usize,
+    },
 }
 
 impl fmt::Display for Error {
@@ -173,6 +213,14 @@ impl fmt::Display for Error {
                 f,
                 "no convergence in {iterations} iterations (residual {residual:e})"
             ),
+            Self::NonFiniteResult { quantity, index } => write!(
+                f,
+                "non-finite result {quantity:?} at index {index}: the inputs are finite \
+                 but too large for the scalar type"
+            ),
+            Self::BodyOutOfRange { body } => {
+                write!(f, "body {body}, which the model does not have")
+            }
         }
     }
 }
@@ -232,6 +280,10 @@ impl defmt::Format for Error {
                 iterations,
                 residual
             ),
+            Self::NonFiniteResult { quantity, index } => {
+                defmt::write!(f, "non-finite result {} at index {}", quantity, index)
+            }
+            Self::BodyOutOfRange { body } => defmt::write!(f, "missing body {}", body),
         }
     }
 }

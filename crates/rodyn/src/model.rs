@@ -272,9 +272,14 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
     /// Changes body `i`'s inertia (a payload, an identified parameter).
     ///
     /// # Errors
-    /// [`Error::InvalidModel`] when the inertia is not physical; the model is
-    /// then unchanged.
+    /// [`Error::BodyOutOfRange`] for `i ≥ NB`; [`Error::InvalidModel`] when
+    /// the inertia is not physical (non-finite, negative mass, not positive
+    /// semi-definite, breaking the triangle inequality, or overflowing
+    /// `m |c|²`); the model is then unchanged.
     pub fn set_inertia(&mut self, i: usize, inertia: G::Inertia<S>) -> Result<()> {
+        if i >= NB {
+            return Err(Error::BodyOutOfRange { body: i });
+        }
         G::validate_inertia(&inertia)
             .map_err(|problem| Error::InvalidModel { body: i, problem })?;
         self.inertias[i] = inertia;
@@ -284,8 +289,13 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
     /// Changes joint `i`'s placement in its parent (a link length).
     ///
     /// # Errors
-    /// [`Error::InvalidModel`] for a non-finite or non-orthonormal placement.
+    /// [`Error::BodyOutOfRange`] for `i ≥ NB`; [`Error::InvalidModel`] for a
+    /// non-finite placement, a rotation that is not orthonormal, or a
+    /// reflection; the model is then unchanged.
     pub fn set_placement(&mut self, i: usize, placement: G::Transform<S>) -> Result<()> {
+        if i >= NB {
+            return Err(Error::BodyOutOfRange { body: i });
+        }
         G::validate_transform(&placement)
             .map_err(|problem| Error::InvalidModel { body: i, problem })?;
         self.placements[i] = placement;
@@ -519,17 +529,51 @@ pub(crate) fn check_finite<S: Scalar>(x: &[S], quantity: Quantity) -> Result<()>
     }
 }
 
+/// Returns an error naming the first non-finite entry of a result `x`
+/// computed from finite inputs: the inputs overflowed the scalar type.
+pub(crate) fn check_result<S: Scalar>(x: &[S], quantity: Quantity) -> Result<()> {
+    match x.iter().position(|v| !v.is_finite()) {
+        Some(index) => Err(Error::NonFiniteResult { quantity, index }),
+        None => Ok(()),
+    }
+}
+
 /// The physical checks of one geometry, used by [`Model::validate`].
 pub(crate) fn validate_inertia_3d<S: Scalar>(
     i: &Inertia<S>,
 ) -> core::result::Result<(), ModelProblem> {
+    if !i.is_finite() {
+        return Err(ModelProblem::NonFiniteParameter);
+    }
     let m = i.mass.to_f64();
-    if !(i.is_finite() && m >= 0.0) {
+    if m < 0.0 {
         return Err(ModelProblem::InvalidMass);
     }
+    // The algorithms form m c, m |c|² (the inertia about the body's
+    // origin) and traces; finite parameters whose sums or products
+    // overflow are refused.
+    let c = i.com.norm_squared();
     let r = &i.rot_inertia;
-    let (xx, yy, zz) = (r.xx.to_f64(), r.yy.to_f64(), r.zz.to_f64());
-    let (xy, xz, yz) = (r.xy.to_f64(), r.xz.to_f64(), r.yz.to_f64());
+    let trace = r.xx + r.yy + r.zz;
+    if !(i.mass * c).is_finite() || !trace.is_finite() || !i.rot_inertia_at_origin().is_finite() {
+        return Err(ModelProblem::Overflow);
+    }
+    let r = &i.rot_inertia;
+    // Scaled to the largest entry, so that the minors below cannot
+    // overflow (an inertia with 1e308 entries would otherwise pass as NaN).
+    let largest = [r.xx, r.yy, r.zz, r.xy, r.xz, r.yz]
+        .iter()
+        .fold(f64::MIN_POSITIVE, |m, v| m.max(v.to_f64().abs()));
+    let (xx, yy, zz) = (
+        r.xx.to_f64() / largest,
+        r.yy.to_f64() / largest,
+        r.zz.to_f64() / largest,
+    );
+    let (xy, xz, yz) = (
+        r.xy.to_f64() / largest,
+        r.xz.to_f64() / largest,
+        r.yz.to_f64() / largest,
+    );
     // Positive semi-definite through the leading minors, with a small slack
     // for rounding, and the triangle inequality of the diagonal.
     let scale = (xx.abs() + yy.abs() + zz.abs()).max(f64::MIN_POSITIVE);
@@ -549,12 +593,13 @@ pub(crate) fn validate_inertia_3d<S: Scalar>(
     }
 }
 
-/// Checks a 3-D placement: finite and orthonormal rotation.
+/// Checks a 3-D placement: finite, and a proper rotation (orthonormal,
+/// determinant +1).
 pub(crate) fn validate_transform_3d<S: Scalar>(
     x: &Transform<S>,
 ) -> core::result::Result<(), ModelProblem> {
     if !x.is_finite() {
-        return Err(ModelProblem::RotationNotOrthonormal);
+        return Err(ModelProblem::NonFiniteParameter);
     }
     let rtr = x.rot.tr_mul_mat(&x.rot);
     let tol = 1e3 * S::EPSILON;
@@ -565,6 +610,14 @@ pub(crate) fn validate_transform_3d<S: Scalar>(
                 return Err(ModelProblem::RotationNotOrthonormal);
             }
         }
+    }
+    // Orthonormal, so the determinant is ±1: the sign tells a reflection.
+    let m = &x.rot.m;
+    let det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+        - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+        + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    if det.to_f64() < 0.0 {
+        return Err(ModelProblem::Reflection);
     }
     Ok(())
 }

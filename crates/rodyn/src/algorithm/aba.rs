@@ -20,7 +20,7 @@ use crate::algorithm::rnea::check_external;
 use crate::data::Data;
 use crate::error::{Error, Quantity, Result};
 use crate::joint::{JointModel, MAX_JOINT_NV};
-use crate::model::{check_finite, Model};
+use crate::model::{check_finite, check_result, Model};
 use crate::space::{
     ArticulatedInertia, BodyInertia, MotionVector, RigidTransform, Space, VectorOps,
 };
@@ -58,6 +58,7 @@ pub fn aba<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: 
     velocity_and_bias_pass(model, data, q, v, f_ext);
     backward_pass(model, data, tau)?;
     forward_acceleration_pass(model, data);
+    check_result(&data.ddq, Quantity::Acceleration)?;
     Ok(&data.ddq)
 }
 

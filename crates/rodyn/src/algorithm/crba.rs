@@ -60,9 +60,9 @@ use crate::algorithm::kinematics::{
 use crate::algorithm::ltdl::supporting_ranges;
 use crate::algorithm::rnea;
 use crate::data::Data;
-use crate::error::Result;
+use crate::error::{Quantity, Result};
 use crate::joint::{JointModel, MAX_JOINT_NV};
-use crate::model::Model;
+use crate::model::{check_result, Model};
 use crate::space::{RigidTransform, Space, VectorOps};
 use crate::topology::Topology;
 use crate::Scalar;
@@ -105,6 +105,10 @@ pub fn crba<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
     if !upper_written {
         mirror_lower(&mut data.mass_matrix);
     }
+    // The diagonal holds every body's composite inertia: an overflow
+    // anywhere in a subtree reaches it.
+    let diagonal: [S; NV] = core::array::from_fn(|k| data.mass_matrix[k][k]);
+    check_result(&diagonal, Quantity::MassMatrix)?;
     Ok(&data.mass_matrix)
 }
 

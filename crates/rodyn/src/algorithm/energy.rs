@@ -2,8 +2,8 @@
 
 use crate::algorithm::kinematics::{check_state, forward_kinematics, velocity_pass};
 use crate::data::Data;
-use crate::error::Result;
-use crate::model::Model;
+use crate::error::{Quantity, Result};
+use crate::model::{check_result, Model};
 use crate::space::{BodyInertia, MotionVector, Space};
 use crate::Scalar;
 
@@ -29,7 +29,9 @@ pub fn kinetic_energy<S: Scalar, const NB: usize, const NQ: usize, const NV: usi
     for (armature, v) in model.armature().iter().zip(v) {
         twice += *armature * *v * *v;
     }
-    Ok(twice * S::from_f64(0.5))
+    let energy = twice * S::from_f64(0.5);
+    check_result(&[energy], Quantity::Energy)?;
+    Ok(energy)
 }
 
 /// Potential energy in the gravity field, `-Σ mᵢ g · cᵢ` (J), zero when
@@ -52,6 +54,7 @@ pub fn potential_energy<S: Scalar, const NB: usize, const NQ: usize, const NV: u
             .act(&data.o_m_i[i])
             .potential_energy(model.gravity());
     }
+    check_result(&[energy], Quantity::Energy)?;
     Ok(energy)
 }
 

@@ -23,7 +23,7 @@ use crate::algorithm::rnea::{check_external, nonlinear_effects};
 use crate::algorithm::{aba::aba, crba, ltdl};
 use crate::data::Data;
 use crate::error::{Quantity, Result};
-use crate::model::{check_finite, Model};
+use crate::model::{check_finite, check_result, Model};
 use crate::space::Space;
 use crate::Scalar;
 
@@ -125,6 +125,7 @@ impl ForwardDynamics for Crba {
             check_external(f_ext.map(|f| &f[..]))?;
             crba::bias_and_mass_lower(model, data, q, v, f_ext);
             data.h = data.tau;
+            check_result(&data.h, Quantity::Torque)?;
         } else {
             data.h = *nonlinear_effects(model, data, q, v, f_ext)?;
             // RNEA left the joint transforms at q in `li_m_i`.
@@ -135,7 +136,7 @@ impl ForwardDynamics for Crba {
         for (k, r) in rhs.iter_mut().enumerate() {
             *r = tau[k] - data.h[k];
         }
-        ltdl::ltdl_solve(model, data, &mut rhs);
+        ltdl::ltdl_solve(model, data, &mut rhs)?;
         data.ddq = rhs;
         Ok(&data.ddq)
     }

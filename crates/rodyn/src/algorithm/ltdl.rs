@@ -20,8 +20,8 @@
 //! forward dynamics -18 % instructions).
 
 use crate::data::Data;
-use crate::error::{Error, Result};
-use crate::model::Model;
+use crate::error::{Error, Quantity, Result};
+use crate::model::{check_finite, check_result, Model};
 use crate::space::Space;
 use crate::topology::Topology;
 use crate::Scalar;
@@ -354,11 +354,18 @@ fn factor_by_rows<S: Scalar, const NB: usize, const NV: usize>(
 /// Solves `M x = b` in place with the factors from [`ltdl_factor`].
 ///
 /// Inputs: `b` (NV); `data.ltdl` valid. On return `b` holds `x`.
+///
+/// # Errors
+/// [`Error::NonFinite`](crate::Error::NonFinite) for a non-finite `b`
+/// (left unchanged), and
+/// [`Error::NonFiniteResult`](crate::Error::NonFiniteResult) when the
+/// solution overflows (`b` then holds it).
 pub fn ltdl_solve<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     model: &Model<S, NB, NQ, NV, G>,
     data: &Data<S, NB, NV, G>,
     b: &mut [S; NV],
-) {
+) -> Result<()> {
+    check_finite(b, Quantity::Acceleration)?;
     let topology = model.topology();
     let h = &data.ltdl;
     // Lᵀ y = b, leaves to root: b[k] -= Σ L[s][k] b[s] over the s below k.
@@ -393,6 +400,7 @@ pub fn ltdl_solve<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, 
             (b_below, l) => sub_scaled(b_below, b_to_k[k], l),
         }
     }
+    check_result(b, Quantity::Acceleration)
 }
 
 #[cfg(test)]

@@ -9,7 +9,7 @@ use crate::algorithm::kinematics::{body_transform_with, check_state, joint_rates
 use crate::data::Data;
 use crate::error::{Quantity, Result};
 use crate::joint::JointModel;
-use crate::model::{check_finite, Model};
+use crate::model::{check_finite, check_result, Model};
 use crate::space::{BodyInertia, RigidTransform, Space, VectorOps};
 use crate::Scalar;
 
@@ -52,6 +52,7 @@ pub fn rnea<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
     check_external(f_ext.map(|f| &f[..]))?;
     forward_pass(model, data, q, v, Some(a), f_ext);
     backward_force_pass(model, data, Some(a));
+    check_result(&data.tau, Quantity::Torque)?;
     Ok(&data.tau)
 }
 
@@ -226,6 +227,7 @@ pub fn nonlinear_effects<
     check_external(f_ext.map(|f| &f[..]))?;
     forward_pass(model, data, q, v, None, f_ext);
     backward_force_pass(model, data, None);
+    check_result(&data.tau, Quantity::Torque)?;
     Ok(&data.tau)
 }
 

@@ -85,7 +85,8 @@ pub use spring::{LinearSpring, NonlinearSpring};
 
 use crate::algorithm::forward_dynamics::ForwardDynamics;
 use crate::algorithm::kinematics::forward_kinematics_velocity;
-use crate::error::{DriveProblem, Error, Result};
+use crate::error::{DriveProblem, Error, Quantity, Result};
+use crate::model::{check_finite, check_result};
 use crate::space::{Space, VectorOps};
 use crate::{Data, Model, Scalar};
 
@@ -298,8 +299,9 @@ tuple_element!(A: 0, B: 1, C: 2, D: 3, E: 4, F: 5);
 /// `data`; `out` holds the total drive forces.
 ///
 /// # Errors
-/// Invalid or non-finite state, and [`Error::InvalidDrive`] for an element
-/// that does not fit the model or `w`.
+/// Invalid or non-finite state or inputs `w`, [`Error::InvalidDrive`] for
+/// an element that does not fit the model or `w` or has a bad parameter,
+/// and [`Error::NonFiniteResult`] for forces that overflow.
 pub fn drive_forces<S, G, E, const NB: usize, const NQ: usize, const NV: usize>(
     model: &Model<S, NB, NQ, NV, G>,
     data: &mut Data<S, NB, NV, G>,
@@ -314,10 +316,22 @@ where
     G: Space,
     E: ForceElement<S, G, NB, NV> + ?Sized,
 {
+    check_finite(w, Quantity::DriveInput)?;
     forward_kinematics_velocity(model, data, q, v)?;
     out.clear();
     let state = DriveState { data, q: &q[..], v };
-    elements.add_forces(&state, w, out)
+    elements.add_forces(&state, w, out)?;
+    // One check per output: an element given finite inputs may still
+    // overflow (a spring stretched 1e200 m) or meet a parameter it does
+    // not check.
+    check_result(&out.tau, Quantity::Torque)?;
+    match out.f_ext.iter().position(|f| !f.is_finite()) {
+        Some(index) => Err(Error::NonFiniteResult {
+            quantity: Quantity::ExternalForce,
+            index,
+        }),
+        None => Ok(()),
+    }
 }
 
 /// Joint accelerations `q̈ = M⁻¹ (τ + τ_drive - h + Jᵀ f_drive)` under the

@@ -53,7 +53,7 @@
 use crate::drive::geometry::PointGeometry;
 use crate::drive::path::PathKinematics;
 use crate::drive::{read_input, DriveForces, DriveState, ForceElement, Path};
-use crate::error::Result;
+use crate::error::{DriveProblem, Error, Quantity, Result};
 use crate::Scalar;
 
 /// Cosine of the largest pennation angle (about 84.3°), as OpenSim's default.
@@ -207,6 +207,43 @@ impl<S: Scalar> ThelenParameters<S> {
         }
     }
 
+    /// Checks every parameter: finite, and in its physical range (forces,
+    /// the tendon slack length and the pennation angle not negative, the
+    /// pennation below a right angle, the other lengths, speeds, time
+    /// constants and shape factors positive, the lengthening force above
+    /// the isometric one).
+    ///
+    /// # Errors
+    /// [`Error::InvalidDrive`] with [`DriveProblem::MuscleParameter`]
+    /// naming the first bad field.
+    pub fn validate(&self) -> Result<()> {
+        let f = |x: S| x.to_f64();
+        let fields = [
+            (f(self.max_isometric_force), 0.0, false),
+            (f(self.optimal_fiber_length), 0.0, true),
+            (f(self.tendon_slack_length), 0.0, false),
+            (f(self.pennation_angle_at_optimal), 0.0, false),
+            (f(self.max_contraction_velocity), 0.0, true),
+            (f(self.activation_time_constant), 0.0, true),
+            (f(self.deactivation_time_constant), 0.0, true),
+            (f(self.passive_shape_factor), 0.0, true),
+            (f(self.passive_strain_at_one), 0.0, true),
+            (f(self.active_shape_factor), 0.0, true),
+            (f(self.force_velocity_shape), 0.0, true),
+            (f(self.max_lengthening_force), 1.0, true),
+        ];
+        let bad = fields
+            .iter()
+            .position(|&(x, low, strict)| !x.is_finite() || x < low || (strict && x == low));
+        let right_angle = f(self.pennation_angle_at_optimal) >= core::f64::consts::FRAC_PI_2;
+        match bad.or(right_angle.then_some(3)) {
+            Some(index) => Err(Error::InvalidDrive {
+                problem: DriveProblem::MuscleParameter { index },
+            }),
+            None => Ok(()),
+        }
+    }
+
     /// Activation rate `ȧ` (1/s) for excitation `u` and activation `a`
     /// (both clamped to `[0, 1]`).
     #[must_use]
@@ -343,6 +380,18 @@ impl<S: Scalar, G: PointGeometry, const K: usize> ThelenMuscle<S, G, K> {
     }
 }
 
+/// A muscle's activation `w[input]` must be finite.
+fn check_activation<S: Scalar>(activation: S, input: usize) -> Result<()> {
+    if activation.is_finite() {
+        Ok(())
+    } else {
+        Err(Error::NonFinite {
+            quantity: Quantity::DriveInput,
+            index: input,
+        })
+    }
+}
+
 impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usize>
     ForceElement<S, G, NB, NV> for ThelenMuscle<S, G, K>
 {
@@ -353,8 +402,16 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
         out: &mut DriveForces<S, G, NB, NV>,
     ) -> Result<()> {
         let activation = read_input(w, self.input)?;
+        check_activation(activation, self.input)?;
+        self.params.validate()?;
         let kin = self.path.kinematics(state.data)?;
         let tension = self.state_on(&kin, activation).tension;
+        if !tension.is_finite() {
+            return Err(Error::NonFiniteResult {
+                quantity: Quantity::ExternalForce,
+                index: self.input,
+            });
+        }
         self.path
             .add_tension(&kin, tension, state.data, &mut out.f_ext)
     }
@@ -369,6 +426,8 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
         if input != self.input {
             return Ok(());
         }
+        check_activation(activation, self.input)?;
+        self.params.validate()?;
         let kin = self.path.kinematics(state.data)?;
         let slope = self.state_on(&kin, activation).tension_per_activation;
         self.path

@@ -64,8 +64,12 @@ impl Space for Planar {
     }
     fn validate_inertia<S: Scalar>(i: &PlanarInertia<S>) -> Result<(), ModelProblem> {
         let ok = |x: S| x.is_finite() && x.to_f64() >= 0.0;
-        if !ok(i.mass) || !i.com.is_finite() {
+        if !(i.mass.is_finite() && i.com.is_finite() && i.izz.is_finite()) {
+            Err(ModelProblem::NonFiniteParameter)
+        } else if !ok(i.mass) {
             Err(ModelProblem::InvalidMass)
+        } else if !(i.mass * i.com.norm_squared() + i.izz).is_finite() {
+            Err(ModelProblem::Overflow)
         } else if !ok(i.izz) {
             Err(ModelProblem::InvalidInertia)
         } else {
@@ -74,7 +78,9 @@ impl Space for Planar {
     }
     fn validate_transform<S: Scalar>(x: &PlanarTransform<S>) -> Result<(), ModelProblem> {
         let n = (x.cos * x.cos + x.sin * x.sin).to_f64();
-        if x.is_finite() && (n - 1.0).abs() <= 1e3 * S::EPSILON {
+        if !x.is_finite() {
+            Err(ModelProblem::NonFiniteParameter)
+        } else if (n - 1.0).abs() <= 1e3 * S::EPSILON {
             Ok(())
         } else {
             Err(ModelProblem::RotationNotOrthonormal)

@@ -28,7 +28,7 @@
 use crate::algorithm::kinematics::forward_kinematics_velocity;
 use crate::data::Data;
 use crate::endpoint::Endpoint;
-use crate::error::Result;
+use crate::error::{Error, Quantity, Result};
 use crate::model::Model;
 use crate::spatial::{Force, Spatial, Vec3};
 use crate::Scalar;
@@ -75,13 +75,47 @@ pub struct ContactReport<S> {
 }
 
 impl<S: Scalar> GroundContact<S> {
+    /// Checks the parameters: finite; stiffness, damping and friction not
+    /// negative; a positive slip scale.
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`] with [`Quantity::Contact`] naming the first bad
+    /// parameter (index 0: stiffness, 1: damping, 2: friction, 3: slip
+    /// scale).
+    pub fn validate(&self) -> Result<()> {
+        let (stiffness, damping) = match self.normal {
+            NormalLaw::LinearSpringDamper { stiffness, damping }
+            | NormalLaw::HuntCrossley { stiffness, damping } => (stiffness, damping),
+        };
+        let parameters = [stiffness, damping, self.friction, self.slip_scale];
+        let valid = |k: usize, x: S| {
+            let lowest = if k == 3 { f64::MIN_POSITIVE } else { 0.0 };
+            x.is_finite() && x.to_f64() >= lowest
+        };
+        match parameters
+            .iter()
+            .enumerate()
+            .position(|(k, &x)| !valid(k, x))
+        {
+            Some(index) => Err(Error::NonFinite {
+                quantity: Quantity::Contact,
+                index,
+            }),
+            None => Ok(()),
+        }
+    }
+
     /// The force (world frame, N) on a point at world position `p` moving
-    /// at world velocity `p_dot`.
+    /// at world velocity `p_dot`; non-finite for a non-finite input.
     #[must_use]
     pub fn force_at(&self, p: &Vec3<S>, p_dot: &Vec3<S>) -> Vec3<S> {
         let depth = -p.z;
-        // NaN compares unordered and falls through to no force as well.
-        if depth.partial_cmp(&S::ZERO) != Some(core::cmp::Ordering::Greater) {
+        // Out of contact only when the depth says so: a NaN height gives a
+        // NaN force, which `add_forces` reports, rather than "no contact".
+        if depth
+            .partial_cmp(&S::ZERO)
+            .is_some_and(|o| o != core::cmp::Ordering::Greater)
+        {
             return Vec3::ZERO;
         }
         let depth_rate = -p_dot.z;
@@ -116,7 +150,11 @@ impl<S: Scalar> GroundContact<S> {
     /// skipped.
     ///
     /// # Errors
-    /// Those of [`forward_kinematics_velocity`].
+    /// Those of [`forward_kinematics_velocity`] and [`GroundContact::validate`];
+    /// [`Error::BodyOutOfRange`] for a point on a body the model does not
+    /// have; [`Error::NonFinite`] with [`Quantity::Contact`] and the point's
+    /// index for a non-finite point, [`Error::NonFiniteResult`] for a force
+    /// that overflows. `f_ext` may hold the forces of the points before.
     #[allow(clippy::too_many_arguments)]
     pub fn add_forces<const NB: usize, const NQ: usize, const NV: usize>(
         &self,
@@ -128,9 +166,19 @@ impl<S: Scalar> GroundContact<S> {
         f_ext: &mut [Force<S>; NB],
         mut reports: Option<&mut [ContactReport<S>]>,
     ) -> Result<()> {
+        self.validate()?;
         forward_kinematics_velocity(model, data, q, v)?;
         for (n, point) in points.iter().enumerate() {
             let Some(body) = point.body else { continue };
+            if body >= NB {
+                return Err(Error::BodyOutOfRange { body });
+            }
+            if !point.position.is_finite() {
+                return Err(Error::NonFinite {
+                    quantity: Quantity::Contact,
+                    index: n,
+                });
+            }
             let pose = &data.o_m_i[body];
             let twist = &data.v[body];
             let p_local = point.position;
@@ -139,6 +187,12 @@ impl<S: Scalar> GroundContact<S> {
             let p_dot_local = twist.lin + twist.ang.cross(&p_local);
             let p_dot_world = pose.rot.mul_vec(&p_dot_local);
             let force_world = self.force_at(&p_world, &p_dot_world);
+            if !force_world.is_finite() {
+                return Err(Error::NonFiniteResult {
+                    quantity: Quantity::Contact,
+                    index: n,
+                });
+            }
             let force_local = pose.rot.tr_mul_vec(&force_world);
             f_ext[body] += Force::at_point(force_local, &p_local);
             if let Some(out) = reports.as_deref_mut().and_then(|r| r.get_mut(n)) {

@@ -60,6 +60,12 @@ impl<S: Scalar, const NQ: usize, const NV: usize, const NZ: usize> State<S, NQ, 
     /// ([`Quantity::Configuration`]), of `z` ([`Quantity::AuxiliaryState`])
     /// or of `v` ([`Quantity::Velocity`]).
     pub fn check_finite(&self) -> Result<()> {
+        if !self.t.is_finite() {
+            return Err(Error::NonFinite {
+                quantity: Quantity::Time,
+                index: 0,
+            });
+        }
         if let Some(index) = self.q.iter().position(|x| !x.is_finite()) {
             return Err(Error::NonFinite {
                 quantity: Quantity::Configuration,

@@ -1,6 +1,6 @@
 //! The two first-order Euler schemes.
 
-use super::{commit, derivatives, Integrator};
+use super::{check_time, commit, derivatives, Integrator};
 use crate::algorithm::forward_dynamics::ForwardDynamics;
 use crate::data::Data;
 use crate::error::Result;
@@ -51,6 +51,7 @@ impl Integrator for ExplicitEuler {
         G: ConfigurationRate,
     {
         let State { t, q, v, z } = *state;
+        check_time(t, dt)?;
         let q_dyn = for_dynamics(model, self.update, &q);
         let (a, z_rate) = derivatives(&method, model, data, loads, t, &q_dyn, &v, &z)?;
         let next = State {
@@ -103,6 +104,7 @@ impl Integrator for SemiImplicitEuler {
         G: ConfigurationRate,
     {
         let State { t, q, v, z } = *state;
+        check_time(t, dt)?;
         let q_dyn = for_dynamics(model, self.update, &q);
         let (a, z_rate) = derivatives(&method, model, data, loads, t, &q_dyn, &v, &z)?;
         let v_next: [S; NV] = core::array::from_fn(|k| v[k] + a[k] * dt);

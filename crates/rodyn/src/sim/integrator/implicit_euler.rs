@@ -1,6 +1,6 @@
 //! Linearly implicit (backward) Euler for stiff springs, dampers and contacts.
 
-use super::{commit, derivatives, Integrator};
+use super::{check_time, commit, derivatives, Integrator};
 use crate::algorithm::forward_dynamics::ForwardDynamics;
 use crate::data::Data;
 use crate::error::{Error, Quantity, Result};
@@ -71,6 +71,7 @@ impl Integrator for ImplicitEuler {
         G: ConfigurationRate,
     {
         let State { t, q, v, z } = *state;
+        check_time(t, dt)?;
         let t1 = t + dt;
         let q_dyn = for_dynamics(model, self.update, &q);
         let (a0, zr0) = derivatives(&method, model, data, loads, t1, &q_dyn, &v, &z)?;

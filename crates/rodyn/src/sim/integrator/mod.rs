@@ -72,7 +72,8 @@ pub trait Integrator {
     /// Any error of the loads or the dynamics at any evaluation (a singular
     /// articulated inertia, a mass matrix that is not positive definite, a
     /// configuration off its manifold), or [`Error::NonFinite`](crate::Error::NonFinite)
-    /// when the new state would not be finite. On error `state` is unchanged.
+    /// for a non-finite time or step (`Quantity::Time`) or when the new
+    /// state would not be finite. On error `state` is unchanged.
     #[allow(clippy::too_many_arguments)]
     fn step<F, L, S, const NB: usize, const NQ: usize, const NV: usize, const NZ: usize, G>(
         &mut self,
@@ -124,6 +125,20 @@ where
     loads.loads_and_rates(model, data, t, q, v, z, &mut tau, &mut f_ext, &mut z_rate)?;
     let acceleration = *F::forward_dynamics(model, data, q, v, &tau, Some(&f_ext))?;
     Ok((acceleration, z_rate))
+}
+
+/// The step's time `t` and length `dt` must be finite: a NaN in either
+/// would otherwise surface later as a bad configuration or a NaN time.
+#[inline]
+pub(crate) fn check_time<S: Scalar>(t: S, dt: S) -> Result<()> {
+    if t.is_finite() && dt.is_finite() {
+        Ok(())
+    } else {
+        Err(crate::Error::NonFinite {
+            quantity: crate::error::Quantity::Time,
+            index: 0,
+        })
+    }
 }
 
 /// Writes the new state only when it is finite.

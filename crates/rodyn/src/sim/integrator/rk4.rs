@@ -1,6 +1,6 @@
 //! The classical fourth-order Runge-Kutta scheme.
 
-use super::{commit, derivatives, Integrator};
+use super::{check_time, commit, derivatives, Integrator};
 use crate::algorithm::forward_dynamics::ForwardDynamics;
 use crate::data::Data;
 use crate::error::Result;
@@ -63,6 +63,7 @@ impl Integrator for Rk4 {
         G: ConfigurationRate,
     {
         let State { t, q, v, z } = *state;
+        check_time(t, dt)?;
         let half = dt * S::from_f64(0.5);
         let embedded = matches!(self.update, ConfigurationUpdate::Embedded { .. });
         // Stage k: configuration q_k, velocity v_k, auxiliary states z_k; its
