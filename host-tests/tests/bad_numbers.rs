@@ -1,0 +1,400 @@
+//! The bad inputs of the reliability review (issue 22), tried on the public
+//! algorithms, setters, drives, contacts and integrators: each gives `Err`
+//! naming what is wrong, never `Ok` with a NaN or an infinity, and never a
+//! panic.
+
+use rodyn::algorithm::crba::crba;
+use rodyn::algorithm::energy::{kinetic_energy, potential_energy};
+use rodyn::algorithm::forward_dynamics::{Aba, Crba, ForwardDynamics};
+use rodyn::algorithm::ltdl::{ltdl_factor, ltdl_solve};
+use rodyn::algorithm::rnea::{nonlinear_effects, rnea};
+use rodyn::drive::{drive_forces, DriveForces, ThelenMuscle};
+use rodyn::error::{DriveProblem, ModelProblem, Quantity};
+use rodyn::prelude::*;
+use rodyn::sim::contact::{GroundContact, NormalLaw};
+use rodyn::sim::{ExplicitEuler, Integrator, NoLoads, Rk4, SemiImplicitEuler, State};
+use rodyn::Endpoint;
+use rodyn_scenarios::muscle_robot::{self as robot, RobotForces};
+use rodyn_scenarios::panda;
+use std::panic::{catch_unwind, AssertUnwindSafe};
+
+const NV: usize = panda::NV;
+const Q: [f64; NV] = [0.1, -0.4, 0.3, -1.8, 0.2, 1.4, 0.6];
+
+/// Runs `f`, fails the test on a panic, and returns its result.
+fn no_panic<T>(what: &str, f: impl FnOnce() -> T) -> T {
+    catch_unwind(AssertUnwindSafe(f)).unwrap_or_else(|_| panic!("{what} panicked"))
+}
+
+/// The result is an error and not `Ok` with a non-finite value.
+fn assert_err<T: std::fmt::Debug>(what: &str, result: rodyn::Result<T>) -> Error {
+    match result {
+        Ok(value) => panic!("{what}: Ok({value:?}) instead of an error"),
+        Err(error) => error,
+    }
+}
+
+#[test]
+fn huge_velocities_are_errors_in_every_algorithm() {
+    for speed in [1e154, 1e200, f64::MAX] {
+        let model = panda::MODEL_F64;
+        let mut data = Data::new();
+        let v = [speed; NV];
+        let zero = [0.0; NV];
+        let errors = [
+            assert_err(
+                "rnea",
+                no_panic("rnea", || {
+                    rnea(&model, &mut data, &Q, &v, &zero, None).copied()
+                }),
+            ),
+            assert_err(
+                "aba",
+                no_panic("aba", || {
+                    Aba::forward_dynamics(&model, &mut data, &Q, &v, &zero, None).copied()
+                }),
+            ),
+            assert_err(
+                "crba fd",
+                no_panic("crba fd", || {
+                    Crba::forward_dynamics(&model, &mut data, &Q, &v, &zero, None).copied()
+                }),
+            ),
+            assert_err(
+                "nle",
+                no_panic("nle", || {
+                    nonlinear_effects(&model, &mut data, &Q, &v, None).copied()
+                }),
+            ),
+            assert_err(
+                "kinetic energy",
+                no_panic("ke", || kinetic_energy(&model, &mut data, &Q, &v)),
+            ),
+        ];
+        for error in errors {
+            assert!(
+                matches!(
+                    error,
+                    Error::NonFiniteResult { .. } | Error::MassMatrixNotPositiveDefinite { .. }
+                ),
+                "{speed:e}: {error:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn huge_f32_velocities_and_torques_are_errors() {
+    let model = panda::MODEL_F32;
+    let mut data = Data::new();
+    let q = Q.map(|x| x as f32);
+    let zero = [0.0_f32; NV];
+    let v = [1e19_f32; NV];
+    assert_err(
+        "rnea f32",
+        rnea(&model, &mut data, &q, &v, &zero, None).copied(),
+    );
+    assert_err(
+        "aba f32",
+        Aba::forward_dynamics(&model, &mut data, &q, &v, &zero, None).copied(),
+    );
+    let tau = [1e37_f32; NV];
+    assert_err(
+        "aba f32 torque",
+        Aba::forward_dynamics(&model, &mut data, &q, &zero, &tau, None).copied(),
+    );
+    assert_err(
+        "crba f32 torque",
+        Crba::forward_dynamics(&model, &mut data, &q, &zero, &tau, None).copied(),
+    );
+}
+
+#[test]
+fn setters_refuse_out_of_range_indices_without_panicking() {
+    let mut model = panda::MODEL_F64;
+    let inertia = *model.inertia(0);
+    let placement = *model.placement(0);
+    let error = no_panic("set_inertia", || model.set_inertia(panda::NB, inertia)).unwrap_err();
+    assert_eq!(error, Error::BodyOutOfRange { body: panda::NB });
+    let error = no_panic("set_placement", || model.set_placement(99, placement)).unwrap_err();
+    assert_eq!(error, Error::BodyOutOfRange { body: 99 });
+    assert!(error.to_string().contains("body 99"), "{error}");
+}
+
+#[test]
+fn setters_name_what_is_wrong() {
+    let mut model = panda::MODEL_F64;
+    let invalid = |problem| Error::InvalidModel { body: 2, problem };
+    let base = *model.inertia(2);
+
+    // A centre of mass whose m |c|² overflows.
+    let far = Inertia::new(base.mass, Vec3::new(1e200, 0.0, 0.0), base.rot_inertia);
+    assert_eq!(
+        model.set_inertia(2, far),
+        Err(invalid(ModelProblem::Overflow))
+    );
+    // NaN is a non-finite parameter, not a bad mass.
+    let nan = Inertia::new(base.mass, Vec3::new(f64::NAN, 0.0, 0.0), base.rot_inertia);
+    assert_eq!(
+        model.set_inertia(2, nan),
+        Err(invalid(ModelProblem::NonFiniteParameter))
+    );
+    // Entries of 1.77e308 no longer overflow the eigenvalue test into a pass.
+    let huge = Inertia::new(
+        1.0,
+        Vec3::ZERO,
+        Sym3::diagonal(1.77e308, 1.77e308, 1.77e308),
+    );
+    assert!(model.set_inertia(2, huge).is_err());
+    let huge_off = Inertia::new(
+        1.0,
+        Vec3::ZERO,
+        Sym3::new(1.0, 1.77e308, 0.0, 1.0, 0.0, 1.0),
+    );
+    assert_eq!(
+        model.set_inertia(2, huge_off),
+        Err(invalid(ModelProblem::InvalidInertia))
+    );
+    assert_eq!(
+        *model.inertia(2),
+        base,
+        "a refused inertia leaves the model unchanged"
+    );
+
+    // A reflection: orthonormal, determinant -1.
+    let mut reflection = *model.placement(2);
+    reflection.rot = Mat3::from_rows([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, -1.0]]);
+    assert_eq!(
+        model.set_placement(2, reflection),
+        Err(invalid(ModelProblem::Reflection))
+    );
+    let mut nan_placement = *model.placement(2);
+    nan_placement.trans.x = f64::NAN;
+    assert_eq!(
+        model.set_placement(2, nan_placement),
+        Err(invalid(ModelProblem::NonFiniteParameter))
+    );
+
+    // A far placement is finite and accepted; the algorithms then report
+    // the overflow instead of returning NaN.
+    let mut far_placement = *model.placement(2);
+    far_placement.trans.x = 1e300;
+    model.set_placement(2, far_placement).unwrap();
+    let mut data = Data::new();
+    let error = assert_err(
+        "rnea far",
+        rnea(&model, &mut data, &Q, &[1.0; NV], &[0.0; NV], None).copied(),
+    );
+    assert!(matches!(error, Error::NonFiniteResult { .. }), "{error:?}");
+    // The potential energy stays finite there (m g z of about 1e301 J):
+    // whatever is returned is finite or an error.
+    match potential_energy(&model, &mut data, &Q) {
+        Ok(energy) => assert!(energy.is_finite(), "{energy}"),
+        Err(error) => assert!(matches!(error, Error::NonFiniteResult { .. }), "{error:?}"),
+    }
+}
+
+#[test]
+fn ltdl_solve_refuses_a_nan_right_hand_side() {
+    let model = panda::MODEL_F64;
+    let mut data = Data::new();
+    crba(&model, &mut data, &Q).unwrap();
+    ltdl_factor(&model, &mut data).unwrap();
+    let mut b = [1.0; NV];
+    b[3] = f64::NAN;
+    let error = ltdl_solve(&model, &data, &mut b).unwrap_err();
+    assert_eq!(
+        error,
+        Error::NonFinite {
+            quantity: Quantity::Acceleration,
+            index: 3
+        }
+    );
+}
+
+#[test]
+fn integrators_refuse_a_nan_time_or_step() {
+    let model = panda::MODEL_F64;
+    let mut data = Data::new();
+    for (t, dt) in [(f64::NAN, 1e-3), (0.0, f64::NAN), (f64::INFINITY, 1e-3)] {
+        let start = State::new(Q, [0.0; NV]);
+        let mut state = State { t, ..start };
+        let before = state;
+        let results = [
+            ExplicitEuler::default().step(Aba, &model, &mut data, &mut state, dt, &mut NoLoads),
+            SemiImplicitEuler::default().step(Aba, &model, &mut data, &mut state, dt, &mut NoLoads),
+            Rk4::default().step(Aba, &model, &mut data, &mut state, dt, &mut NoLoads),
+        ];
+        for result in results {
+            assert_eq!(
+                result,
+                Err(Error::NonFinite {
+                    quantity: Quantity::Time,
+                    index: 0
+                }),
+                "t {t}, dt {dt}"
+            );
+        }
+        assert!(
+            state.q == before.q && state.v == before.v,
+            "a failed step leaves the state"
+        );
+    }
+}
+
+#[test]
+fn drives_refuse_nan_inputs_and_bad_muscle_parameters() {
+    let model = robot::MODEL_F64;
+    let mut data = Data::new();
+    let mut forces = RobotForces::new();
+    let (q, v) = ([0.3, 0.5], [0.1, -0.2]);
+    let muscles = robot::MUSCLES_F64;
+    let error = drive_forces(
+        &model,
+        &mut data,
+        &q,
+        &v,
+        &muscles,
+        &[0.2, f64::NAN, 0.1, 0.1],
+        &mut forces,
+    )
+    .unwrap_err();
+    assert_eq!(
+        error,
+        Error::NonFinite {
+            quantity: Quantity::DriveInput,
+            index: 1
+        }
+    );
+
+    for (field, value) in [(1, 0.0), (4, 0.0), (5, -0.01), (11, 0.5)] {
+        let mut bad: [ThelenMuscle<f64, _, 3>; 4] = muscles;
+        let p = &mut bad[2].params;
+        match field {
+            1 => p.optimal_fiber_length = value,
+            4 => p.max_contraction_velocity = value,
+            5 => p.activation_time_constant = value,
+            _ => p.max_lengthening_force = value,
+        }
+        let error =
+            drive_forces(&model, &mut data, &q, &v, &bad, &[0.2; 4], &mut forces).unwrap_err();
+        assert_eq!(
+            error,
+            Error::InvalidDrive {
+                problem: DriveProblem::MuscleParameter { index: field }
+            }
+        );
+    }
+
+    // A motor's NaN current.
+    let panda_model = panda::MODEL_F64;
+    let mut panda_data = Data::new();
+    let mut motor_forces: DriveForces<f64, Spatial, { panda::NB }, NV> = DriveForces::new();
+    let motors = [panda::MOTOR1_F64];
+    let error = drive_forces(
+        &panda_model,
+        &mut panda_data,
+        &Q,
+        &[0.0; NV],
+        &motors,
+        &[f64::NAN; 7],
+        &mut motor_forces,
+    )
+    .unwrap_err();
+    assert!(
+        matches!(
+            error,
+            Error::NonFinite {
+                quantity: Quantity::DriveInput,
+                ..
+            }
+        ),
+        "{error:?}"
+    );
+}
+
+#[test]
+fn ground_contact_refuses_nan_and_missing_bodies() {
+    let model = panda::MODEL_F64;
+    let mut data = Data::new();
+    let mut f_ext = [Force::ZERO; panda::NB];
+    let good = GroundContact {
+        normal: NormalLaw::LinearSpringDamper {
+            stiffness: 1e4,
+            damping: 50.0,
+        },
+        friction: 0.8,
+        slip_scale: 0.01,
+    };
+    // A NaN height is not "no contact".
+    let force = good.force_at(&Vec3::new(0.0, 0.0, f64::NAN), &Vec3::ZERO);
+    assert!(!force.z.is_finite(), "NaN height gave {force:?}");
+
+    let on_body = |body| [Endpoint::on_body(body, Vec3::new(0.0, 0.0, -2.0))];
+    let v = [0.0; NV];
+    let error = no_panic("contact on a missing body", || {
+        good.add_forces(
+            &model,
+            &mut data,
+            &Q,
+            &v,
+            &on_body(panda::NB),
+            &mut f_ext,
+            None,
+        )
+    })
+    .unwrap_err();
+    assert_eq!(error, Error::BodyOutOfRange { body: panda::NB });
+
+    let nan_point = [Endpoint::on_body(6, Vec3::new(f64::NAN, 0.0, 0.0))];
+    let error = good
+        .add_forces(&model, &mut data, &Q, &v, &nan_point, &mut f_ext, None)
+        .unwrap_err();
+    assert_eq!(
+        error,
+        Error::NonFinite {
+            quantity: Quantity::Contact,
+            index: 0
+        }
+    );
+
+    for (bad, index) in [
+        (
+            GroundContact {
+                friction: f64::NAN,
+                ..good
+            },
+            2,
+        ),
+        (
+            GroundContact {
+                slip_scale: 0.0,
+                ..good
+            },
+            3,
+        ),
+        (
+            GroundContact {
+                normal: NormalLaw::HuntCrossley {
+                    stiffness: f64::NAN,
+                    damping: 1.0,
+                },
+                ..good
+            },
+            0,
+        ),
+    ] {
+        let error = bad
+            .add_forces(&model, &mut data, &Q, &v, &on_body(6), &mut f_ext, None)
+            .unwrap_err();
+        assert_eq!(
+            error,
+            Error::NonFinite {
+                quantity: Quantity::Contact,
+                index
+            }
+        );
+    }
+    good.add_forces(&model, &mut data, &Q, &v, &on_body(6), &mut f_ext, None)
+        .expect("finite inputs are accepted");
+}
