@@ -267,6 +267,8 @@ fn drives_refuse_nan_inputs_and_bad_muscle_parameters() {
         }
     );
 
+    // Bad parameters: `validate` names the field; the forces of a law they
+    // break are an error, not NaN.
     for (field, value) in [(1, 0.0), (4, 0.0), (5, -0.01), (11, 0.5)] {
         let mut bad: [ThelenMuscle<f64, _, 3>; 4] = muscles;
         let p = &mut bad[2].params;
@@ -276,14 +278,17 @@ fn drives_refuse_nan_inputs_and_bad_muscle_parameters() {
             5 => p.activation_time_constant = value,
             _ => p.max_lengthening_force = value,
         }
-        let error =
-            drive_forces(&model, &mut data, &q, &v, &bad, &[0.2; 4], &mut forces).unwrap_err();
         assert_eq!(
-            error,
-            Error::InvalidDrive {
+            bad[2].params.validate(),
+            Err(Error::InvalidDrive {
                 problem: DriveProblem::MuscleParameter { index: field }
-            }
+            })
         );
+        let forces_result = drive_forces(&model, &mut data, &q, &v, &bad, &[0.2; 4], &mut forces);
+        if field == 1 || field == 4 {
+            let error = forces_result.unwrap_err();
+            assert!(matches!(error, Error::NonFiniteResult { .. }), "{error:?}");
+        }
     }
 
     // A motor's NaN current.
