@@ -33,6 +33,10 @@ fn main() {
         let out = compile_with(models.join(file), module, options);
         writeln!(all, "include!({:?});", out.display().to_string()).unwrap();
     }
+    // Odd but valid names: the generated module must compile.
+    let odd = Path::new(env!("CARGO_MANIFEST_DIR")).join("odd/odd_names.toml");
+    let out = compile_with(odd, "odd_names", LoadOptions::default());
+    writeln!(all, "include!({:?});", out.display().to_string()).unwrap();
     let out_dir = std::env::var("OUT_DIR").unwrap();
     std::fs::write(Path::new(&out_dir).join("models.rs"), all).unwrap();
 }

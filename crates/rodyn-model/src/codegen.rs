@@ -16,9 +16,11 @@ use crate::names::{check_distinct, constant_name, module_name};
 /// file in the header comment.
 ///
 /// # Errors
-/// A planar model whose joints or placements leave the plane, or two names
-/// that become the same Rust constant.
+/// A planar model whose joints or placements leave the plane, two names
+/// that become the same Rust constant, or a value (given or derived) that
+/// is not finite or does not fit the `f32` model.
 pub fn generate(model: &ModelDescription, module: &str, source: &str) -> Result<String> {
+    UNFIT.with(|u| u.borrow_mut().clear());
     check_distinct(
         "body",
         model.bodies.iter().map(|b| (b.name.as_str(), &b.location)),
@@ -73,6 +75,24 @@ pub fn generate(model: &ModelDescription, module: &str, source: &str) -> Result<
     endpoints(&mut w, model);
     drives(&mut w, model);
     w.close("}");
+    if let Some(x) = UNFIT.with(|u| u.borrow().first().copied()) {
+        let location = model.bodies.first().map_or_else(
+            || Location {
+                file: source.into(),
+                line: 1,
+                column: 1,
+            },
+            |b| b.location.clone(),
+        );
+        return Err(Diagnostic::error(
+            location,
+            format!(
+                "the model needs the value {x:e} (derived from the file, such as the mass of \
+                 links merged by fixed joints), which is not finite or which its f32 version \
+                 cannot hold (nonzero magnitudes from 1.2e-38 to 3.4e38)"
+            ),
+        ));
+    }
     Ok(w.out)
 }
 
@@ -88,7 +108,22 @@ impl Writer {
         for _ in 0..self.depth {
             self.out.push_str("    ");
         }
-        self.out.push_str(text);
+        if text.starts_with("//") {
+            // Comments carry names and paths from the model file: a line
+            // break in one would end the comment and let the rest of the
+            // name become code, and a bare CR does not compile in a doc
+            // comment. Control characters (and Unicode's line and
+            // paragraph separators) are written as escapes instead.
+            for c in text.chars() {
+                if c.is_control() || c == '\u{2028}' || c == '\u{2029}' {
+                    self.out.extend(c.escape_unicode());
+                } else {
+                    self.out.push(c);
+                }
+            }
+        } else {
+            self.out.push_str(text);
+        }
         self.out.push('\n');
     }
     fn blank(&mut self) {
@@ -104,8 +139,28 @@ impl Writer {
     }
 }
 
+/// Whether `x` keeps its value, within rounding, as an `f32`: zero, or a
+/// magnitude in f32's normal range (a larger one does not compile as an
+/// `f32` literal; a smaller one would become a subnormal or zero, a
+/// massless body from a tiny mass).
+#[must_use]
+pub fn fits_f32(x: f64) -> bool {
+    x == 0.0 || (x.abs() <= f64::from(f32::MAX) && x.abs() >= f64::from(f32::MIN_POSITIVE))
+}
+
+thread_local! {
+    /// The literals written since [`generate`] began that do not fit
+    /// `f32` (or are not finite): values derived from the file, such as
+    /// the masses of links merged by fixed joints, which the parsers'
+    /// checks of each number do not see.
+    static UNFIT: std::cell::RefCell<Vec<f64>> = const { std::cell::RefCell::new(Vec::new()) };
+}
+
 /// An untyped float literal that round-trips the `f64` exactly.
 fn literal(x: f64) -> String {
+    if !(x.is_finite() && fits_f32(x)) {
+        UNFIT.with(|u| u.borrow_mut().push(x));
+    }
     let s = format!("{x:?}");
     if s.contains(['.', 'e', 'i', 'N']) {
         s

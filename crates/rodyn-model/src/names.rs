@@ -3,9 +3,14 @@
 use crate::diagnostic::{Diagnostic, Location, Result};
 use std::collections::HashMap;
 
-/// `panda_link1` → `PANDA_LINK1`, `left-knee` → `LEFT_KNEE`, `1st` → `_1ST`.
+/// `panda_link1` → `PANDA_LINK1`, `left-knee` → `LEFT_KNEE`, `1st` → `_1ST`;
+/// a name with no ASCII letter or digit (`"é"`, `""`) → `_U_E9`, `_EMPTY`,
+/// since `_` alone is not a name Rust accepts.
 #[must_use]
 pub fn constant_name(name: &str) -> String {
+    if !name.chars().any(|c| c.is_ascii_alphanumeric()) {
+        return code_point_name(name).to_ascii_uppercase();
+    }
     let mut out: String = name
         .chars()
         .map(|c| {
@@ -22,9 +27,56 @@ pub fn constant_name(name: &str) -> String {
     out
 }
 
-/// `Panda Arm` → `panda_arm`; a keyword gets a trailing underscore.
+/// A stand-in for a name without ASCII letters or digits: its code points
+/// in hexadecimal (`"é"` → `_u_e9`), or `_empty`.
+fn code_point_name(name: &str) -> String {
+    if name.is_empty() {
+        return "_empty".to_owned();
+    }
+    let points: Vec<String> = name
+        .chars()
+        .map(|c| format!("{:x}", u32::from(c)))
+        .collect();
+    format!("_u_{}", points.join("_"))
+}
+
+/// Constants a generated module defines itself as `<NAME>_F64` and
+/// `<NAME>_F32`, which a drive's constants of the same form must not
+/// repeat.
+pub const RESERVED_CONSTANTS: &[&str] = &["MODEL", "ENDPOINTS", "CONTACTS", "CONTACT_POINTS"];
+
+/// Checks that no name becomes one of the module's own constants
+/// ([`RESERVED_CONSTANTS`]).
+///
+/// # Errors
+/// A diagnostic at the first such name.
+pub fn check_not_reserved<'a>(
+    namespace: &str,
+    names: impl IntoIterator<Item = (&'a str, &'a Location)>,
+) -> Result<()> {
+    for (name, location) in names {
+        let constant = constant_name(name);
+        if RESERVED_CONSTANTS.contains(&constant.as_str()) {
+            return Err(Diagnostic::error(
+                location.clone(),
+                format!(
+                    "the {namespace} name `{name}` becomes `{constant}_F64`, which the generated \
+                     module uses for its own {}; rename it",
+                    constant.to_ascii_lowercase().replace('_', " ")
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// `Panda Arm` → `panda_arm`; a keyword gets a trailing underscore; a name
+/// with no ASCII letter or digit → `_u_<hex code points>` or `_empty`.
 #[must_use]
 pub fn module_name(name: &str) -> String {
+    if !name.chars().any(|c| c.is_ascii_alphanumeric()) {
+        return code_point_name(name);
+    }
     let mut out: String = name
         .chars()
         .map(|c| {

@@ -1,6 +1,7 @@
 //! Physical plausibility of the numbers in a model file, checked where they
 //! are written so the error can point at them.
 
+use crate::codegen::fits_f32;
 use crate::description::ModelDescription;
 use crate::diagnostic::{Diagnostic, Location, Result};
 use crate::geometry::{symmetric_eigenvalues, Mat3};
@@ -14,7 +15,12 @@ const RELATIVE_TOLERANCE: f64 = 1e-6;
 /// # Errors
 /// A diagnostic at `location` naming `what`.
 pub fn check_mass(mass: f64, what: &str, location: &Location) -> Result<()> {
-    if mass.is_finite() && mass > 0.0 {
+    if mass.is_finite() && mass > 0.0 && !fits_f32(mass) {
+        Err(Diagnostic::error(
+            location.clone(),
+            format!("{what} has mass {mass:e}, which the model's f32 version cannot hold (nonzero magnitudes from 1.2e-38 to 3.4e38)"),
+        ))
+    } else if mass.is_finite() && mass > 0.0 {
         Ok(())
     } else {
         Err(Diagnostic::error(

@@ -7,12 +7,13 @@
 //! (`kg`, `g`) and angles (`rad`, `deg`) written in the file; every other
 //! quantity (inertia, stiffness, damping, force, torque constant) is SI.
 
+use crate::codegen::fits_f32;
 use crate::description::{
     Body, Contact, EndpointDef, ForceElement, ForceLaw, Frame, JointType, ModelDescription, Motor,
 };
 use crate::diagnostic::{Diagnostic, Location, Result};
 use crate::geometry::{norm, scale, Pose, RigidInertia, Vec3};
-use crate::names::check_distinct;
+use crate::names::{check_distinct, check_not_reserved};
 use crate::physics::{check_mass, check_rotational_inertia, check_subtrees_have_mass};
 use crate::urdf::{read_urdf, UrdfOptions};
 use serde::Deserialize;
@@ -215,6 +216,12 @@ impl Reader<'_> {
                 Sign::Positive => v > 0.0,
                 Sign::NonNegative => v >= 0.0,
             };
+        if ok && !fits_f32(v) {
+            return self.error(
+                x,
+                format!("{what} is {v:e}, which the model's f32 version cannot hold (nonzero magnitudes from 1.2e-38 to 3.4e38)"),
+            );
+        }
         if ok {
             Ok(v)
         } else {
@@ -230,6 +237,12 @@ impl Reader<'_> {
     /// A point or direction: 3 numbers, or 2 (z = 0) in a planar model.
     fn vector(&self, v: &S<Vec<f64>>, what: &str, planar: bool, factor: f64) -> Result<Vec3> {
         let x = v.get_ref();
+        if let Some(bad) = x.iter().find(|x| x.is_finite() && !fits_f32(**x * factor)) {
+            return self.error(
+                v,
+                format!("{what} has the entry {bad:e}, which the model's f32 version cannot hold (nonzero magnitudes from 1.2e-38 to 3.4e38)"),
+            );
+        }
         let out = match (x.len(), planar) {
             (3, _) => [x[0], x[1], x[2]],
             (2, true) => [x[0], x[1], 0.0],
@@ -728,7 +741,8 @@ impl Reader<'_> {
             });
             names.push((c.name.get_ref(), self.at(c.name.span())));
         }
-        check_distinct("drive or contact", names.iter().map(|(n, l)| (*n, l)))
+        check_distinct("drive or contact", names.iter().map(|(n, l)| (*n, l)))?;
+        check_not_reserved("drive or contact", names.iter().map(|(n, l)| (*n, l)))
     }
 }
 

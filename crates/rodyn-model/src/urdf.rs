@@ -18,6 +18,7 @@
 //! Limits, dynamics, mimic, meshes and transmissions do not enter the
 //! dynamics; each is reported once as a warning.
 
+use crate::codegen::fits_f32;
 use crate::description::{Body, EndpointDef, Frame, JointType, ModelDescription};
 use crate::diagnostic::{Diagnostic, Location, Result};
 use crate::geometry::{norm, scale, Pose, RigidInertia, Vec3};
@@ -139,6 +140,13 @@ impl<'a> Reader<'a> {
 
     fn number(&self, node: Node<'_, '_>, name: &str, text: &str) -> Result<f64> {
         match text.trim().parse::<f64>() {
+            Ok(x) if x.is_finite() && !fits_f32(x) => Err(Diagnostic::error(
+                self.at_attribute(node, name),
+                format!(
+                    "`{name}` is {x:e}, which the model's f32 version cannot hold \
+                     (nonzero magnitudes from 1.2e-38 to 3.4e38)"
+                ),
+            )),
             Ok(x) if x.is_finite() => Ok(x),
             _ => Err(Diagnostic::error(
                 self.at_attribute(node, name),
