@@ -48,12 +48,48 @@ pub struct LoadOptions {
     pub floating_base: bool,
 }
 
+/// The largest model file read, bytes: far above any robot's (a 16,000-link
+/// URDF is about 10 MB), far below what would exhaust a build machine.
+pub const MAX_MODEL_FILE_BYTES: u64 = 64 << 20;
+
+/// Reads a model file as text, only when it is a regular file of at most
+/// [`MAX_MODEL_FILE_BYTES`]: `/dev/zero` would fill the memory and
+/// `/dev/stdin` block the build.
+///
+/// # Errors
+/// The I/O error, or `InvalidInput` naming what is wrong.
+pub fn read_model_file(path: &Path) -> std::io::Result<String> {
+    use std::io::{Error, ErrorKind, Read};
+    let metadata = std::fs::metadata(path)?;
+    if !metadata.is_file() {
+        return Err(Error::new(
+            ErrorKind::InvalidInput,
+            "it is not a regular file (a device, a pipe or a directory)",
+        ));
+    }
+    if metadata.len() > MAX_MODEL_FILE_BYTES {
+        return Err(Error::new(
+            ErrorKind::InvalidInput,
+            format!(
+                "it has {} bytes, more than the {MAX_MODEL_FILE_BYTES} a model file may have",
+                metadata.len()
+            ),
+        ));
+    }
+    // The size can change between the check and the read: read no more.
+    let mut text = String::new();
+    std::fs::File::open(path)?
+        .take(MAX_MODEL_FILE_BYTES)
+        .read_to_string(&mut text)?;
+    Ok(text)
+}
+
 /// Reads a model file: URDF (`.urdf`, `.xml`) or rodyn's own (`.toml`).
 ///
 /// # Errors
 /// The first problem, with its file, line and column.
 pub fn load(path: &Path, options: LoadOptions) -> diagnostic::Result<ModelDescription> {
-    let text = std::fs::read_to_string(path).map_err(|e| {
+    let text = read_model_file(path).map_err(|e| {
         Diagnostic::error(
             Location::start_of(path),
             format!("cannot read the model file: {e}"),

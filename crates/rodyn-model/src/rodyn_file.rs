@@ -282,7 +282,7 @@ impl Reader<'_> {
                     .parent()
                     .unwrap_or(Path::new("."))
                     .join(include.get_ref());
-                let text = std::fs::read_to_string(&path).map_err(|e| {
+                let text = crate::read_model_file(&path).map_err(|e| {
                     Diagnostic::error(
                         self.at(include.span()),
                         format!("cannot read the included file `{}`: {e}", path.display()),

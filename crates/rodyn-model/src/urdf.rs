@@ -42,6 +42,15 @@ pub struct UrdfOptions {
 /// # Errors
 /// The first problem found, with its position in `file`.
 pub fn read_urdf(file: &Path, text: &str, options: UrdfOptions) -> Result<ModelDescription> {
+    if let Some(offset) = too_deep(text) {
+        return Err(Diagnostic::error(
+            Location::at_offset(file, text, offset),
+            format!(
+                "elements are nested more than {MAX_NESTING} levels deep here; a URDF needs \
+                 about 5 (robot, link, inertial, origin)"
+            ),
+        ));
+    }
     let doc = Document::parse(text).map_err(|e| {
         let pos = e.pos();
         Diagnostic::error(
@@ -55,6 +64,63 @@ pub fn read_urdf(file: &Path, text: &str, options: UrdfOptions) -> Result<ModelD
     })?;
     let reader = Reader { file, text };
     reader.read(&doc, options)
+}
+
+/// Deepest element nesting read. The XML parser recurses once per level,
+/// and build scripts run unoptimised with a small stack: a 1,500-level
+/// file overflowed it.
+pub const MAX_NESTING: usize = 64;
+
+/// The byte offset of the first element opened deeper than
+/// [`MAX_NESTING`], by a scan of the tags that skips comments, processing
+/// instructions, declarations, CDATA and quoted attribute values; `None`
+/// when the file stays within it (malformed XML is left to the parser).
+fn too_deep(text: &str) -> Option<usize> {
+    let bytes = text.as_bytes();
+    let find = |from: usize, pattern: &[u8]| {
+        bytes[from..]
+            .windows(pattern.len())
+            .position(|w| w == pattern)
+            .map(|p| from + p + pattern.len())
+    };
+    let (mut depth, mut i) = (0_usize, 0_usize);
+    while let Some(start) = bytes[i..].iter().position(|&b| b == b'<').map(|p| i + p) {
+        let rest = &bytes[start + 1..];
+        i = if rest.starts_with(b"!--") {
+            find(start, b"-->")?
+        } else if rest.starts_with(b"![CDATA[") {
+            find(start, b"]]>")?
+        } else if rest.starts_with(b"?") || rest.starts_with(b"!") {
+            find(start, b">")?
+        } else {
+            // A start, end or empty-element tag: find its `>` outside quotes.
+            let mut quote = None;
+            let mut end = None;
+            for (k, &b) in rest.iter().enumerate() {
+                match (quote, b) {
+                    (Some(q), _) if b == q => quote = None,
+                    (Some(_), _) => {}
+                    (None, b'"' | b'\'') => quote = Some(b),
+                    (None, b'>') => {
+                        end = Some(start + 1 + k);
+                        break;
+                    }
+                    _ => {}
+                }
+            }
+            let end = end?;
+            if rest.first() == Some(&b'/') {
+                depth = depth.saturating_sub(1);
+            } else if bytes[end - 1] != b'/' {
+                depth += 1;
+                if depth > MAX_NESTING {
+                    return Some(start);
+                }
+            }
+            end + 1
+        };
+    }
+    None
 }
 
 struct Reader<'a> {
