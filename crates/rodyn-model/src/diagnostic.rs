@@ -17,6 +17,24 @@ pub struct Location {
     pub column: u32,
 }
 
+/// The byte offsets at which the lines of a text start, for
+/// [`Location::at_offset_indexed`].
+#[derive(Clone, Debug)]
+pub struct LineIndex {
+    starts: Vec<usize>,
+}
+
+impl LineIndex {
+    /// The index of `text`.
+    #[must_use]
+    pub fn new(text: &str) -> Self {
+        let starts = core::iter::once(0)
+            .chain(text.match_indices('\n').map(|(i, _)| i + 1))
+            .collect();
+        Self { starts }
+    }
+}
+
 impl Location {
     /// The position of byte `offset` in `text`, which is the content of `file`.
     #[must_use]
@@ -25,6 +43,28 @@ impl Location {
         let line = before.matches('\n').count() + 1;
         let line_start = before.rfind('\n').map_or(0, |i| i + 1);
         let column = before[line_start..].chars().count() + 1;
+        Self {
+            file: file.to_path_buf(),
+            line: u32::try_from(line).unwrap_or(u32::MAX),
+            column: u32::try_from(column).unwrap_or(u32::MAX),
+        }
+    }
+    /// The position of byte `offset` in `text` through a [`LineIndex`] of
+    /// it: a binary search for the line and a count within it, instead of
+    /// a scan from the start (which made every link's location cost the
+    /// whole file before it, and loading quadratic in the link count).
+    #[must_use]
+    pub fn at_offset_indexed(file: &Path, text: &str, lines: &LineIndex, offset: usize) -> Self {
+        let offset = offset.min(text.len());
+        let line = lines
+            .starts
+            .partition_point(|&start| start <= offset)
+            .max(1);
+        let line_start = lines.starts[line - 1];
+        let column = text
+            .get(line_start..offset)
+            .map_or(offset - line_start, |s| s.chars().count())
+            + 1;
         Self {
             file: file.to_path_buf(),
             line: u32::try_from(line).unwrap_or(u32::MAX),

@@ -11,7 +11,7 @@ use crate::codegen::fits_f32;
 use crate::description::{
     Body, Contact, EndpointDef, ForceElement, ForceLaw, Frame, JointType, ModelDescription, Motor,
 };
-use crate::diagnostic::{Diagnostic, Location, Result};
+use crate::diagnostic::{Diagnostic, LineIndex, Location, Result};
 use crate::geometry::{norm, scale, Pose, RigidInertia, Vec3};
 use crate::names::{check_distinct, check_not_reserved};
 use crate::physics::{check_mass, check_rotational_inertia, check_subtrees_have_mass};
@@ -168,17 +168,23 @@ pub fn read_rodyn_file(file: &Path, text: &str) -> Result<ModelDescription> {
             e.message().trim_end().replace('\n', " "),
         )
     })?;
-    Reader { file, text }.read(parsed)
+    Reader {
+        file,
+        text,
+        lines: LineIndex::new(text),
+    }
+    .read(parsed)
 }
 
 struct Reader<'a> {
     file: &'a Path,
     text: &'a str,
+    lines: LineIndex,
 }
 
 impl Reader<'_> {
     fn at(&self, span: Range<usize>) -> Location {
-        Location::at_offset(self.file, self.text, span.start)
+        Location::at_offset_indexed(self.file, self.text, &self.lines, span.start)
     }
     fn error<T, U>(&self, at: &S<U>, message: impl Into<String>) -> Result<T> {
         Err(Diagnostic::error(self.at(at.span()), message))

@@ -20,7 +20,7 @@
 
 use crate::codegen::fits_f32;
 use crate::description::{Body, EndpointDef, Frame, JointType, ModelDescription};
-use crate::diagnostic::{Diagnostic, Location, Result};
+use crate::diagnostic::{Diagnostic, LineIndex, Location, Result};
 use crate::geometry::{norm, scale, Pose, RigidInertia, Vec3};
 use crate::physics::{check_link_mass, check_rotational_inertia, check_subtrees_have_mass};
 use roxmltree::{Document, Node};
@@ -62,7 +62,11 @@ pub fn read_urdf(file: &Path, text: &str, options: UrdfOptions) -> Result<ModelD
             format!("this is not well-formed XML: {e}"),
         )
     })?;
-    let reader = Reader { file, text };
+    let reader = Reader {
+        file,
+        text,
+        lines: LineIndex::new(text),
+    };
     reader.read(&doc, options)
 }
 
@@ -126,6 +130,7 @@ fn too_deep(text: &str) -> Option<usize> {
 struct Reader<'a> {
     file: &'a Path,
     text: &'a str,
+    lines: LineIndex,
 }
 
 /// A `<link>` as written.
@@ -177,7 +182,7 @@ impl Ignored {
 
 impl<'a> Reader<'a> {
     fn at(&self, offset: usize) -> Location {
-        Location::at_offset(self.file, self.text, offset)
+        Location::at_offset_indexed(self.file, self.text, &self.lines, offset)
     }
     fn at_node(&self, node: Node<'_, '_>) -> Location {
         self.at(node.range().start)
@@ -270,6 +275,8 @@ impl<'a> Reader<'a> {
         let mut links: HashMap<&str, Link> = HashMap::new();
         let mut link_order: Vec<&str> = Vec::new();
         let mut joints: Vec<JointDecl<'_>> = Vec::new();
+        // Joint names seen so far, for the duplicate check in constant time.
+        let mut joint_index: HashMap<String, usize> = HashMap::new();
         for node in robot.children().filter(Node::is_element) {
             match node.tag_name().name() {
                 "link" => {
@@ -289,15 +296,16 @@ impl<'a> Reader<'a> {
                 }
                 "joint" => {
                     let joint = self.read_joint(node, &mut ignored)?;
-                    if let Some(first) = joints.iter().find(|j| j.name == joint.name) {
+                    if let Some(&first) = joint_index.get(joint.name) {
                         return self.error(
                             node,
                             format!(
                                 "a second joint is named `{}`; the first is at {}",
-                                joint.name, first.location
+                                joint.name, joints[first].location
                             ),
                         );
                     }
+                    joint_index.insert(joint.name.to_owned(), joints.len());
                     joints.push(joint);
                 }
                 "transmission" => ignored.note(
@@ -528,22 +536,33 @@ impl<'a> Reader<'a> {
             .collect::<Vec<_>>();
         match roots.as_slice() {
             [root] => {
-                // Walk up from every link; a walk that does not reach the
-                // root within as many steps as there are links is a cycle.
+                // Walk up from every link until a link already known to
+                // hang below the root; every link of the walk then does too.
+                // Meeting a link of the same walk again is a cycle. Each
+                // link is walked over once: linear in the number of links.
+                let mut below_root: HashMap<&str, bool> = HashMap::with_capacity(link_order.len());
+                below_root.insert(root, true);
+                let mut walk: Vec<&str> = Vec::new();
                 for start in link_order {
+                    walk.clear();
                     let mut link = *start;
-                    for _ in 0..=link_order.len() {
+                    while !below_root.contains_key(link) {
+                        below_root.insert(link, false);
+                        walk.push(link);
                         match joint_of_child.get(link) {
                             Some(&k) => link = joints[k].parent,
                             None => break,
                         }
                     }
-                    if link != *root {
+                    if below_root.get(link) == Some(&false) {
                         let k = joint_of_child[start];
                         return Err(Diagnostic::error(
                             joints[k].location.clone(),
                             format!("the joints form a cycle through link `{start}`; a URDF must be a tree"),
                         ));
+                    }
+                    for l in &walk {
+                        below_root.insert(l, true);
                     }
                 }
                 Ok(root)

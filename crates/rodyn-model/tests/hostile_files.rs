@@ -63,3 +63,42 @@ fn device_files_are_not_read() {
     let error = load(std::path::Path::new("/dev/zero"), LoadOptions::default()).unwrap_err();
     assert!(error.message.contains("not a regular file"), "{error}");
 }
+
+/// A chain URDF of `n` links.
+fn chain(n: usize) -> String {
+    let link = |i: usize| {
+        format!("<link name=\"l{i}\"><inertial><mass value=\"1\"/><inertia ixx=\"0.1\" iyy=\"0.1\" izz=\"0.1\" ixy=\"0\" ixz=\"0\" iyz=\"0\"/></inertial></link>\n")
+    };
+    let mut text = String::from("<robot name=\"chain\">\n");
+    text += &link(0);
+    for i in 1..=n {
+        text += &link(i);
+        text += &format!("<joint name=\"j{i}\" type=\"continuous\"><parent link=\"l{}\"/><child link=\"l{i}\"/><origin xyz=\"0 0 0.1\"/><axis xyz=\"0 0 1\"/></joint>\n", i - 1);
+    }
+    text + "</robot>\n"
+}
+
+/// Loading grows linearly with the link count: four times the links take
+/// well under eight times as long (sixteen when it was quadratic, from a
+/// scan of the file for each link's line number and a walk to the root
+/// from each link). Timed as a ratio of two sizes in one run, the best of
+/// three each, so a slow machine does not matter.
+#[test]
+fn loading_is_linear_in_the_link_count() {
+    let time = |n: usize| {
+        let path = write(&format!("chain{n}.urdf"), &chain(n));
+        (0..3)
+            .map(|_| {
+                let start = std::time::Instant::now();
+                let model = load(&path, LoadOptions::default()).unwrap();
+                assert_eq!(model.bodies.len(), n);
+                start.elapsed().as_secs_f64()
+            })
+            .fold(f64::INFINITY, f64::min)
+    };
+    let (small, large) = (time(1000), time(4000));
+    assert!(
+        large / small < 8.0,
+        "1,000 links {small:.3} s, 4,000 links {large:.3} s"
+    );
+}
