@@ -1,7 +1,9 @@
-//! Compiles the seed's planar gait model into `$OUT_DIR/gait_planar.rs`, the
-//! way a firmware build script would, for the gait examples and tests.
+//! Compiles the seed's planar gait model into `$OUT_DIR/gait_planar.rs` and
+//! the measured subject's into `$OUT_DIR/gait_subject01.rs`, the way a
+//! firmware build script would, for the gait examples and tests.
 
 fn main() {
-    let model = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../models/gait_planar.toml");
-    let _ = rodyn_model::build::compile(model, "gait_planar");
+    let models = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../models");
+    let _ = rodyn_model::build::compile(models.join("gait_planar.toml"), "gait_planar");
+    let _ = rodyn_model::build::compile(models.join("gait_subject01.toml"), "gait_subject01");
 }
