@@ -162,6 +162,25 @@ pub enum Error {
         /// The body index given.
         body: usize,
     },
+    /// More constrained rows than a workspace holds.
+    TooManyConstraints {
+        /// Rows asked for.
+        rows: usize,
+        /// Rows the workspace holds.
+        capacity: usize,
+    },
+    /// A gain or damping that is negative or not finite.
+    InvalidGain {
+        /// Which (the function documents the order).
+        index: usize,
+    },
+    /// Contacts that constrain the same motion twice (a rank-deficient
+    /// contact Jacobian) with no damping to choose among the forces.
+    RedundantConstraints {
+        /// The constrained row at which the Delassus matrix's factorisation
+        /// broke down (three rows per point contact).
+        row: usize,
+    },
 }
 
 impl fmt::Display for Error {
@@ -221,6 +240,19 @@ impl fmt::Display for Error {
             Self::BodyOutOfRange { body } => {
                 write!(f, "body {body}, which the model does not have")
             }
+            Self::TooManyConstraints { rows, capacity } => write!(
+                f,
+                "{rows} constrained rows, more than the workspace's {capacity}"
+            ),
+            Self::InvalidGain { index } => {
+                write!(f, "gain {index} is negative or not finite")
+            }
+            Self::RedundantConstraints { row } => write!(
+                f,
+                "the contacts are redundant at constrained row {row} (contact {}); \
+                 give a damping or drop a contact",
+                row / 3
+            ),
         }
     }
 }
@@ -284,6 +316,13 @@ impl defmt::Format for Error {
                 defmt::write!(f, "non-finite result {} at index {}", quantity, index)
             }
             Self::BodyOutOfRange { body } => defmt::write!(f, "missing body {}", body),
+            Self::TooManyConstraints { rows, capacity } => {
+                defmt::write!(f, "{} constrained rows, capacity {}", rows, capacity)
+            }
+            Self::InvalidGain { index } => defmt::write!(f, "invalid gain {}", index),
+            Self::RedundantConstraints { row } => {
+                defmt::write!(f, "redundant contacts at row {}", row)
+            }
         }
     }
 }

@@ -356,9 +356,9 @@ fn factor_by_rows<S: Scalar, const NB: usize, const NV: usize>(
 /// Inputs: `b` (NV); `data.ltdl` valid. On return `b` holds `x`.
 ///
 /// # Errors
-/// [`Error::NonFinite`](crate::Error::NonFinite) for a non-finite `b`
+/// [`Error::NonFinite`] for a non-finite `b`
 /// (left unchanged), and
-/// [`Error::NonFiniteResult`](crate::Error::NonFiniteResult) when the
+/// [`Error::NonFiniteResult`] when the
 /// solution overflows (`b` then holds it).
 pub fn ltdl_solve<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     model: &Model<S, NB, NQ, NV, G>,

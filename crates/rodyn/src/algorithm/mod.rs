@@ -16,6 +16,7 @@
 
 pub mod aba;
 pub mod centroidal;
+pub mod constrained_dynamics;
 pub mod crba;
 pub mod energy;
 pub mod forward_dynamics;
