@@ -362,3 +362,71 @@ fn bad_input_and_redundant_contacts() {
         relative(&ddq, &single)
     );
 }
+
+/// Impacts against Pinocchio's `impulseDynamics` (restitution 0 and 0.5,
+/// every state and contact set): v⁺ and the impulses within 1e-9; the
+/// contacts leave at −e times their approach velocity; no impact gains
+/// kinetic energy.
+#[test]
+fn impacts_match_pinocchio_and_never_gain_energy() {
+    use rodyn::algorithm::constrained_dynamics::impulse_dynamics;
+    use rodyn::algorithm::energy::kinetic_energy;
+    let text = std::fs::read_to_string(fixtures_dir().join("contacts/solo12.json")).unwrap();
+    let fixture: Value = serde_json::from_str(&text).unwrap();
+    let model = model();
+    let mut data = Data::new();
+    let mut cdata = ConstraintData::<f64, NV, NC>::new();
+    let (mut worst, mut impacts) = (0.0_f64, 0);
+    for state in fixture["states"].as_array().unwrap() {
+        let (q, v) = (array::<NQ>(&state["q"]), array::<NV>(&state["v"]));
+        let energy_before = kinetic_energy(&model, &mut data, &q, &v).unwrap();
+        for case in state["cases"].as_array().unwrap() {
+            let contacts: Vec<PointContact<f64>> = case["contacts"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(contact)
+                .collect();
+            for impact in case["impacts"].as_array().unwrap() {
+                let e = impact["restitution"].as_f64().unwrap();
+                let (v_after, impulse) =
+                    impulse_dynamics(&model, &mut data, &mut cdata, &q, &v, &contacts, e, 0.0)
+                        .unwrap();
+                let (v_after, impulse) = (*v_after, impulse.to_vec());
+                worst = worst
+                    .max(relative(&v_after, &numbers(&impact["v_after"])))
+                    .max(relative(&impulse, &numbers(&impact["impulse"])));
+                // Contact velocities after = −e × before.
+                for (r, row) in cdata.jc[..cdata.rows].iter().enumerate() {
+                    let before: f64 = row.iter().zip(&v).map(|(j, x)| j * x).sum();
+                    let after: f64 = row.iter().zip(&v_after).map(|(j, x)| j * x).sum();
+                    assert!(
+                        (after + e * before).abs() < 1e-9 * (1.0 + before.abs()),
+                        "row {r}: {after} after {before}"
+                    );
+                }
+                let energy_after = kinetic_energy(&model, &mut data, &q, &v_after).unwrap();
+                assert!(
+                    energy_after <= energy_before * (1.0 + 1e-12),
+                    "{energy_after} > {energy_before}"
+                );
+                impacts += 1;
+            }
+        }
+    }
+    eprintln!("{impacts} impacts: within {worst:.1e} of Pinocchio");
+    assert_eq!(impacts, 80);
+    assert!(worst < 1e-9, "{worst:e}");
+    let error = impulse_dynamics(
+        &model,
+        &mut data,
+        &mut cdata,
+        &[0.0; NQ],
+        &[0.0; NV],
+        &[],
+        1.5,
+        0.0,
+    )
+    .unwrap_err();
+    assert_eq!(error, Error::InvalidGain { index: 0 });
+}

@@ -8,9 +8,13 @@ CONTACT_3D in LOCAL_WORLD_ALIGNED), solved by `constraintDynamics`:
 - two feet with anchors moved by a few millimetres and Baumgarte gains
   Kp = 40 1/s², Kd = 9 1/s.
 
+Also `impulseDynamics` for the same contacts at the state's velocity,
+with restitution 0 and 0.5.
+
 Writes host-tests/fixtures/contacts/solo12.json: per state and case, the
 contacts (rodyn body index = Pinocchio joint index - 1, the foot frame's
-placement in it, the anchor), the gains, q̈ and λ (three per contact).
+placement in it, the anchor), the gains, q̈ and λ (three per contact), and
+the impacts' v⁺ and impulses.
 
     python3 tools/pinocchio/make_contact_fixtures.py
 """
@@ -70,8 +74,20 @@ def main():
                 datas.append(cm.createData())
             pin.initConstraintDynamics(model, data, models, datas)
             ddq = pin.constraintDynamics(model, data, q, v, tau, models, datas, pin.ProximalSettings(1e-14, 0.0, 1))
+            lam = np.array(data.lambda_c).tolist()
+            # The impact of the same contacts at this state's velocity:
+            # plastic, and with restitution 0.5.
+            pin.computeJointJacobians(model, data, q)
+            pin.framesForwardKinematics(model, data, q)
+            jc = np.vstack([pin.getFrameJacobian(model, data, model.getFrameId(c["name"]),
+                                                 pin.ReferenceFrame.LOCAL_WORLD_ALIGNED)[:3] for c in contacts])
+            impacts = []
+            for e in (0.0, 0.5):
+                v_after = pin.impulseDynamics(model, data, q, v, jc, e, 0.0)
+                impacts.append({"restitution": e, "v_after": np.array(v_after).tolist(),
+                                "impulse": np.array(data.impulse_c).tolist()})
             cases.append({"contacts": contacts, "kp": kp, "kd": kd, "ddq": ddq.tolist(),
-                          "lambda": np.array(data.lambda_c).tolist()})
+                          "lambda": lam, "impacts": impacts})
         out.append({"q": q.tolist(), "v": v.tolist(), "tau": tau.tolist(), "cases": cases})
     path = ROOT / "host-tests" / "fixtures" / "contacts" / "solo12.json"
     path.write_text(json.dumps({"generator": f"pinocchio {pin.__version__}", "states": out}) + "\n")

@@ -158,56 +158,23 @@ pub fn constrained_forward_dynamics<
     contacts: &[PointContact<S>],
     settings: &ConstraintSettings<S>,
 ) -> Result<(&'c [S; NV], &'c [S])> {
+    check_input(contacts, settings, NB, NC)?;
     let rows = 3 * contacts.len();
-    if rows > NC {
-        return Err(Error::TooManyConstraints { rows, capacity: NC });
-    }
-    let gains = [settings.kp, settings.kd, settings.damping];
-    if let Some(index) = gains
-        .iter()
-        .position(|g| !(g.is_finite() && g.to_f64() >= 0.0))
-    {
-        return Err(Error::InvalidGain { index });
-    }
-    for (index, c) in contacts.iter().enumerate() {
-        if c.frame.body >= NB {
-            return Err(Error::FrameBodyOutOfRange { body: c.frame.body });
-        }
-        if !(c.anchor.is_finite() && c.frame.placement.is_finite()) {
-            return Err(Error::NonFinite {
-                quantity: Quantity::Contact,
-                index,
-            });
-        }
-    }
     check_finite(tau, Quantity::Torque)?;
-    cdata.rows = rows;
 
-    // Unconstrained: M x₀ = τ − h.
+    // Unconstrained: M x₀ = τ − h; then J_c, M⁻¹ J_cᵀ and the Delassus
+    // matrix's factor.
     let h = *nonlinear_effects(model, data, q, v, None)?;
-    crba(model, data, q)?;
-    ltdl_factor(model, data)?;
+    prepare(model, data, cdata, q, contacts, settings.damping)?;
     let mut x0: [S; NV] = core::array::from_fn(|k| tau[k] - h[k]);
     ltdl_solve(model, data, &mut x0)?;
 
-    // J_c, and the right-hand side's drift, velocity and position terms.
-    joint_jacobians(model, data, &mut cdata.jacobians, q)?;
+    // The right-hand side: −(J_c x₀ + J̇_c q̇ + K_p e + K_d J_c q̇).
     let mut rhs = [S::ZERO; NC];
     for (c, contact) in contacts.iter().enumerate() {
-        frame_jacobian(
-            model,
-            data,
-            &cdata.jacobians,
-            &contact.frame,
-            ReferenceFrame::LocalWorldAligned,
-            &mut cdata.columns,
-        )?;
         let position = frame_placement(data, &contact.frame)?.trans;
         let error = (position - contact.anchor).to_array();
-        for (axis, row) in cdata.jc[3 * c..3 * c + 3].iter_mut().enumerate() {
-            for (entry, column) in row.iter_mut().zip(&cdata.columns) {
-                *entry = column.lin.to_array()[axis];
-            }
+        for axis in 0..3 {
             rhs[3 * c + axis] = -settings.kp * error[axis];
         }
     }
@@ -225,21 +192,6 @@ pub fn constrained_forward_dynamics<
             rhs[r] -= drift[axis] + settings.kd * velocity[axis] + dot(&cdata.jc[r], &x0);
         }
     }
-
-    // M⁻¹ J_cᵀ, the Delassus matrix, λ.
-    for r in 0..rows {
-        cdata.minv_jt[r] = cdata.jc[r];
-        ltdl_solve(model, data, &mut cdata.minv_jt[r])?;
-    }
-    for r in 0..rows {
-        for s in 0..=r {
-            let g = dot(&cdata.jc[r], &cdata.minv_jt[s]);
-            cdata.delassus[r][s] = g;
-            cdata.delassus[s][r] = g;
-        }
-        cdata.delassus[r][r] += settings.damping;
-    }
-    cholesky_in_place(&mut cdata.delassus, rows)?;
     cdata.lambda = rhs;
     cholesky_solve(&cdata.delassus, rows, &mut cdata.lambda);
 
@@ -255,6 +207,146 @@ pub fn constrained_forward_dynamics<
     check_result(&cdata.ddq, Quantity::Acceleration)?;
     data.tau = h;
     Ok((&cdata.ddq, &cdata.lambda[..rows]))
+}
+
+/// The velocities just after an impact at configuration `q`: the points
+/// of `contacts` meet the ground with velocity `J_c v⁻` and leave with
+/// `−e J_c v⁻` (`e`, `restitution`, in `[0, 1]`; 0 for a plastic impact
+/// that stops them), by the impulses `Λ` (N s, world axes, three per
+/// contact) of `M (v⁺ − v⁻) = J_cᵀ Λ` (Pinocchio's `impulseDynamics`).
+/// An impact with `e ≤ 1` never adds kinetic energy. Returns `(v⁺, Λ)`;
+/// `damping` regularises redundant contacts as in
+/// [`constrained_forward_dynamics`].
+///
+/// Leaves valid in `data`: what [`crba`], [`ltdl_factor`] and
+/// [`joint_jacobians`] leave. In `cdata`: every field (`ddq` holds `v⁺`,
+/// `lambda` holds `Λ`).
+///
+/// # Errors
+/// As [`constrained_forward_dynamics`]; [`Error::InvalidGain`] with index
+/// 0 for a restitution outside `[0, 1]`, 2 for a bad damping.
+#[allow(clippy::too_many_arguments)]
+pub fn impulse_dynamics<
+    'c,
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    const NC: usize,
+>(
+    model: &Model<S, NB, NQ, NV, Spatial>,
+    data: &mut Data<S, NB, NV, Spatial>,
+    cdata: &'c mut ConstraintData<S, NV, NC>,
+    q: &[S; NQ],
+    v_before: &[S; NV],
+    contacts: &[PointContact<S>],
+    restitution: S,
+    damping: S,
+) -> Result<(&'c [S; NV], &'c [S])> {
+    let e = restitution.to_f64();
+    if !(0.0..=1.0).contains(&e) {
+        return Err(Error::InvalidGain { index: 0 });
+    }
+    let settings = ConstraintSettings {
+        kp: S::ZERO,
+        kd: S::ZERO,
+        damping,
+    };
+    check_input(contacts, &settings, NB, NC)?;
+    check_finite(v_before, Quantity::Velocity)?;
+    prepare(model, data, cdata, q, contacts, damping)?;
+    let rows = cdata.rows;
+    for r in 0..rows {
+        cdata.lambda[r] = -(S::ONE + restitution) * dot(&cdata.jc[r], v_before);
+    }
+    cholesky_solve(&cdata.delassus, rows, &mut cdata.lambda);
+    cdata.ddq = *v_before;
+    for r in 0..rows {
+        let l = cdata.lambda[r];
+        for (a, y) in cdata.ddq.iter_mut().zip(&cdata.minv_jt[r]) {
+            *a += *y * l;
+        }
+    }
+    check_result(&cdata.lambda[..rows], Quantity::Contact)?;
+    check_result(&cdata.ddq, Quantity::Velocity)?;
+    Ok((&cdata.ddq, &cdata.lambda[..rows]))
+}
+
+/// The checks shared by both solves: capacity, gains, bodies, anchors.
+fn check_input<S: Scalar>(
+    contacts: &[PointContact<S>],
+    settings: &ConstraintSettings<S>,
+    nb: usize,
+    capacity: usize,
+) -> Result<()> {
+    let rows = 3 * contacts.len();
+    if rows > capacity {
+        return Err(Error::TooManyConstraints { rows, capacity });
+    }
+    let gains = [settings.kp, settings.kd, settings.damping];
+    if let Some(index) = gains
+        .iter()
+        .position(|g| !(g.is_finite() && g.to_f64() >= 0.0))
+    {
+        return Err(Error::InvalidGain { index });
+    }
+    for (index, c) in contacts.iter().enumerate() {
+        if c.frame.body >= nb {
+            return Err(Error::FrameBodyOutOfRange { body: c.frame.body });
+        }
+        if !(c.anchor.is_finite() && c.frame.placement.is_finite()) {
+            return Err(Error::NonFinite {
+                quantity: Quantity::Contact,
+                index,
+            });
+        }
+    }
+    Ok(())
+}
+
+/// CRBA and its factorisation, `J_c` (world axes at each point),
+/// `M⁻¹ J_cᵀ` and the Cholesky factor of `J_c M⁻¹ J_cᵀ + μ I`.
+fn prepare<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, const NC: usize>(
+    model: &Model<S, NB, NQ, NV, Spatial>,
+    data: &mut Data<S, NB, NV, Spatial>,
+    cdata: &mut ConstraintData<S, NV, NC>,
+    q: &[S; NQ],
+    contacts: &[PointContact<S>],
+    damping: S,
+) -> Result<()> {
+    let rows = 3 * contacts.len();
+    cdata.rows = rows;
+    crba(model, data, q)?;
+    ltdl_factor(model, data)?;
+    joint_jacobians(model, data, &mut cdata.jacobians, q)?;
+    for (c, contact) in contacts.iter().enumerate() {
+        frame_jacobian(
+            model,
+            data,
+            &cdata.jacobians,
+            &contact.frame,
+            ReferenceFrame::LocalWorldAligned,
+            &mut cdata.columns,
+        )?;
+        for (axis, row) in cdata.jc[3 * c..3 * c + 3].iter_mut().enumerate() {
+            for (entry, column) in row.iter_mut().zip(&cdata.columns) {
+                *entry = column.lin.to_array()[axis];
+            }
+        }
+    }
+    for r in 0..rows {
+        cdata.minv_jt[r] = cdata.jc[r];
+        ltdl_solve(model, data, &mut cdata.minv_jt[r])?;
+    }
+    for r in 0..rows {
+        for s in 0..=r {
+            let g = dot(&cdata.jc[r], &cdata.minv_jt[s]);
+            cdata.delassus[r][s] = g;
+            cdata.delassus[s][r] = g;
+        }
+        cdata.delassus[r][r] += damping;
+    }
+    cholesky_in_place(&mut cdata.delassus, rows)
 }
 
 fn dot<S: Scalar, const N: usize>(a: &[S; N], b: &[S; N]) -> S {
