@@ -21,6 +21,7 @@ fn main() {
             module,
             LoadOptions {
                 floating_base: *floating_base,
+                ..LoadOptions::default()
             },
         );
     }

@@ -65,6 +65,7 @@ fn compare<const NB: usize, const NQ: usize, const NV: usize>(name: &str) {
     let urdf = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("../models/urdf/{name}.urdf"));
     let options = LoadOptions {
         floating_base: name == "solo12",
+        ..LoadOptions::default()
     };
     let compiled = rodyn_model::load(&urdf, options).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(compiled.bodies.len(), NB, "{name}: number of bodies");

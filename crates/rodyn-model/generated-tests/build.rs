@@ -29,6 +29,7 @@ fn main() {
     for (file, module, floating_base) in MODELS {
         let options = LoadOptions {
             floating_base: *floating_base,
+            ..LoadOptions::default()
         };
         let out = compile_with(models.join(file), module, options);
         writeln!(all, "include!({:?});", out.display().to_string()).unwrap();

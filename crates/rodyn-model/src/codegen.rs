@@ -89,7 +89,7 @@ pub fn generate(model: &ModelDescription, module: &str, source: &str) -> Result<
             format!(
                 "the model needs the value {x:e} (derived from the file, such as the mass of \
                  links merged by fixed joints), which is not finite or which its f32 version \
-                 cannot hold (nonzero magnitudes from 1.2e-38 to 3.4e38)"
+                 cannot hold (magnitudes up to 3.4e38)"
             ),
         ));
     }
@@ -139,13 +139,20 @@ impl Writer {
     }
 }
 
-/// Whether `x` keeps its value, within rounding, as an `f32`: zero, or a
-/// magnitude in f32's normal range (a larger one does not compile as an
-/// `f32` literal; a smaller one would become a subnormal or zero, a
-/// massless body from a tiny mass).
+/// Whether `x` can be written as an `f32` literal: a magnitude up to
+/// `f32::MAX` (a larger one does not compile). A smaller one than f32's
+/// normal range rounds towards zero, which harms only a mass
+/// ([`mass_fits_f32`]).
 #[must_use]
 pub fn fits_f32(x: f64) -> bool {
-    x == 0.0 || (x.abs() <= f64::from(f32::MAX) && x.abs() >= f64::from(f32::MIN_POSITIVE))
+    x.abs() <= f64::from(f32::MAX)
+}
+
+/// Whether a mass keeps its meaning in the f32 model: zero, or a magnitude
+/// in f32's normal range (a tiny mass would become a massless body).
+#[must_use]
+pub fn mass_fits_f32(m: f64) -> bool {
+    m == 0.0 || (fits_f32(m) && m.abs() >= f64::from(f32::MIN_POSITIVE))
 }
 
 thread_local! {

@@ -46,6 +46,12 @@ pub struct LoadOptions {
     /// For a URDF: put a free-flyer between the world and the root link.
     /// (A rodyn file says this itself with `floating_base = true`.)
     pub floating_base: bool,
+    /// Turn the warnings about what cannot harm the dynamics (a link's
+    /// tensor that only a merge makes physical, a triangle-inequality
+    /// violation, a massless link with a tensor, a robot without a name)
+    /// into errors. A rodyn file can ask for it with `strict = true` in
+    /// its `[model]` table; the CLI with `--strict`.
+    pub strict: bool,
 }
 
 /// The largest model file read, bytes: far above any robot's (a 16,000-link
@@ -101,9 +107,10 @@ pub fn load(path: &Path, options: LoadOptions) -> diagnostic::Result<ModelDescri
             &text,
             urdf::UrdfOptions {
                 floating_base: options.floating_base,
+                strict: options.strict,
             },
         ),
-        Some("toml") => rodyn_file::read_rodyn_file(path, &text),
+        Some("toml") => rodyn_file::read_rodyn_file(path, &text, options.strict),
         other => Err(Diagnostic::error(
             Location::start_of(path),
             format!(

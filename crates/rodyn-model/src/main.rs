@@ -1,9 +1,9 @@
 //! `rodyn-model`: compile, inspect and draw model files.
 //!
 //! ```text
-//! rodyn-model rust   <file> [--module NAME] [--floating-base]   print the generated Rust
-//! rodyn-model check  <file> [--floating-base]                   check the file, print warnings
-//! rodyn-model tree   <file> [--floating-base]                   bodies, joints, endpoints, drives
+//! rodyn-model rust   <file> [--module NAME] [--floating-base] [--strict]   print the generated Rust
+//! rodyn-model check  <file> [--floating-base] [--strict]                   check the file, print warnings
+//! rodyn-model tree   <file> [--floating-base] [--strict]                   bodies, joints, endpoints, drives
 //! rodyn-model render <file> [--q a,b,...] [--view xy|xz|yz|iso] [-o out.svg]   stick figure
 //! ```
 
@@ -15,10 +15,10 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 const USAGE: &str = "usage:
-  rodyn-model rust  <file> [--module NAME] [--floating-base]   print the generated Rust module
-  rodyn-model check <file> [--floating-base]                   check a model file and print its warnings
-  rodyn-model tree  <file> [--floating-base]                   print bodies, joints, endpoints, drives, nq and nv
-  rodyn-model render <file> [--floating-base] [--q a,b,...] [--view xy|xz|yz|iso] [--width PX] [-o out.svg]
+  rodyn-model rust  <file> [--module NAME] [--floating-base] [--strict]   print the generated Rust module
+  rodyn-model check <file> [--floating-base] [--strict]                   check a model file and print its warnings
+  rodyn-model tree  <file> [--floating-base] [--strict]                   print bodies, joints, endpoints, drives, nq and nv
+  rodyn-model render <file> [--floating-base] [--strict] [--q a,b,...] [--view xy|xz|yz|iso] [--width PX] [-o out.svg]
                                                                draw a stick figure at q (default: zeros; planar models view xy, others iso)";
 
 fn main() -> ExitCode {
@@ -46,6 +46,7 @@ fn run(args: &[String]) -> Result<(), String> {
         match arg.as_str() {
             "--module" => module = Some(it.next().ok_or("--module needs a name")?.clone()),
             "--floating-base" => options.floating_base = true,
+            "--strict" => options.strict = true,
             "--q" => {
                 let list = it.next().ok_or("--q needs comma-separated numbers")?;
                 q = list

@@ -1,7 +1,7 @@
 //! Physical plausibility of the numbers in a model file, checked where they
 //! are written so the error can point at them.
 
-use crate::codegen::fits_f32;
+use crate::codegen::mass_fits_f32;
 use crate::description::ModelDescription;
 use crate::diagnostic::{Diagnostic, Location, Result};
 use crate::geometry::{symmetric_eigenvalues, Mat3};
@@ -15,10 +15,10 @@ const RELATIVE_TOLERANCE: f64 = 1e-6;
 /// # Errors
 /// A diagnostic at `location` naming `what`.
 pub fn check_mass(mass: f64, what: &str, location: &Location) -> Result<()> {
-    if mass.is_finite() && mass > 0.0 && !fits_f32(mass) {
+    if mass.is_finite() && mass > 0.0 && !mass_fits_f32(mass) {
         Err(Diagnostic::error(
             location.clone(),
-            format!("{what} has mass {mass:e}, which the model's f32 version cannot hold (nonzero magnitudes from 1.2e-38 to 3.4e38)"),
+            format!("{what} has mass {mass:e}, which the model's f32 version cannot hold (nonzero masses from 1.2e-38 to 3.4e38 kg)"),
         ))
     } else if mass.is_finite() && mass > 0.0 {
         Ok(())
@@ -90,16 +90,73 @@ pub fn check_rotational_inertia(inertia: &Mat3, what: &str, location: &Location)
     Ok(())
 }
 
+/// What a rotational inertia about the centre of mass breaks, if anything,
+/// with tolerances relative to the tensor's scale.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum TensorProblem {
+    /// Principal moments (ascending, kg m²) with a negative one beyond
+    /// rounding: no mass distribution has it, and a moving body with it
+    /// can make the mass matrix indefinite.
+    NotPositiveSemiDefinite([f64; 3]),
+    /// Principal moments whose two smaller add up to less than the largest
+    /// beyond rounding: no real body has it, but the dynamics are still
+    /// well defined (Pinocchio accepts it).
+    BreaksTriangleInequality([f64; 3]),
+}
+
+/// The problem of a finite, symmetric tensor, if any: a negative principal
+/// moment below `−10⁻⁶` of the largest magnitude, or a triangle-inequality
+/// deficit beyond that.
+#[must_use]
+pub fn tensor_problem(inertia: &Mat3) -> Option<TensorProblem> {
+    let scale = inertia
+        .iter()
+        .flatten()
+        .fold(0.0_f64, |m, x| m.max(x.abs()));
+    let tol = RELATIVE_TOLERANCE * scale;
+    let e = symmetric_eigenvalues(inertia);
+    if e[0] < -tol {
+        Some(TensorProblem::NotPositiveSemiDefinite(e))
+    } else if e[0] + e[1] < e[2] - tol {
+        Some(TensorProblem::BreaksTriangleInequality(e))
+    } else {
+        None
+    }
+}
+
+impl TensorProblem {
+    /// The sentence for a diagnostic, after "`what` ".
+    #[must_use]
+    pub fn describe(&self) -> String {
+        match self {
+            Self::NotPositiveSemiDefinite(e) => format!(
+                "has an inertia matrix that is not positive semi-definite (principal moments {:.6e}, {:.6e}, {:.6e} kg m²)",
+                e[0], e[1], e[2]
+            ),
+            Self::BreaksTriangleInequality(e) => format!(
+                "has principal moments of inertia {:.6e}, {:.6e}, {:.6e} kg m² that break the triangle inequality (the two smaller must add up to at least the largest)",
+                e[0], e[1], e[2]
+            ),
+        }
+    }
+}
+
 /// Checks that every moving joint moves something: a joint whose whole
-/// subtree has no mass makes the mass matrix singular.
+/// subtree has neither mass nor rotational inertia makes the mass matrix
+/// singular.
 ///
 /// # Errors
 /// A diagnostic at the offending joint.
 pub fn check_subtrees_have_mass(model: &ModelDescription) -> Result<()> {
+    // Mass, or a rotational inertia on a massless link (Pinocchio keeps
+    // one): either gives the joint something to move.
     let mut subtree = model
         .bodies
         .iter()
-        .map(|b| b.inertia.mass)
+        .map(|b| {
+            let i = &b.inertia.inertia;
+            b.inertia.mass + i[0][0] + i[1][1] + i[2][2]
+        })
         .collect::<Vec<_>>();
     for i in (0..model.bodies.len()).rev() {
         if let Some(p) = model.bodies[i].parent {
@@ -111,7 +168,7 @@ pub fn check_subtrees_have_mass(model: &ModelDescription) -> Result<()> {
             return Err(Diagnostic::error(
                 body.location.clone(),
                 format!(
-                    "joint `{}` moves only massless links (`{}` and everything below it); its row of the mass matrix would be zero",
+                    "joint `{}` moves only links without mass or inertia (`{}` and everything below it); its row of the mass matrix would be zero",
                     body.joint_name, body.name
                 ),
             ));

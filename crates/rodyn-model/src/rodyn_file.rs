@@ -55,6 +55,9 @@ struct ModelSection {
     include: Option<S<String>>,
     #[serde(default)]
     floating_base: bool,
+    /// Warnings about what cannot harm the dynamics become errors.
+    #[serde(default)]
+    strict: bool,
 }
 
 #[derive(Deserialize, Default)]
@@ -155,12 +158,14 @@ struct Scale {
     angle: f64,
 }
 
-/// Reads a rodyn model file `text` (the content of `file`).
+/// Reads a rodyn model file `text` (the content of `file`); `strict` turns
+/// the warnings of an included URDF about what cannot harm the dynamics
+/// into errors (as `strict = true` in the file's `[model]` table does).
 ///
 /// # Errors
 /// The first problem found, with its position in `file` (or in an included
 /// URDF).
-pub fn read_rodyn_file(file: &Path, text: &str) -> Result<ModelDescription> {
+pub fn read_rodyn_file(file: &Path, text: &str, strict: bool) -> Result<ModelDescription> {
     let parsed: File = toml::from_str(text).map_err(|e| {
         let at = e.span().map_or(0, |s| s.start);
         Diagnostic::error(
@@ -172,6 +177,7 @@ pub fn read_rodyn_file(file: &Path, text: &str) -> Result<ModelDescription> {
         file,
         text,
         lines: LineIndex::new(text),
+        strict,
     }
     .read(parsed)
 }
@@ -180,6 +186,8 @@ struct Reader<'a> {
     file: &'a Path,
     text: &'a str,
     lines: LineIndex,
+    /// Strict mode asked by the caller (the file may ask too).
+    strict: bool,
 }
 
 impl Reader<'_> {
@@ -225,7 +233,7 @@ impl Reader<'_> {
         if ok && !fits_f32(v) {
             return self.error(
                 x,
-                format!("{what} is {v:e}, which the model's f32 version cannot hold (nonzero magnitudes from 1.2e-38 to 3.4e38)"),
+                format!("{what} is {v:e}, which the model's f32 version cannot hold (magnitudes up to 3.4e38)"),
             );
         }
         if ok {
@@ -246,7 +254,7 @@ impl Reader<'_> {
         if let Some(bad) = x.iter().find(|x| x.is_finite() && !fits_f32(**x * factor)) {
             return self.error(
                 v,
-                format!("{what} has the entry {bad:e}, which the model's f32 version cannot hold (nonzero magnitudes from 1.2e-38 to 3.4e38)"),
+                format!("{what} has the entry {bad:e}, which the model's f32 version cannot hold (magnitudes up to 3.4e38)"),
             );
         }
         let out = match (x.len(), planar) {
@@ -296,6 +304,7 @@ impl Reader<'_> {
                 })?;
                 let options = UrdfOptions {
                     floating_base: f.model.floating_base,
+                    strict: self.strict || f.model.strict,
                 };
                 let mut m = read_urdf(&path, &text, options)?;
                 m.included_files.insert(0, self.file.to_path_buf());

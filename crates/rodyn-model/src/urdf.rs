@@ -22,7 +22,7 @@ use crate::codegen::fits_f32;
 use crate::description::{Body, EndpointDef, Frame, JointType, ModelDescription};
 use crate::diagnostic::{Diagnostic, LineIndex, Location, Result};
 use crate::geometry::{norm, scale, Pose, RigidInertia, Vec3};
-use crate::physics::{check_link_mass, check_rotational_inertia, check_subtrees_have_mass};
+use crate::physics::{check_mass, check_subtrees_have_mass, tensor_problem, TensorProblem};
 use roxmltree::{Document, Node};
 use std::collections::{BTreeMap, HashMap};
 use std::path::Path;
@@ -35,6 +35,11 @@ pub const URDF_GRAVITY: Vec3 = [0.0, 0.0, -9.81];
 pub struct UrdfOptions {
     /// Put a free-flyer between the world and the root link.
     pub floating_base: bool,
+    /// Refuse what is only warned about otherwise: a link's tensor that
+    /// breaks the triangle inequality or is not positive semi-definite at
+    /// rounding level or before a fixed joint merges it, a massless link
+    /// with a tensor, a robot without a name.
+    pub strict: bool,
 }
 
 /// Reads URDF `text` (the content of `file`) into a checked model.
@@ -66,6 +71,7 @@ pub fn read_urdf(file: &Path, text: &str, options: UrdfOptions) -> Result<ModelD
         file,
         text,
         lines: LineIndex::new(text),
+        lenient: std::cell::RefCell::new(Vec::new()),
     };
     reader.read(&doc, options)
 }
@@ -131,6 +137,9 @@ struct Reader<'a> {
     file: &'a Path,
     text: &'a str,
     lines: LineIndex,
+    /// Findings that do not harm the dynamics: warnings, or errors in
+    /// strict mode.
+    lenient: std::cell::RefCell<Vec<Diagnostic>>,
 }
 
 /// A `<link>` as written.
@@ -215,7 +224,7 @@ impl<'a> Reader<'a> {
                 self.at_attribute(node, name),
                 format!(
                     "`{name}` is {x:e}, which the model's f32 version cannot hold \
-                     (nonzero magnitudes from 1.2e-38 to 3.4e38)"
+                     (magnitudes up to 3.4e38)"
                 ),
             )),
             Ok(x) if x.is_finite() => Ok(x),
@@ -270,7 +279,20 @@ impl<'a> Reader<'a> {
                 ),
             );
         }
-        let name = self.required_attribute(robot, "name")?.to_string();
+        let name = match robot.attribute("name") {
+            Some(name) => name.to_string(),
+            None => {
+                let stem = self
+                    .file
+                    .file_stem()
+                    .map_or_else(|| "robot".into(), |s| s.to_string_lossy().into_owned());
+                self.lenient(Diagnostic::warning(
+                    self.at_node(robot),
+                    format!("<robot> has no `name` attribute; the model is named `{stem}` after the file"),
+                ));
+                stem
+            }
+        };
         let mut ignored = Ignored::default();
         let mut links: HashMap<&str, Link> = HashMap::new();
         let mut link_order: Vec<&str> = Vec::new();
@@ -331,8 +353,48 @@ impl<'a> Reader<'a> {
         let root = self.find_root(robot, &links, &link_order, &joint_of_child, &joints)?;
         let mut model = self.assemble(name, root, &links, &joints, options)?;
         check_subtrees_have_mass(&model)?;
+        // The bodies the dynamics use, after fixed joints merged their links.
+        for body in &model.bodies {
+            match tensor_problem(&body.inertia.inertia) {
+                Some(p @ TensorProblem::NotPositiveSemiDefinite(_)) => {
+                    return Err(Diagnostic::error(
+                        body.location.clone(),
+                        format!(
+                            "body `{}` (its link and the links fixed to it) {}",
+                            body.name,
+                            p.describe()
+                        ),
+                    ));
+                }
+                Some(p) => self.lenient(Diagnostic::warning(
+                    body.location.clone(),
+                    format!(
+                        "body `{}` (its link and the links fixed to it) {}; no real body has such a tensor, but the dynamics are defined",
+                        body.name,
+                        p.describe()
+                    ),
+                )),
+                None => {}
+            }
+        }
+        let lenient = self.lenient.take();
+        if options.strict {
+            if let Some(first) = lenient.into_iter().next() {
+                return Err(Diagnostic::error(
+                    first.location,
+                    format!("{} (strict mode)", first.message),
+                ));
+            }
+        } else {
+            model.warnings.extend(lenient);
+        }
         model.warnings.extend(ignored.into_warnings());
         Ok(model)
+    }
+
+    /// Records a finding that does not harm the dynamics.
+    fn lenient(&self, warning: Diagnostic) {
+        self.lenient.borrow_mut().push(warning);
     }
 
     fn read_link(&self, node: Node<'_, '_>, ignored: &mut Ignored) -> Result<Link> {
@@ -374,13 +436,31 @@ impl<'a> Reader<'a> {
             get("izz")?,
         );
         let inertia = [[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]];
-        check_link_mass(
-            mass,
-            &inertia,
-            &what,
-            &self.at_attribute(mass_node, "value"),
-        )?;
-        check_rotational_inertia(&inertia, &what, &self.at_node(i))?;
+        let mass_at = self.at_attribute(mass_node, "value");
+        if mass == 0.0 {
+            // Pinocchio keeps such a link's tensor, and so does rodyn; a
+            // moving link with neither mass nor tensor is refused below.
+            if inertia.iter().flatten().any(|x| *x != 0.0) {
+                self.lenient(Diagnostic::warning(
+                    mass_at,
+                    format!("{what} has mass 0 but a non-zero inertia tensor; the tensor is kept"),
+                ));
+            }
+        } else {
+            check_mass(mass, &what, &mass_at)?;
+        }
+        // Each link's tensor on its own: only a warning, since a fixed
+        // joint may merge it into a body that is fine; the merged bodies
+        // are checked after assembly.
+        if let Some(problem) = tensor_problem(&inertia) {
+            self.lenient(Diagnostic::warning(
+                self.at_node(i),
+                format!(
+                    "{what} {} (the body it belongs to is checked after fixed joints merge links)",
+                    problem.describe()
+                ),
+            ));
+        }
         // The tensor is given in the inertial frame; rodyn wants it in the link frame.
         let local = RigidInertia {
             mass,
