@@ -104,16 +104,20 @@ pub enum TensorProblem {
     BreaksTriangleInequality([f64; 3]),
 }
 
+/// Inertia below which a tensor's entries are rounding noise of a zero
+/// tensor (kg m²): iCub writes a massless frame's tensor as ±5e-20.
+const NOISE_FLOOR: f64 = 1e-15;
+
 /// The problem of a finite, symmetric tensor, if any: a negative principal
-/// moment below `−10⁻⁶` of the largest magnitude, or a triangle-inequality
-/// deficit beyond that.
+/// moment below `−10⁻⁶` of the largest magnitude (and below the noise
+/// floor of 1e-15 kg m²), or a triangle-inequality deficit beyond that.
 #[must_use]
 pub fn tensor_problem(inertia: &Mat3) -> Option<TensorProblem> {
     let scale = inertia
         .iter()
         .flatten()
         .fold(0.0_f64, |m, x| m.max(x.abs()));
-    let tol = RELATIVE_TOLERANCE * scale;
+    let tol = (RELATIVE_TOLERANCE * scale).max(NOISE_FLOOR);
     let e = symmetric_eigenvalues(inertia);
     if e[0] < -tol {
         Some(TensorProblem::NotPositiveSemiDefinite(e))

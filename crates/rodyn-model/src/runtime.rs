@@ -20,9 +20,9 @@ use rodyn::spatial::{Inertia, Mat3, Motion, Sym3, Transform, Vec3};
 use rodyn::{Data, Model};
 
 /// Most bodies a run-time model holds (padding included).
-pub const MAX_BODIES: usize = 72;
+pub const MAX_BODIES: usize = 160;
 /// Most velocity coordinates.
-pub const MAX_NV: usize = 64;
+pub const MAX_NV: usize = 128;
 /// Most free-flyers (each adds one more configuration than velocity coordinate).
 pub const MAX_FREE_FLYERS: usize = 2;
 /// Configuration coordinates of the padded model.
