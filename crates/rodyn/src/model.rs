@@ -360,6 +360,30 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
     /// with [`ModelProblem::InvalidInertia`] for a negative one (the body
     /// index reported is the joint's), and
     /// [`Error::InvalidDrive`] for a `dof` out of range.
+    ///
+    /// # Example
+    ///
+    /// ```
+    /// use rodyn::algorithm::rnea::rnea;
+    /// use rodyn::drive::JointMotor;
+    /// # use rodyn::prelude::*;
+    /// # // A 1 kg point mass on a massless 1 m link, pivot about z, gravity -y.
+    /// # const PENDULUM: Model<f64, 1, 1, 1> = Model::new(
+    /// #     [None], [Joint::revolute(Axis::Z)], [Transform::IDENTITY],
+    /// #     [Inertia::point_mass(1.0, Vec3::new(1.0, 0.0, 0.0))],
+    /// #     Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
+    /// # );
+    /// let mut model = PENDULUM;
+    /// // A 50:1 gearbox on a 2e-5 kg m² rotor adds N² J_r = 0.05 kg m² at the joint.
+    /// let motor = JointMotor::new(0, 0, 50.0, 0.02, 2e-5);
+    /// model.set_armature(0, motor.reflected_inertia())?;
+    /// let mut data = Data::new();
+    /// let tau = rnea(&model, &mut data, &[0.0], &[0.0], &[1.0], None)?;
+    /// assert!((tau[0] - (1.0 + 0.05 + 9.81)).abs() < 1e-12);
+    /// assert!(model.set_armature(1, 0.1).is_err()); // only one velocity coordinate
+    /// assert!(model.set_armature(0, -0.1).is_err()); // not physical
+    /// # Ok::<(), rodyn::Error>(())
+    /// ```
     pub fn set_armature(&mut self, dof: usize, armature: S) -> Result<()> {
         if dof >= NV {
             return Err(Error::InvalidDrive {
@@ -385,6 +409,28 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
     ///
     /// # Errors
     /// [`Error::NonFinite`] for a non-finite vector.
+    ///
+    /// # Example
+    ///
+    /// ```
+    /// use rodyn::algorithm::rnea::gravity_torques;
+    /// # use rodyn::prelude::*;
+    /// # // A 1 kg point mass on a massless 1 m link, pivot about z, gravity -y.
+    /// # const PENDULUM: Model<f64, 1, 1, 1> = Model::new(
+    /// #     [None], [Joint::revolute(Axis::Z)], [Transform::IDENTITY],
+    /// #     [Inertia::point_mass(1.0, Vec3::new(1.0, 0.0, 0.0))],
+    /// #     Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
+    /// # );
+    /// let mut model = PENDULUM;
+    /// let mut data = Data::new();
+    /// // The same arm on the Moon.
+    /// model.set_gravity(Motion::new(Vec3::ZERO, Vec3::new(0.0, -1.62, 0.0)))?;
+    /// assert!((gravity_torques(&model, &mut data, &[0.0])?[0] - 1.62).abs() < 1e-12);
+    /// // A NaN is refused and the model keeps its gravity.
+    /// assert!(model.set_gravity(Motion::new(Vec3::ZERO, Vec3::new(0.0, f64::NAN, 0.0))).is_err());
+    /// assert!((model.gravity().lin.y + 1.62).abs() < 1e-15);
+    /// # Ok::<(), rodyn::Error>(())
+    /// ```
     pub fn set_gravity(&mut self, gravity: G::Motion<S>) -> Result<()> {
         if !gravity.is_finite() {
             return Err(Error::NonFinite {
@@ -491,6 +537,26 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
     }
 
     /// `q ⊕ v dt` for every joint (quaternions through the exponential map).
+    ///
+    /// # Example
+    ///
+    /// ```
+    /// use rodyn::prelude::*;
+    /// // One free-floating 1 kg ball; q = (x, y, z, qx, qy, qz, qw), v = (v, ω) in the body frame.
+    /// const BALL: Model<f64, 1, 7, 6> = Model::new(
+    ///     [None], [Joint::free_flyer()], [Transform::IDENTITY],
+    ///     [Inertia::point_mass(1.0, Vec3::ZERO)], Motion::new(Vec3::ZERO, Vec3::ZERO),
+    /// );
+    /// let q0 = BALL.neutral_configuration();
+    /// // Half a turn about z in one second, moving along x.
+    /// let q1 = BALL.integrate(&q0, &[1.0, 0.0, 0.0, 0.0, 0.0, core::f64::consts::PI], 1.0);
+    /// // The quaternion stays of unit length: (0, 0, sin(π/2), cos(π/2)).
+    /// assert!((q1[5] - 1.0).abs() < 1e-12 && q1[6].abs() < 1e-12);
+    /// // Pinocchio's SE(3) exponential: the body runs a half circle of radius 1/π.
+    /// assert!(q1[0].abs() < 1e-12 && (q1[1] - 2.0 / core::f64::consts::PI).abs() < 1e-12);
+    /// BALL.check_configuration(&q1)?;
+    /// # Ok::<(), rodyn::Error>(())
+    /// ```
     #[must_use]
     pub fn integrate(&self, q: &[S; NQ], v: &[S; NV], dt: S) -> [S; NQ] {
         let mut out = *q;

@@ -169,6 +169,27 @@ pub(crate) fn check_state<
 /// # Errors
 /// [`Error::InvalidConfiguration`](crate::Error::InvalidConfiguration) for a
 /// non-finite `q` or a quaternion that is not of unit length.
+///
+/// # Example
+///
+/// ```
+/// use rodyn::algorithm::kinematics::forward_kinematics;
+/// # use rodyn::prelude::*;
+/// # // Two 1 m links about z, 1 kg point masses at the tips, gravity -y.
+/// # const LINK: Inertia<f64> = Inertia::point_mass(1.0, Vec3::new(1.0, 0.0, 0.0));
+/// # const DOUBLE: Model<f64, 2, 2, 2> = Model::new(
+/// #     [None, Some(0)], [Joint::revolute(Axis::Z), Joint::revolute(Axis::Z)],
+/// #     [Transform::IDENTITY, Transform::from_translation(Vec3::new(1.0, 0.0, 0.0))],
+/// #     [LINK, LINK], Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
+/// # );
+/// let mut data = Data::new();
+/// let (q1, q2) = (0.4, -0.7);
+/// forward_kinematics(&DOUBLE, &mut data, &[q1, q2])?;
+/// // The elbow body's origin sits at the end of the first link.
+/// let elbow = data.o_m_i[1].trans;
+/// assert!((elbow.x - f64::cos(q1)).abs() < 1e-12 && (elbow.y - f64::sin(q1)).abs() < 1e-12);
+/// # Ok::<(), rodyn::Error>(())
+/// ```
 pub fn forward_kinematics<
     S: Scalar,
     const NB: usize,

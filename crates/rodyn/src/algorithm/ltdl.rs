@@ -354,6 +354,32 @@ fn factor_by_rows<S: Scalar, const NB: usize, const NV: usize>(
 /// Solves `M x = b` in place with the factors from [`ltdl_factor`].
 ///
 /// Inputs: `b` (NV); `data.ltdl` valid. On return `b` holds `x`.
+///
+/// # Example
+///
+/// ```
+/// use rodyn::algorithm::{crba::crba, ltdl::{ltdl_factor, ltdl_solve}};
+/// # use rodyn::prelude::*;
+/// # // Two 1 m links about z, 1 kg point masses at the tips, gravity -y.
+/// # const LINK: Inertia<f64> = Inertia::point_mass(1.0, Vec3::new(1.0, 0.0, 0.0));
+/// # const DOUBLE: Model<f64, 2, 2, 2> = Model::new(
+/// #     [None, Some(0)], [Joint::revolute(Axis::Z), Joint::revolute(Axis::Z)],
+/// #     [Transform::IDENTITY, Transform::from_translation(Vec3::new(1.0, 0.0, 0.0))],
+/// #     [LINK, LINK], Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
+/// # );
+/// let mut data = Data::new();
+/// let q2 = 0.5;
+/// crba(&DOUBLE, &mut data, &[0.1, q2])?;
+/// ltdl_factor(&DOUBLE, &mut data)?;
+/// let b = [1.0, -2.0];
+/// let mut x = b;
+/// ltdl_solve(&DOUBLE, &data, &mut x);
+/// // M = [[3 + 2 cos q₂, 1 + cos q₂], [1 + cos q₂, 1]] for this arm: check M x = b.
+/// let (m00, m10, m11) = (3.0 + 2.0 * f64::cos(q2), 1.0 + f64::cos(q2), 1.0);
+/// assert!((m00 * x[0] + m10 * x[1] - b[0]).abs() < 1e-12);
+/// assert!((m10 * x[0] + m11 * x[1] - b[1]).abs() < 1e-12);
+/// # Ok::<(), rodyn::Error>(())
+/// ```
 pub fn ltdl_solve<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     model: &Model<S, NB, NQ, NV, G>,
     data: &Data<S, NB, NV, G>,
