@@ -95,8 +95,7 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, 
         while i < NB {
             nq[i] = joints[i].const_nq();
             nv[i] = joints[i].const_nv();
-            constrained_configuration |=
-                matches!(joints[i], Joint::FreeFlyer(_) | Joint::Custom(_));
+            constrained_configuration |= joints[i].const_constrains_configuration();
             i += 1;
         }
         Self {
