@@ -15,8 +15,9 @@
 //! Pass 3 (root to leaves): `q̈ᵢ = D⁻¹ (u - Uᵀ a')`, `aᵢ = a' + S q̈ᵢ`, with
 //! `a₀ = -g`.
 
-use crate::algorithm::kinematics::{body_transform_with, check_state, joint_rates, JointSinCos};
-use crate::algorithm::rnea::check_external;
+use crate::algorithm::common::{
+    body_transform_with, check_external, check_state, joint_rates, JointSinCos,
+};
 use crate::data::Data;
 use crate::error::{Error, Quantity, Result};
 use crate::joint::{JointModel, MAX_JOINT_NV};

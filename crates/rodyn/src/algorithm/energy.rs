@@ -1,6 +1,7 @@
 //! Kinetic and potential energy and the centre of mass.
 
-use crate::algorithm::kinematics::{check_state, forward_kinematics, velocity_pass};
+use crate::algorithm::common::{check_state, velocity_pass};
+use crate::algorithm::kinematics::forward_kinematics;
 use crate::data::Data;
 use crate::error::Result;
 use crate::model::Model;

@@ -26,6 +26,10 @@ use crate::space::Space;
 use crate::topology::Topology;
 use crate::Scalar;
 
+// Also re-exported for `crba.rs` until CRBA moves to `algorithm/crba/`
+// (issue 23, item 1).
+pub(crate) use super::common::supporting_ranges;
+
 /// A pivot below this fraction of the largest diagonal entry, in units of
 /// the scalar's epsilon, means `M` is not numerically positive definite.
 const PIVOT_TOLERANCE_EPS: f64 = 64.0;
@@ -38,25 +42,6 @@ const PIVOT_TOLERANCE_EPS: f64 = 64.0;
 /// stores (Panda factor and solve about -17 % time). The Cortex-M4 keeps
 /// the plain order (these cost it about 380 instructions on the Panda).
 const HOST_ORDER: bool = cfg!(not(target_arch = "arm"));
-
-/// The ranges of coordinates that support coordinate `k` (`k` included),
-/// from `k` towards the root: `(first, last)` pairs, each one unbroken
-/// stretch of the λ chain (see [`Topology::chain_start_v`]).
-///
-/// [`Topology::chain_start_v`]: crate::topology::Topology::chain_start_v
-#[inline]
-pub(crate) fn supporting_ranges<const NB: usize, const NV: usize>(
-    topology: &Topology<NB, NV>,
-    k: Option<usize>,
-) -> impl Iterator<Item = (usize, usize)> + '_ {
-    let mut last = k;
-    core::iter::from_fn(move || {
-        let end = last?;
-        let first = topology.chain_start_v[end];
-        last = topology.lambda_v[first];
-        Some((first, end))
-    })
-}
 
 /// `y -= a x`, element by element. Slices of equal length, so the loop
 /// carries no bounds checks and vectorises.

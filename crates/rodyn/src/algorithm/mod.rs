@@ -39,6 +39,7 @@
 
 pub mod aba;
 pub mod centroidal;
+mod common;
 pub mod crba;
 pub mod energy;
 pub mod forward_dynamics;

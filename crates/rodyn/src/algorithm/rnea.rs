@@ -5,26 +5,15 @@
 //! force `fᵢ = Iᵢ aᵢ + vᵢ ×* Iᵢ vᵢ - fᵢᵉˣᵗ`. Backward pass: `τᵢ = Sᵀ fᵢ`,
 //! `f_λ += ᵏX_ᵢ* fᵢ`.
 
-use crate::algorithm::kinematics::{body_transform_with, check_state, joint_rates, JointSinCos};
+use crate::algorithm::common::{
+    body_transform_with, check_external, check_state, joint_rates, JointSinCos,
+};
 use crate::data::Data;
 use crate::error::{Quantity, Result};
 use crate::joint::JointModel;
 use crate::model::{check_finite, Model};
 use crate::space::{BodyInertia, RigidTransform, Space, VectorOps};
 use crate::Scalar;
-
-/// Checks that external forces are finite.
-pub(crate) fn check_external<S: Scalar, F: VectorOps<S>>(f_ext: Option<&[F]>) -> Result<()> {
-    if let Some(f) = f_ext {
-        if let Some(index) = f.iter().position(|f| !f.is_finite()) {
-            return Err(crate::Error::NonFinite {
-                quantity: Quantity::ExternalForce,
-                index,
-            });
-        }
-    }
-    Ok(())
-}
 
 /// Joint forces `τ = M(q) a + h(q, v) - Σ Jᵀ f_ext` that produce the
 /// acceleration `a`.
