@@ -21,7 +21,7 @@
 
 use crate::error::{Error, ModelProblem, Quantity, Result};
 use crate::joint::{Axis, Joint, JointModel};
-use crate::space::{BodyInertia, RigidTransform, Space, VectorOps};
+use crate::space::{BodyInertia, Space, VectorOps};
 use crate::spatial::axis_permutation::{
     turn_inertia_f32, turn_inertia_f64, turn_transform_f32, turn_transform_f64,
 };
@@ -582,54 +582,4 @@ pub(crate) fn check_finite<S: Scalar>(x: &[S], quantity: Quantity) -> Result<()>
         Some(index) => Err(Error::NonFinite { quantity, index }),
         None => Ok(()),
     }
-}
-
-/// The physical checks of one geometry, used by [`Model::validate`].
-pub(crate) fn validate_inertia_3d<S: Scalar>(
-    i: &Inertia<S>,
-) -> core::result::Result<(), ModelProblem> {
-    let m = i.mass.to_f64();
-    if !(i.is_finite() && m >= 0.0) {
-        return Err(ModelProblem::InvalidMass);
-    }
-    let r = &i.rot_inertia;
-    let (xx, yy, zz) = (r.xx.to_f64(), r.yy.to_f64(), r.zz.to_f64());
-    let (xy, xz, yz) = (r.xy.to_f64(), r.xz.to_f64(), r.yz.to_f64());
-    // Positive semi-definite through the leading minors, with a small slack
-    // for rounding, and the triangle inequality of the diagonal.
-    let scale = (xx.abs() + yy.abs() + zz.abs()).max(f64::MIN_POSITIVE);
-    let tol = 1e-9 * scale;
-    let minor2 = xx * yy - xy * xy;
-    let det = xx * (yy * zz - yz * yz) - xy * (xy * zz - yz * xz) + xz * (xy * yz - yy * xz);
-    let psd = xx >= -tol
-        && yy >= -tol
-        && zz >= -tol
-        && minor2 >= -tol * scale
-        && det >= -tol * scale * scale;
-    let triangle = xx + yy + tol >= zz && xx + zz + tol >= yy && yy + zz + tol >= xx;
-    if psd && triangle {
-        Ok(())
-    } else {
-        Err(ModelProblem::InvalidInertia)
-    }
-}
-
-/// Checks a 3-D placement: finite and orthonormal rotation.
-pub(crate) fn validate_transform_3d<S: Scalar>(
-    x: &Transform<S>,
-) -> core::result::Result<(), ModelProblem> {
-    if !x.is_finite() {
-        return Err(ModelProblem::RotationNotOrthonormal);
-    }
-    let rtr = x.rot.tr_mul_mat(&x.rot);
-    let tol = 1e3 * S::EPSILON;
-    for a in 0..3 {
-        for b in 0..3 {
-            let expect = if a == b { 1.0 } else { 0.0 };
-            if (rtr.m[a][b].to_f64() - expect).abs() > tol {
-                return Err(ModelProblem::RotationNotOrthonormal);
-            }
-        }
-    }
-    Ok(())
 }

@@ -37,17 +37,9 @@ use core::fmt::Debug;
 /// Largest number of velocity coordinates of one joint.
 pub const MAX_JOINT_NV: usize = 6;
 
-/// What is wrong with a joint's configuration.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum ConfigurationError {
-    /// A non-finite coordinate.
-    NonFinite,
-    /// A unit quaternion whose norm is too far from one.
-    QuaternionNotUnit {
-        /// The norm found.
-        norm: f64,
-    },
-}
+/// What is wrong with a joint's configuration (defined with the other
+/// errors, so that the error module does not depend on the joints).
+pub use crate::error::ConfigurationError;
 
 /// The behaviour of one joint type in a geometry `G`.
 ///

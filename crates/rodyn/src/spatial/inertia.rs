@@ -5,6 +5,7 @@
 //! body's frame. Ten numbers, and transforming it is a rotation and a shift.
 
 use super::{Force, Motion, Sym3, Transform, Vec3};
+use crate::error::ModelProblem;
 use crate::space::{BodyInertia, RigidTransform};
 use crate::Scalar;
 
@@ -116,5 +117,56 @@ impl<S: Scalar> BodyInertia<S> for Inertia<S> {
     }
     fn is_finite(&self) -> bool {
         self.mass.is_finite() && self.com.is_finite() && self.rot_inertia.is_finite()
+    }
+}
+
+impl<S: Scalar> Inertia<S> {
+    /// Checks that the inertia is physical: finite, non-negative mass, a
+    /// rotational inertia that is positive semi-definite and satisfies the
+    /// triangle inequality of its diagonal (with a relative slack of 1e-9
+    /// for rounding). Used by [`Model::validate`](crate::Model::validate).
+    ///
+    /// # Errors
+    /// [`ModelProblem::InvalidMass`] or [`ModelProblem::InvalidInertia`].
+    ///
+    /// # Example
+    ///
+    /// ```
+    /// use rodyn::error::ModelProblem;
+    /// use rodyn::spatial::{Inertia, Sym3, Vec3};
+    /// // A 2 kg, 10 x 20 x 30 cm box about its centre is physical.
+    /// let (m, a, b, c) = (2.0, 0.1, 0.2, 0.3);
+    /// let box_ = Sym3::diagonal(m * (b * b + c * c) / 12.0, m * (a * a + c * c) / 12.0, m * (a * a + b * b) / 12.0);
+    /// assert_eq!(Inertia::new(m, Vec3::ZERO, box_).validate(), Ok(()));
+    /// // No body has I_zz > I_xx + I_yy.
+    /// let impossible = Sym3::diagonal(0.01, 0.01, 0.03);
+    /// assert_eq!(Inertia::new(m, Vec3::ZERO, impossible).validate(), Err(ModelProblem::InvalidInertia));
+    /// assert_eq!(Inertia::new(-1.0, Vec3::ZERO, box_).validate(), Err(ModelProblem::InvalidMass));
+    /// ```
+    pub fn validate(&self) -> Result<(), ModelProblem> {
+        let m = self.mass.to_f64();
+        if !(self.is_finite() && m >= 0.0) {
+            return Err(ModelProblem::InvalidMass);
+        }
+        let r = &self.rot_inertia;
+        let (xx, yy, zz) = (r.xx.to_f64(), r.yy.to_f64(), r.zz.to_f64());
+        let (xy, xz, yz) = (r.xy.to_f64(), r.xz.to_f64(), r.yz.to_f64());
+        // Positive semi-definite through the leading minors, with a small slack
+        // for rounding, and the triangle inequality of the diagonal.
+        let scale = (xx.abs() + yy.abs() + zz.abs()).max(f64::MIN_POSITIVE);
+        let tol = 1e-9 * scale;
+        let minor2 = xx * yy - xy * xy;
+        let det = xx * (yy * zz - yz * yz) - xy * (xy * zz - yz * xz) + xz * (xy * yz - yy * xz);
+        let psd = xx >= -tol
+            && yy >= -tol
+            && zz >= -tol
+            && minor2 >= -tol * scale
+            && det >= -tol * scale * scale;
+        let triangle = xx + yy + tol >= zz && xx + zz + tol >= yy && yy + zz + tol >= xx;
+        if psd && triangle {
+            Ok(())
+        } else {
+            Err(ModelProblem::InvalidInertia)
+        }
     }
 }
