@@ -5,7 +5,7 @@
 //! |--------------------------|-------------------------------------------------------------------|
 //! | `run [example]`          | builds the firmware, runs `example` (default: the arm controller) in QEMU, prints the decoded defmt log |
 //! | `test`                   | host tests, the no_std core for thumbv7em, every firmware example in QEMU against its expected output, sizes, lint |
-//! | `lint`                   | rustfmt, clippy and rustdoc, warnings as errors, host and firmware |
+//! | `lint`                   | rustfmt, clippy and rustdoc, warnings as errors, host and firmware; the core without float features stops at one error; `cargo package` of the published crates |
 //! | `costs`                  | runs the cost probe, measures sizes, rewrites the tables in `docs/sections/firmware.md` and `firmware/expected/sizes.txt` |
 //! | `bless`                  | rewrites `firmware/expected/*.log` from fresh runs, keeping `*` wildcards |
 //! | `profile [words]`        | one call of each algorithm on each model in QEMU with an instruction trace; prints where its instructions go, line by line (calls whose label contains every word) |
@@ -145,10 +145,49 @@ fn lint() -> Result<()> {
         &["doc", "--workspace", "--no-deps"],
         &[("RUSTDOCFLAGS", "-D warnings")],
     )?;
+    no_float_features_is_one_error()?;
+    // Together, so that rodyn-model's dependency on the unpublished core
+    // resolves to the core packaged beside it.
+    shell::cargo(&[
+        "package",
+        "-p",
+        "rodyn",
+        "-p",
+        "rodyn-model",
+        "--allow-dirty",
+    ])?;
     println!(
         "xtask lint: clean in {:.0} s",
         started.elapsed().as_secs_f64()
     );
+    Ok(())
+}
+
+/// Building the core with neither `std` nor `libm` must stop at the one
+/// `compile_error!` naming both features, not bury it in type errors.
+fn no_float_features_is_one_error() -> Result<()> {
+    let mut command = shell::cargo_command(&shell::root());
+    command.args([
+        "check",
+        "-p",
+        "rodyn",
+        "--no-default-features",
+        "--message-format=short",
+    ]);
+    println!("$ {}", shell::describe(&command));
+    let output = command.output()?;
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    let errors: Vec<&str> = stderr
+        .lines()
+        .filter(|line| line.contains("error") && !line.contains("could not compile"))
+        .collect();
+    let names_both = |line: &&str| line.contains("`std`") && line.contains("`libm`");
+    if output.status.success() || errors.len() != 1 || !errors.iter().all(names_both) {
+        bail!(
+            "rodyn without `std` and `libm` should fail with one error naming both features; got:\n{}",
+            errors.join("\n")
+        );
+    }
     Ok(())
 }
 

@@ -76,6 +76,27 @@ pub struct Data<S: Scalar, const NB: usize, const NV: usize, G: Space = Spatial>
 
 impl<S: Scalar, const NB: usize, const NV: usize, G: Space> Data<S, NB, NV, G> {
     /// A zeroed workspace; `const`, so it can initialise a `static`.
+    ///
+    /// # Example
+    ///
+    /// ```
+    /// use rodyn::prelude::*;
+    /// use rodyn::algorithm::rnea::gravity_torques;
+    /// // Sized by the model's body and velocity counts; no allocation, so it can
+    /// // be built in a `const` (or a `static` behind a cell on firmware).
+    /// const EMPTY: Data<f64, 1, 1> = Data::new();
+    /// let mut data = EMPTY;
+    /// # const PENDULUM: Model<f64, 1, 1, 1> = Model::new(
+    /// #     [None], [Joint::revolute(Axis::Z)], [Transform::IDENTITY],
+    /// #     [Inertia::point_mass(1.0, Vec3::new(1.0, 0.0, 0.0))],
+    /// #     Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
+    /// # );
+    /// let tau = *gravity_torques(&PENDULUM, &mut data, &[0.0])?;
+    /// // An algorithm returns a view of its result field and leaves it in `data`.
+    /// assert_eq!(tau, data.tau);
+    /// assert!((tau[0] - 9.81).abs() < 1e-12);
+    /// # Ok::<(), rodyn::Error>(())
+    /// ```
     #[must_use]
     pub const fn new() -> Self {
         Self {

@@ -1,6 +1,5 @@
 //! Errors: what failed and where, never a silent NaN.
 
-use crate::joint::ConfigurationError;
 use core::fmt;
 
 /// Which input or result a non-finite value was found in.
@@ -329,3 +328,15 @@ impl defmt::Format for Error {
 
 /// Shorthand for `core::result::Result<T, rodyn::Error>`.
 pub type Result<T> = core::result::Result<T, Error>;
+
+/// What is wrong with a joint's configuration.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ConfigurationError {
+    /// A non-finite coordinate.
+    NonFinite,
+    /// A unit quaternion whose norm is too far from one.
+    QuaternionNotUnit {
+        /// The norm found.
+        norm: f64,
+    },
+}

@@ -21,7 +21,7 @@
 
 use crate::error::{Error, ModelProblem, Quantity, Result};
 use crate::joint::{Axis, Joint, JointModel};
-use crate::space::{BodyInertia, RigidTransform, Space, VectorOps};
+use crate::space::{BodyInertia, Space, VectorOps};
 use crate::spatial::axis_permutation::{
     turn_inertia_f32, turn_inertia_f64, turn_transform_f32, turn_transform_f64,
 };
@@ -95,8 +95,7 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, 
         while i < NB {
             nq[i] = joints[i].const_nq();
             nv[i] = joints[i].const_nv();
-            constrained_configuration |=
-                matches!(joints[i], Joint::FreeFlyer(_) | Joint::Custom(_));
+            constrained_configuration |= joints[i].const_constrains_configuration();
             i += 1;
         }
         Self {
@@ -370,6 +369,30 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
     /// with [`ModelProblem::InvalidInertia`] for a negative one (the body
     /// index reported is the joint's), and
     /// [`Error::InvalidDrive`] for a `dof` out of range.
+    ///
+    /// # Example
+    ///
+    /// ```
+    /// use rodyn::algorithm::rnea::rnea;
+    /// use rodyn::drive::JointMotor;
+    /// # use rodyn::prelude::*;
+    /// # // A 1 kg point mass on a massless 1 m link, pivot about z, gravity -y.
+    /// # const PENDULUM: Model<f64, 1, 1, 1> = Model::new(
+    /// #     [None], [Joint::revolute(Axis::Z)], [Transform::IDENTITY],
+    /// #     [Inertia::point_mass(1.0, Vec3::new(1.0, 0.0, 0.0))],
+    /// #     Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
+    /// # );
+    /// let mut model = PENDULUM;
+    /// // A 50:1 gearbox on a 2e-5 kg m² rotor adds N² J_r = 0.05 kg m² at the joint.
+    /// let motor = JointMotor::new(0, 0, 50.0, 0.02, 2e-5);
+    /// model.set_armature(0, motor.reflected_inertia())?;
+    /// let mut data = Data::new();
+    /// let tau = rnea(&model, &mut data, &[0.0], &[0.0], &[1.0], None)?;
+    /// assert!((tau[0] - (1.0 + 0.05 + 9.81)).abs() < 1e-12);
+    /// assert!(model.set_armature(1, 0.1).is_err()); // only one velocity coordinate
+    /// assert!(model.set_armature(0, -0.1).is_err()); // not physical
+    /// # Ok::<(), rodyn::Error>(())
+    /// ```
     pub fn set_armature(&mut self, dof: usize, armature: S) -> Result<()> {
         if dof >= NV {
             return Err(Error::InvalidDrive {
@@ -395,6 +418,28 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
     ///
     /// # Errors
     /// [`Error::NonFinite`] for a non-finite vector.
+    ///
+    /// # Example
+    ///
+    /// ```
+    /// use rodyn::algorithm::rnea::gravity_torques;
+    /// # use rodyn::prelude::*;
+    /// # // A 1 kg point mass on a massless 1 m link, pivot about z, gravity -y.
+    /// # const PENDULUM: Model<f64, 1, 1, 1> = Model::new(
+    /// #     [None], [Joint::revolute(Axis::Z)], [Transform::IDENTITY],
+    /// #     [Inertia::point_mass(1.0, Vec3::new(1.0, 0.0, 0.0))],
+    /// #     Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
+    /// # );
+    /// let mut model = PENDULUM;
+    /// let mut data = Data::new();
+    /// // The same arm on the Moon.
+    /// model.set_gravity(Motion::new(Vec3::ZERO, Vec3::new(0.0, -1.62, 0.0)))?;
+    /// assert!((gravity_torques(&model, &mut data, &[0.0])?[0] - 1.62).abs() < 1e-12);
+    /// // A NaN is refused and the model keeps its gravity.
+    /// assert!(model.set_gravity(Motion::new(Vec3::ZERO, Vec3::new(0.0, f64::NAN, 0.0))).is_err());
+    /// assert!((model.gravity().lin.y + 1.62).abs() < 1e-15);
+    /// # Ok::<(), rodyn::Error>(())
+    /// ```
     pub fn set_gravity(&mut self, gravity: G::Motion<S>) -> Result<()> {
         if !gravity.is_finite() {
             return Err(Error::NonFinite {
@@ -501,6 +546,26 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
     }
 
     /// `q ⊕ v dt` for every joint (quaternions through the exponential map).
+    ///
+    /// # Example
+    ///
+    /// ```
+    /// use rodyn::prelude::*;
+    /// // One free-floating 1 kg ball; q = (x, y, z, qx, qy, qz, qw), v = (v, ω) in the body frame.
+    /// const BALL: Model<f64, 1, 7, 6> = Model::new(
+    ///     [None], [Joint::free_flyer()], [Transform::IDENTITY],
+    ///     [Inertia::point_mass(1.0, Vec3::ZERO)], Motion::new(Vec3::ZERO, Vec3::ZERO),
+    /// );
+    /// let q0 = BALL.neutral_configuration();
+    /// // Half a turn about z in one second, moving along x.
+    /// let q1 = BALL.integrate(&q0, &[1.0, 0.0, 0.0, 0.0, 0.0, core::f64::consts::PI], 1.0);
+    /// // The quaternion stays of unit length: (0, 0, sin(π/2), cos(π/2)).
+    /// assert!((q1[5] - 1.0).abs() < 1e-12 && q1[6].abs() < 1e-12);
+    /// // Pinocchio's SE(3) exponential: the body runs a half circle of radius 1/π.
+    /// assert!(q1[0].abs() < 1e-12 && (q1[1] - 2.0 / core::f64::consts::PI).abs() < 1e-12);
+    /// BALL.check_configuration(&q1)?;
+    /// # Ok::<(), rodyn::Error>(())
+    /// ```
     #[must_use]
     pub fn integrate(&self, q: &[S; NQ], v: &[S; NV], dt: S) -> [S; NQ] {
         let mut out = *q;
@@ -536,88 +601,4 @@ pub(crate) fn check_result<S: Scalar>(x: &[S], quantity: Quantity) -> Result<()>
         Some(index) => Err(Error::NonFiniteResult { quantity, index }),
         None => Ok(()),
     }
-}
-
-/// The physical checks of one geometry, used by [`Model::validate`].
-pub(crate) fn validate_inertia_3d<S: Scalar>(
-    i: &Inertia<S>,
-) -> core::result::Result<(), ModelProblem> {
-    if !i.is_finite() {
-        return Err(ModelProblem::NonFiniteParameter);
-    }
-    let m = i.mass.to_f64();
-    if m < 0.0 {
-        return Err(ModelProblem::InvalidMass);
-    }
-    // The algorithms form m c, m |c|² (the inertia about the body's
-    // origin) and traces; finite parameters whose sums or products
-    // overflow are refused.
-    let c = i.com.norm_squared();
-    let r = &i.rot_inertia;
-    let trace = r.xx + r.yy + r.zz;
-    if !(i.mass * c).is_finite() || !trace.is_finite() || !i.rot_inertia_at_origin().is_finite() {
-        return Err(ModelProblem::Overflow);
-    }
-    let r = &i.rot_inertia;
-    // Scaled to the largest entry, so that the minors below cannot
-    // overflow (an inertia with 1e308 entries would otherwise pass as NaN).
-    let largest = [r.xx, r.yy, r.zz, r.xy, r.xz, r.yz]
-        .iter()
-        .fold(f64::MIN_POSITIVE, |m, v| m.max(v.to_f64().abs()));
-    let (xx, yy, zz) = (
-        r.xx.to_f64() / largest,
-        r.yy.to_f64() / largest,
-        r.zz.to_f64() / largest,
-    );
-    let (xy, xz, yz) = (
-        r.xy.to_f64() / largest,
-        r.xz.to_f64() / largest,
-        r.yz.to_f64() / largest,
-    );
-    // Positive semi-definite through the leading minors, with a small slack
-    // for rounding, and the triangle inequality of the diagonal.
-    let scale = (xx.abs() + yy.abs() + zz.abs()).max(f64::MIN_POSITIVE);
-    let tol = 1e-9 * scale;
-    let minor2 = xx * yy - xy * xy;
-    let det = xx * (yy * zz - yz * yz) - xy * (xy * zz - yz * xz) + xz * (xy * yz - yy * xz);
-    let psd = xx >= -tol
-        && yy >= -tol
-        && zz >= -tol
-        && minor2 >= -tol * scale
-        && det >= -tol * scale * scale;
-    let triangle = xx + yy + tol >= zz && xx + zz + tol >= yy && yy + zz + tol >= xx;
-    if psd && triangle {
-        Ok(())
-    } else {
-        Err(ModelProblem::InvalidInertia)
-    }
-}
-
-/// Checks a 3-D placement: finite, and a proper rotation (orthonormal,
-/// determinant +1).
-pub(crate) fn validate_transform_3d<S: Scalar>(
-    x: &Transform<S>,
-) -> core::result::Result<(), ModelProblem> {
-    if !x.is_finite() {
-        return Err(ModelProblem::NonFiniteParameter);
-    }
-    let rtr = x.rot.tr_mul_mat(&x.rot);
-    let tol = 1e3 * S::EPSILON;
-    for a in 0..3 {
-        for b in 0..3 {
-            let expect = if a == b { 1.0 } else { 0.0 };
-            if (rtr.m[a][b].to_f64() - expect).abs() > tol {
-                return Err(ModelProblem::RotationNotOrthonormal);
-            }
-        }
-    }
-    // Orthonormal, so the determinant is ±1: the sign tells a reflection.
-    let m = &x.rot.m;
-    let det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
-        - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
-        + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-    if det.to_f64() < 0.0 {
-        return Err(ModelProblem::Reflection);
-    }
-    Ok(())
 }

@@ -15,8 +15,9 @@
 //! Pass 3 (root to leaves): `q̈ᵢ = D⁻¹ (u - Uᵀ a')`, `aᵢ = a' + S q̈ᵢ`, with
 //! `a₀ = -g`.
 
-use crate::algorithm::kinematics::{body_transform_with, check_state, joint_rates, JointSinCos};
-use crate::algorithm::rnea::check_external;
+use crate::algorithm::common::{
+    body_transform_with, check_external, check_state, joint_rates, JointSinCos,
+};
 use crate::data::Data;
 use crate::error::{Error, Quantity, Result};
 use crate::joint::{JointModel, MAX_JOINT_NV};
@@ -44,6 +45,25 @@ pub const SINGULAR_PIVOT_EPS: f64 = 64.0;
 /// Non-finite inputs, invalid configurations, and
 /// [`Error::SingularArticulatedInertia`] for a joint that moves a (nearly)
 /// massless subtree.
+///
+/// # Example
+///
+/// ```
+/// use rodyn::algorithm::aba::aba;
+/// use rodyn::prelude::*;
+/// // A 1 kg point mass on a massless 1 m link, pivot about z, gravity -y.
+/// const PENDULUM: Model<f64, 1, 1, 1> = Model::new(
+///     [None], [Joint::revolute(Axis::Z)], [Transform::IDENTITY],
+///     [Inertia::point_mass(1.0, Vec3::new(1.0, 0.0, 0.0))],
+///     Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
+/// );
+/// let mut data = Data::new();
+/// // No torque: the pendulum falls with q̈ = -(g / l) cos q.
+/// let q = 0.3;
+/// let ddq = aba(&PENDULUM, &mut data, &[q], &[2.0], &[0.0], None)?;
+/// assert!((ddq[0] + 9.81 * f64::cos(q)).abs() < 1e-12);
+/// # Ok::<(), rodyn::Error>(())
+/// ```
 pub fn aba<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     model: &Model<S, NB, NQ, NV, G>,
     data: &'d mut Data<S, NB, NV, G>,

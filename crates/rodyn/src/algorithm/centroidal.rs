@@ -16,8 +16,8 @@
 //! Bodies welded to the world (Pinocchio's universe inertia) are not part
 //! of the model and do not count.
 
+use super::common::poses;
 use super::frames::FrameSpace;
-use super::jacobian::poses;
 use super::kinematics::forward_kinematics_acceleration;
 use crate::data::Data;
 use crate::error::Result;

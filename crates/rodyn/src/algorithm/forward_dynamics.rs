@@ -18,8 +18,8 @@
 //! ABA is O(n). Which is faster depends on the model and the scalar type:
 //! the workspace README charts the crossover.
 
-use crate::algorithm::kinematics::check_state;
-use crate::algorithm::rnea::{check_external, nonlinear_effects};
+use crate::algorithm::common::{check_external, check_state};
+use crate::algorithm::rnea::nonlinear_effects;
 use crate::algorithm::{aba::aba, crba, ltdl};
 use crate::data::Data;
 use crate::error::{Quantity, Result};

@@ -157,6 +157,32 @@ pub fn express_world_motion<S: Scalar, G: FrameSpace>(
 ///
 /// # Errors
 /// [`Error::FrameBodyOutOfRange`] when `frame.body` is not below `NB`.
+///
+/// # Example
+///
+/// ```
+/// use rodyn::algorithm::{frames::frame_placement, kinematics::forward_kinematics};
+/// use rodyn::Frame;
+/// # use rodyn::prelude::*;
+/// # // Two 1 m links about z, 1 kg point masses at the tips, gravity -y.
+/// # const LINK: Inertia<f64> = Inertia::point_mass(1.0, Vec3::new(1.0, 0.0, 0.0));
+/// # const DOUBLE: Model<f64, 2, 2, 2> = Model::new(
+/// #     [None, Some(0)], [Joint::revolute(Axis::Z), Joint::revolute(Axis::Z)],
+/// #     [Transform::IDENTITY, Transform::from_translation(Vec3::new(1.0, 0.0, 0.0))],
+/// #     [LINK, LINK], Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
+/// # );
+/// let mut data = Data::new();
+/// let (q1, q2) = (0.4, -0.7);
+/// forward_kinematics(&DOUBLE, &mut data, &[q1, q2])?;
+/// // A tool frame 1 m along the second link: the arm's tip.
+/// let tip = Frame::new(1, Transform::from_translation(Vec3::new(1.0, 0.0, 0.0)));
+/// let o_m_tip = frame_placement(&data, &tip)?;
+/// let (x, y) = (f64::cos(q1) + f64::cos(q1 + q2), f64::sin(q1) + f64::sin(q1 + q2));
+/// assert!((o_m_tip.trans.x - x).abs() < 1e-12 && (o_m_tip.trans.y - y).abs() < 1e-12);
+/// // A frame on a body the model does not have is an error, not a panic.
+/// assert!(frame_placement(&data, &Frame::new(5, Transform::IDENTITY)).is_err());
+/// # Ok::<(), rodyn::Error>(())
+/// ```
 #[inline]
 pub fn frame_placement<S: Scalar, const NB: usize, const NV: usize, G: Space>(
     data: &Data<S, NB, NV, G>,

@@ -45,10 +45,11 @@
 //! # Ok::<(), rodyn::Error>(())
 //! ```
 
+use super::common::{pose_step, JointSinCos};
 use super::frames::{
     express_world_motion, frame_placement, frame_velocity, zero_motion, FrameSpace, ReferenceFrame,
 };
-use super::kinematics::{body_transform_with, forward_kinematics_velocity, JointSinCos};
+use super::kinematics::forward_kinematics_velocity;
 use crate::data::Data;
 use crate::error::Result;
 use crate::frame::Frame;
@@ -116,41 +117,6 @@ pub fn joint_jacobians<
         }
     }
     Ok(())
-}
-
-/// Body poses at `q` (as [`forward_kinematics`](super::kinematics::forward_kinematics): `data.li_m_i`,
-/// `data.o_m_i`), the joint angles' sines and cosines formed first on
-/// hosts. `q` must already be checked.
-#[inline]
-pub(crate) fn poses<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
-    model: &Model<S, NB, NQ, NV, G>,
-    data: &mut Data<S, NB, NV, G>,
-    q: &[S; NQ],
-) {
-    let sin_cos = JointSinCos::at(model, q);
-    for i in 0..NB {
-        pose_step(model, data, i, q, sin_cos.as_ref());
-    }
-}
-
-/// Body i's `ˡⁱMᵢ` and `ᵒMᵢ` into `data`, its parent's pose already there;
-/// returns `ᵒMᵢ`.
-#[inline(always)]
-fn pose_step<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
-    model: &Model<S, NB, NQ, NV, G>,
-    data: &mut Data<S, NB, NV, G>,
-    i: usize,
-    q: &[S; NQ],
-    sin_cos: Option<&JointSinCos<S, NB>>,
-) -> G::Transform<S> {
-    let li_m_i = body_transform_with(model, i, q, sin_cos);
-    let o_m_i = match model.parent(i) {
-        Some(p) => data.o_m_i[p].compose(&li_m_i),
-        None => li_m_i,
-    };
-    data.li_m_i[i] = li_m_i;
-    data.o_m_i[i] = o_m_i;
-    o_m_i
 }
 
 /// All joint Jacobians and their time derivatives at `(q, v)`: `jac.j` and

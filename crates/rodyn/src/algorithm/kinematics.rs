@@ -12,155 +12,14 @@ use crate::model::{check_finite, Model};
 use crate::space::{RigidTransform, Space, VectorOps};
 use crate::Scalar;
 
-/// Joint transform and placement of body `i`: `ˡⁱMᵢ = placement · jMi(q)`.
-///
-/// Inlined into each algorithm: with the firmware at opt-level 3 that saves
-/// the Panda about 10 instructions a body (its bounds checks fold into the
-/// algorithm's loop) for 420 bytes of the pendulum's flash. (At opt-level
-/// "s" one shared out-of-line copy is the better trade: 800 bytes for two
-/// instructions a body.)
-#[inline]
-pub(crate) fn body_transform<
-    S: Scalar,
-    const NB: usize,
-    const NQ: usize,
-    const NV: usize,
-    G: Space,
->(
-    model: &Model<S, NB, NQ, NV, G>,
-    i: usize,
-    q: &[S; NQ],
-) -> G::Transform<S> {
-    model
-        .joint(i)
-        .placed_transform(model.placement(i), joint_configuration(model, i, q))
-}
-
-/// Whether the passes over the bodies form the sines and cosines of all
-/// the joint angles before the bodies' work ([`JointSinCos`]), on hosts:
-/// each pair is a chain of about 20 dependent operations, which one
-/// body's work beside it does not cover; formed in a pass of their own,
-/// two at a time, they overlap. The Cortex-M4, which runs one instruction
-/// after the other, would only pay for storing them.
-pub(crate) const ANGLES_FIRST: bool = cfg!(not(target_arch = "arm"));
-
-/// The sine and cosine of each body's joint angle
-/// ([`JointModel::angle`]; a zero angle's for a joint without one), formed
-/// in one pass ([`Scalar::sin_cos_array`]).
-pub(crate) struct JointSinCos<S, const NB: usize> {
-    sin: [S; NB],
-    cos: [S; NB],
-}
-
-impl<S: Scalar, const NB: usize> JointSinCos<S, NB> {
-    /// At configuration `q`; `None` where [`ANGLES_FIRST`] is false.
-    #[inline(always)]
-    pub(crate) fn at<const NQ: usize, const NV: usize, G: Space>(
-        model: &Model<S, NB, NQ, NV, G>,
-        q: &[S; NQ],
-    ) -> Option<Self> {
-        ANGLES_FIRST
-            .then(|| Self::from_angles(|i| model.joint(i).angle(joint_configuration(model, i, q))))
-    }
-
-    /// Of `angle(i)` for each body i, a zero angle's where it is `None`.
-    #[inline(always)]
-    pub(crate) fn from_angles(angle: impl Fn(usize) -> Option<S>) -> Self {
-        let angle = core::array::from_fn(|i| angle(i).unwrap_or(S::ZERO));
-        let (sin, cos) = S::sin_cos_array(&angle);
-        Self { sin, cos }
-    }
-
-    /// Body i's `(sin, cos)`.
-    #[inline(always)]
-    pub(crate) fn get(&self, i: usize) -> (S, S) {
-        (self.sin[i], self.cos[i])
-    }
-}
-
-/// [`body_transform`], from the sines and cosines in `sin_cos` when given.
-#[inline(always)]
-pub(crate) fn body_transform_with<
-    S: Scalar,
-    const NB: usize,
-    const NQ: usize,
-    const NV: usize,
-    G: Space,
->(
-    model: &Model<S, NB, NQ, NV, G>,
-    i: usize,
-    q: &[S; NQ],
-    sin_cos: Option<&JointSinCos<S, NB>>,
-) -> G::Transform<S> {
-    match sin_cos {
-        // `ANGLES_FIRST` again so that the Cortex-M4's build drops the arm
-        // before inlining (its planar forward dynamics, 92 instructions).
-        Some(t) if ANGLES_FIRST => model.joint(i).placed_transform_from_sin_cos(
-            model.placement(i),
-            joint_configuration(model, i, q),
-            t.get(i),
-        ),
-        _ => body_transform(model, i, q),
-    }
-}
-
-/// Body `i`'s joint configuration: its slice of `q`.
-#[inline(always)]
-pub(crate) fn joint_configuration<
-    'q,
-    S: Scalar,
-    const NB: usize,
-    const NQ: usize,
-    const NV: usize,
-    G: Space,
->(
-    model: &Model<S, NB, NQ, NV, G>,
-    i: usize,
-    q: &'q [S; NQ],
-) -> &'q [S] {
-    let t = model.topology();
-    let iq = t.idx_q[i];
-    &q[iq..iq + t.nq[i]]
-}
-
-/// Body `i`'s joint rates: its slice of `v` (which holds every joint's
-/// rates, or accelerations).
-#[inline(always)]
-pub(crate) fn joint_rates<
-    'v,
-    S: Scalar,
-    const NB: usize,
-    const NQ: usize,
-    const NV: usize,
-    G: Space,
->(
-    model: &Model<S, NB, NQ, NV, G>,
-    i: usize,
-    v: &'v [S; NV],
-) -> &'v [S] {
-    let t = model.topology();
-    let iv = t.idx_v[i];
-    &v[iv..iv + t.nv[i]]
-}
-
-/// Checks `q` (finite, unit quaternions) and `v` (finite).
-pub(crate) fn check_state<
-    S: Scalar,
-    const NB: usize,
-    const NQ: usize,
-    const NV: usize,
-    G: Space,
->(
-    model: &Model<S, NB, NQ, NV, G>,
-    q: &[S; NQ],
-    v: Option<&[S; NV]>,
-) -> Result<()> {
-    model.check_configuration(q)?;
-    if let Some(v) = v {
-        check_finite(v, Quantity::Velocity)?;
-    }
-    Ok(())
-}
+use super::common::{joint_rates, velocity_pass};
+// Also re-exported for `crba.rs`, which imports them from here until CRBA
+// moves to `algorithm/crba/` (issue 23, item 1); new code imports them
+// from `common`.
+pub(crate) use super::common::{
+    body_transform, body_transform_with, check_state, joint_configuration, JointSinCos,
+    ANGLES_FIRST,
+};
 
 /// Body poses at configuration `q`.
 ///
@@ -169,6 +28,27 @@ pub(crate) fn check_state<
 /// # Errors
 /// [`Error::InvalidConfiguration`](crate::Error::InvalidConfiguration) for a
 /// non-finite `q` or a quaternion that is not of unit length.
+///
+/// # Example
+///
+/// ```
+/// use rodyn::algorithm::kinematics::forward_kinematics;
+/// # use rodyn::prelude::*;
+/// # // Two 1 m links about z, 1 kg point masses at the tips, gravity -y.
+/// # const LINK: Inertia<f64> = Inertia::point_mass(1.0, Vec3::new(1.0, 0.0, 0.0));
+/// # const DOUBLE: Model<f64, 2, 2, 2> = Model::new(
+/// #     [None, Some(0)], [Joint::revolute(Axis::Z), Joint::revolute(Axis::Z)],
+/// #     [Transform::IDENTITY, Transform::from_translation(Vec3::new(1.0, 0.0, 0.0))],
+/// #     [LINK, LINK], Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
+/// # );
+/// let mut data = Data::new();
+/// let (q1, q2) = (0.4, -0.7);
+/// forward_kinematics(&DOUBLE, &mut data, &[q1, q2])?;
+/// // The elbow body's origin sits at the end of the first link.
+/// let elbow = data.o_m_i[1].trans;
+/// assert!((elbow.x - f64::cos(q1)).abs() < 1e-12 && (elbow.y - f64::sin(q1)).abs() < 1e-12);
+/// # Ok::<(), rodyn::Error>(())
+/// ```
 pub fn forward_kinematics<
     S: Scalar,
     const NB: usize,
@@ -261,119 +141,4 @@ pub fn forward_kinematics_acceleration<
             .add_motion(&(a_parent + data.c[i]), joint_rates(model, i, a));
     }
     Ok(())
-}
-
-/// The forward pass shared by the dynamics algorithms: `ˡⁱMᵢ`,
-/// `vᵢ = ⁱX_λ v_λ + v_J` and `cᵢ = vᵢ × v_J`. Inputs must already be checked.
-///
-/// It leaves the world poses `ᵒMᵢ` alone: RNEA and ABA work in body frames
-/// and never read them, and composing them costs a 3x3 product per body
-/// (about a tenth of RNEA on the Cortex-M4). Callers that need poses run
-/// [`forward_kinematics`] or [`forward_kinematics_velocity`].
-#[inline]
-pub(crate) fn velocity_pass<
-    S: Scalar,
-    const NB: usize,
-    const NQ: usize,
-    const NV: usize,
-    G: Space,
->(
-    model: &Model<S, NB, NQ, NV, G>,
-    data: &mut Data<S, NB, NV, G>,
-    q: &[S; NQ],
-    v: &[S; NV],
-) {
-    for i in 0..NB {
-        let (li_m_i, v_i) = body_velocity(model, data, i, q, v);
-        data.c[i] = model.joint(i).cross_motion(&v_i, joint_rates(model, i, v));
-        data.v[i] = v_i;
-        data.li_m_i[i] = li_m_i;
-    }
-}
-
-/// Body `i`'s transform `ˡⁱMᵢ` and velocity `vᵢ = ⁱX_λ v_λ + S q̇ᵢ`, given
-/// its parent's velocity in `data.v` (the step every root-to-leaves pass
-/// starts a body with).
-#[inline(always)]
-pub(crate) fn body_velocity<
-    S: Scalar,
-    const NB: usize,
-    const NQ: usize,
-    const NV: usize,
-    G: Space,
->(
-    model: &Model<S, NB, NQ, NV, G>,
-    data: &Data<S, NB, NV, G>,
-    i: usize,
-    q: &[S; NQ],
-    v: &[S; NV],
-) -> (G::Transform<S>, G::Motion<S>) {
-    let li_m_i = body_transform(model, i, q);
-    let v_parent = match model.parent(i) {
-        Some(p) => li_m_i.act_inv_motion(&data.v[p]),
-        None => G::Motion::<S>::ZERO,
-    };
-    let v_i = model
-        .joint(i)
-        .add_motion(&v_parent, joint_rates(model, i, v));
-    (li_m_i, v_i)
-}
-
-#[cfg(all(test, feature = "std"))]
-mod tests {
-    use super::{body_transform, body_transform_with, JointSinCos};
-    use crate::joint::{Axis, Joint};
-    use crate::planar::{PlanarInertia, PlanarJoint, PlanarMotion, PlanarTransform, Vec2};
-    use crate::spatial::{Inertia, Mat3, Motion, Sym3, Transform, Vec3};
-    use crate::Model;
-
-    /// The transforms from the sines and cosines formed first are those
-    /// formed body by body, bit for bit, for every joint type.
-    #[test]
-    fn transforms_from_the_angles_formed_first_are_the_same() {
-        let tilted = Mat3::from_axis_angle(&Vec3::new(0.6, 0.0, 0.8), 0.4);
-        let spatial: Model<f64, 5, 11, 10, _> = Model::new(
-            [None, Some(0), Some(1), Some(2), Some(3)],
-            [
-                Joint::free_flyer(),
-                Joint::revolute(Axis::Y),
-                Joint::revolute(Axis::Unit(Vec3::new(0.0, 0.6, 0.8))),
-                Joint::prismatic(Axis::X),
-                Joint::revolute(Axis::Z),
-            ],
-            [Transform::new(tilted, Vec3::new(0.1, -0.2, 0.3)); 5],
-            [Inertia::new(1.0, Vec3::new(0.1, 0.0, 0.0), Sym3::diagonal(0.1, 0.2, 0.3)); 5],
-            Motion::new(Vec3::ZERO, Vec3::new(0.0, 0.0, -9.81)),
-        );
-        let mut q = [0.7, -0.3, 0.2, 0.0, 0.6, 0.0, 0.8, 2.9, -7.4, 0.35, 1.0e6];
-        q[3..7].copy_from_slice(&[0.0, 0.6, 0.0, 0.8]);
-        let sin_cos = JointSinCos::at(&spatial, &q).expect("hosts form the angles first");
-        for i in 0..5 {
-            let (a, b) = (
-                body_transform_with(&spatial, i, &q, Some(&sin_cos)),
-                body_transform(&spatial, i, &q),
-            );
-            assert_eq!(a, b, "body {i}");
-        }
-        let planar: Model<f64, 3, 3, 3, _> = Model::new_planar(
-            [None, Some(0), Some(1)],
-            [
-                PlanarJoint::Revolute,
-                PlanarJoint::Prismatic(Vec2::new(0.6, 0.8)),
-                PlanarJoint::Revolute,
-            ],
-            [PlanarTransform::from_angle(0.3, Vec2::new(0.5, 0.1)); 3],
-            [PlanarInertia::new(1.0, Vec2::new(0.2, 0.0), 0.1); 3],
-            PlanarMotion::new(0.0, Vec2::new(0.0, -9.81)),
-        );
-        let q = [-2.2, 0.4, 4.1];
-        let sin_cos = JointSinCos::at(&planar, &q).expect("hosts form the angles first");
-        for i in 0..3 {
-            let (a, b) = (
-                body_transform_with(&planar, i, &q, Some(&sin_cos)),
-                body_transform(&planar, i, &q),
-            );
-            assert_eq!(a, b, "planar body {i}");
-        }
-    }
 }

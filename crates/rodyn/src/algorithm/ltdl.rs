@@ -26,6 +26,10 @@ use crate::space::Space;
 use crate::topology::Topology;
 use crate::Scalar;
 
+// Also re-exported for `crba.rs` until CRBA moves to `algorithm/crba/`
+// (issue 23, item 1).
+pub(crate) use super::common::supporting_ranges;
+
 /// A pivot below this fraction of the largest diagonal entry, in units of
 /// the scalar's epsilon, means `M` is not numerically positive definite.
 const PIVOT_TOLERANCE_EPS: f64 = 64.0;
@@ -38,25 +42,6 @@ const PIVOT_TOLERANCE_EPS: f64 = 64.0;
 /// stores (Panda factor and solve about -17 % time). The Cortex-M4 keeps
 /// the plain order (these cost it about 380 instructions on the Panda).
 const HOST_ORDER: bool = cfg!(not(target_arch = "arm"));
-
-/// The ranges of coordinates that support coordinate `k` (`k` included),
-/// from `k` towards the root: `(first, last)` pairs, each one unbroken
-/// stretch of the λ chain (see [`Topology::chain_start_v`]).
-///
-/// [`Topology::chain_start_v`]: crate::topology::Topology::chain_start_v
-#[inline]
-pub(crate) fn supporting_ranges<const NB: usize, const NV: usize>(
-    topology: &Topology<NB, NV>,
-    k: Option<usize>,
-) -> impl Iterator<Item = (usize, usize)> + '_ {
-    let mut last = k;
-    core::iter::from_fn(move || {
-        let end = last?;
-        let first = topology.chain_start_v[end];
-        last = topology.lambda_v[first];
-        Some((first, end))
-    })
-}
 
 /// `y -= a x`, element by element. Slices of equal length, so the loop
 /// carries no bounds checks and vectorises.
@@ -360,6 +345,32 @@ fn factor_by_rows<S: Scalar, const NB: usize, const NV: usize>(
 /// (left unchanged), and
 /// [`Error::NonFiniteResult`] when the
 /// solution overflows (`b` then holds it).
+///
+/// # Example
+///
+/// ```
+/// use rodyn::algorithm::{crba::crba, ltdl::{ltdl_factor, ltdl_solve}};
+/// # use rodyn::prelude::*;
+/// # // Two 1 m links about z, 1 kg point masses at the tips, gravity -y.
+/// # const LINK: Inertia<f64> = Inertia::point_mass(1.0, Vec3::new(1.0, 0.0, 0.0));
+/// # const DOUBLE: Model<f64, 2, 2, 2> = Model::new(
+/// #     [None, Some(0)], [Joint::revolute(Axis::Z), Joint::revolute(Axis::Z)],
+/// #     [Transform::IDENTITY, Transform::from_translation(Vec3::new(1.0, 0.0, 0.0))],
+/// #     [LINK, LINK], Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
+/// # );
+/// let mut data = Data::new();
+/// let q2 = 0.5;
+/// crba(&DOUBLE, &mut data, &[0.1, q2])?;
+/// ltdl_factor(&DOUBLE, &mut data)?;
+/// let b = [1.0, -2.0];
+/// let mut x = b;
+/// ltdl_solve(&DOUBLE, &data, &mut x)?;
+/// // M = [[3 + 2 cos q₂, 1 + cos q₂], [1 + cos q₂, 1]] for this arm: check M x = b.
+/// let (m00, m10, m11) = (3.0 + 2.0 * f64::cos(q2), 1.0 + f64::cos(q2), 1.0);
+/// assert!((m00 * x[0] + m10 * x[1] - b[0]).abs() < 1e-12);
+/// assert!((m10 * x[0] + m11 * x[1] - b[1]).abs() < 1e-12);
+/// # Ok::<(), rodyn::Error>(())
+/// ```
 pub fn ltdl_solve<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     model: &Model<S, NB, NQ, NV, G>,
     data: &Data<S, NB, NV, G>,

@@ -5,26 +5,15 @@
 //! force `fᵢ = Iᵢ aᵢ + vᵢ ×* Iᵢ vᵢ - fᵢᵉˣᵗ`. Backward pass: `τᵢ = Sᵀ fᵢ`,
 //! `f_λ += ᵏX_ᵢ* fᵢ`.
 
-use crate::algorithm::kinematics::{body_transform_with, check_state, joint_rates, JointSinCos};
+use crate::algorithm::common::{
+    body_transform_with, check_external, check_state, joint_rates, JointSinCos,
+};
 use crate::data::Data;
 use crate::error::{Quantity, Result};
 use crate::joint::JointModel;
 use crate::model::{check_finite, check_result, Model};
 use crate::space::{BodyInertia, RigidTransform, Space, VectorOps};
 use crate::Scalar;
-
-/// Checks that external forces are finite.
-pub(crate) fn check_external<S: Scalar, F: VectorOps<S>>(f_ext: Option<&[F]>) -> Result<()> {
-    if let Some(f) = f_ext {
-        if let Some(index) = f.iter().position(|f| !f.is_finite()) {
-            return Err(crate::Error::NonFinite {
-                quantity: Quantity::ExternalForce,
-                index,
-            });
-        }
-    }
-    Ok(())
-}
 
 /// Joint forces `τ = M(q) a + h(q, v) - Σ Jᵀ f_ext` that produce the
 /// acceleration `a`.
@@ -39,6 +28,25 @@ pub(crate) fn check_external<S: Scalar, F: VectorOps<S>>(f_ext: Option<&[F]>) ->
 ///
 /// # Errors
 /// Non-finite inputs and invalid configurations, naming the entry.
+///
+/// # Example
+///
+/// ```
+/// use rodyn::algorithm::rnea::rnea;
+/// use rodyn::prelude::*;
+/// // A 1 kg point mass on a massless 1 m link, pivot about z, gravity -y.
+/// const PENDULUM: Model<f64, 1, 1, 1> = Model::new(
+///     [None], [Joint::revolute(Axis::Z)], [Transform::IDENTITY],
+///     [Inertia::point_mass(1.0, Vec3::new(1.0, 0.0, 0.0))],
+///     Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
+/// );
+/// let mut data = Data::new();
+/// let (q, v, a) = (0.3, 2.0, 1.5);
+/// let tau = rnea(&PENDULUM, &mut data, &[q], &[v], &[a], None)?;
+/// // τ = m l² q̈ + m g l cos q: the centripetal force does no work on the joint.
+/// assert!((tau[0] - (a + 9.81 * f64::cos(q))).abs() < 1e-12);
+/// # Ok::<(), rodyn::Error>(())
+/// ```
 pub fn rnea<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     model: &Model<S, NB, NQ, NV, G>,
     data: &'d mut Data<S, NB, NV, G>,
@@ -209,6 +217,28 @@ pub(crate) fn backward_force_pass_with<
 ///
 /// # Errors
 /// As [`rnea`].
+///
+/// # Example
+///
+/// ```
+/// use rodyn::algorithm::rnea::nonlinear_effects;
+/// # use rodyn::prelude::*;
+/// # // Two 1 m links about z, 1 kg point masses at the tips, gravity -y.
+/// # const LINK: Inertia<f64> = Inertia::point_mass(1.0, Vec3::new(1.0, 0.0, 0.0));
+/// # const DOUBLE: Model<f64, 2, 2, 2> = Model::new(
+/// #     [None, Some(0)], [Joint::revolute(Axis::Z), Joint::revolute(Axis::Z)],
+/// #     [Transform::IDENTITY, Transform::from_translation(Vec3::new(1.0, 0.0, 0.0))],
+/// #     [LINK, LINK], Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
+/// # );
+/// let mut data = Data::new();
+/// // Upper link at rest and level, elbow bent 90° and turning at 2 rad/s: the
+/// // elbow needs no torque but gravity's, the shoulder also carries the
+/// // centrifugal force m l₁ l₂ sin(q₂) q̇₂² of the tip.
+/// let h = nonlinear_effects(&DOUBLE, &mut data, &[0.0, core::f64::consts::FRAC_PI_2], &[0.0, 2.0], None)?;
+/// assert!((h[1] - 0.0).abs() < 1e-12);
+/// assert!((h[0] - (2.0 * 9.81 - 4.0)).abs() < 1e-12);
+/// # Ok::<(), rodyn::Error>(())
+/// ```
 pub fn nonlinear_effects<
     'd,
     S: Scalar,
@@ -237,6 +267,25 @@ pub fn nonlinear_effects<
 ///
 /// # Errors
 /// As [`rnea`].
+///
+/// # Example
+///
+/// ```
+/// use rodyn::algorithm::rnea::gravity_torques;
+/// # use rodyn::prelude::*;
+/// # // Two 1 m links about z, 1 kg point masses at the tips, gravity -y.
+/// # const LINK: Inertia<f64> = Inertia::point_mass(1.0, Vec3::new(1.0, 0.0, 0.0));
+/// # const DOUBLE: Model<f64, 2, 2, 2> = Model::new(
+/// #     [None, Some(0)], [Joint::revolute(Axis::Z), Joint::revolute(Axis::Z)],
+/// #     [Transform::IDENTITY, Transform::from_translation(Vec3::new(1.0, 0.0, 0.0))],
+/// #     [LINK, LINK], Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
+/// # );
+/// let mut data = Data::new();
+/// // Both links level: the shoulder holds 1 kg at 1 m and 1 kg at 2 m.
+/// let g = gravity_torques(&DOUBLE, &mut data, &[0.0, 0.0])?;
+/// assert!((g[0] - 3.0 * 9.81).abs() < 1e-12 && (g[1] - 9.81).abs() < 1e-12);
+/// # Ok::<(), rodyn::Error>(())
+/// ```
 pub fn gravity_torques<
     'd,
     S: Scalar,

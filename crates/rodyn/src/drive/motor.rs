@@ -35,6 +35,16 @@ pub struct JointMotor<S> {
 impl<S: Scalar> JointMotor<S> {
     /// A motor with gear ratio `N`, torque constant `k_t` (N m/A) and rotor
     /// inertia `J_r` (kg m²) on coordinate `dof`, reading current `w[input]`.
+    ///
+    /// # Example
+    ///
+    /// ```
+    /// use rodyn::drive::JointMotor;
+    /// // 50:1 gearbox, 0.02 N m/A, rotor 2e-5 kg m², on coordinate 0, current in w[0].
+    /// let motor = JointMotor::<f64>::new(0, 0, 50.0, 0.02, 2e-5);
+    /// assert!((motor.torque_per_current() - 1.0).abs() < 1e-12); // N k_t, N m/A
+    /// assert!((motor.reflected_inertia() - 0.05).abs() < 1e-12); // N² J_r, kg m²
+    /// ```
     #[must_use]
     pub const fn new(
         dof: usize,

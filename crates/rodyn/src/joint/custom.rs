@@ -48,6 +48,12 @@ pub struct CustomJoint<S: 'static> {
     pub behaviour: &'static dyn JointBehaviour<S>,
 }
 
+impl<S> CustomJoint<S> {
+    /// A custom joint's own [`JointBehaviour::check_configuration`] decides
+    /// what is valid, so it is always asked.
+    pub const CONSTRAINS_CONFIGURATION: bool = true;
+}
+
 impl<S> fmt::Debug for CustomJoint<S> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.debug_struct("CustomJoint")

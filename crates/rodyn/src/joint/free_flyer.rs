@@ -13,6 +13,16 @@ use crate::Scalar;
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct FreeFlyer;
 
+impl FreeFlyer {
+    /// Configuration coordinates: position and unit quaternion.
+    pub const NQ: usize = 7;
+    /// Velocity coordinates: body-frame linear and angular velocity.
+    pub const NV: usize = 6;
+    /// The orientation is a quaternion that must stay of unit length, so a
+    /// finite `q` is not necessarily valid.
+    pub const CONSTRAINS_CONFIGURATION: bool = true;
+}
+
 /// How far a quaternion's norm may stray from one, in units of the scalar's
 /// epsilon, before the configuration is rejected.
 const QUATERNION_TOLERANCE_EPS: f64 = 1.0e3;
@@ -110,6 +120,32 @@ impl FreeFlyer {
         out[..3].copy_from_slice(&p.to_array());
         out[3..7].copy_from_slice(&quat);
         self.normalize(out);
+    }
+    /// The configuration rate `q̇ = Q(q) v` (7 entries): the body-frame
+    /// linear velocity rotated into the parent, and `½ q ⊗ (ω, 0)` for the
+    /// quaternion; the derivative of [`integrate`](Self::integrate) at
+    /// `dt = 0`.
+    pub fn configuration_rate<S: Scalar>(&self, q: &[S], v: &[S], q_dot: &mut [S]) {
+        // The rotation is built from the normalised quaternion so that an
+        // unnormalised one does not scale the position rate.
+        let (x, y, z, w) = (q[3], q[4], q[5], q[6]);
+        let n2 = x * x + y * y + z * z + w * w;
+        let inv = if n2 > S::ZERO {
+            S::ONE / n2.sqrt()
+        } else {
+            S::ONE
+        };
+        let rot = Mat3::from_quaternion(x * inv, y * inv, z * inv, w * inv);
+        let p_dot = rot.mul_vec(&Vec3::new(v[0], v[1], v[2]));
+        q_dot[..3].copy_from_slice(&p_dot.to_array());
+        // q̇ = ½ q ⊗ (ω, 0) is linear in q, so its exact flow keeps |q|
+        // constant whatever |q| is.
+        let half = S::from_f64(0.5);
+        let (wx, wy, wz) = (v[3] * half, v[4] * half, v[5] * half);
+        q_dot[3] = w * wx + y * wz - z * wy;
+        q_dot[4] = w * wy + z * wx - x * wz;
+        q_dot[5] = w * wz + x * wy - y * wx;
+        q_dot[6] = -(x * wx + y * wy + z * wz);
     }
     /// Finite coordinates and a quaternion of unit norm.
     pub fn check_configuration<S: Scalar>(&self, q: &[S]) -> Result<(), ConfigurationError> {

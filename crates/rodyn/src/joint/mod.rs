@@ -37,17 +37,9 @@ use core::fmt::Debug;
 /// Largest number of velocity coordinates of one joint.
 pub const MAX_JOINT_NV: usize = 6;
 
-/// What is wrong with a joint's configuration.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum ConfigurationError {
-    /// A non-finite coordinate.
-    NonFinite,
-    /// A unit quaternion whose norm is too far from one.
-    QuaternionNotUnit {
-        /// The norm found.
-        norm: f64,
-    },
-}
+/// What is wrong with a joint's configuration (defined with the other
+/// errors, so that the error module does not depend on the joints).
+pub use crate::error::ConfigurationError;
 
 /// The behaviour of one joint type in a geometry `G`.
 ///
@@ -125,6 +117,18 @@ pub trait JointModel<S: Scalar, G: Space>: Copy + Debug {
     fn neutral(&self, q: &mut [S]);
     /// `out = q ⊕ v dt`: the configuration reached moving at `v` for `dt`.
     fn integrate(&self, q: &[S], v: &[S], dt: S, out: &mut [S]);
+    /// The configuration rate `q̇ = Q(q) v`, written to `q_dot[..nq]`: the
+    /// derivative of [`integrate`](Self::integrate) with respect to `dt` at
+    /// zero. The default is `q̇ = v` when nq = nv and otherwise
+    /// [`rate_from_integrate`], a central difference of `integrate`.
+    fn configuration_rate(&self, q: &[S], v: &[S], q_dot: &mut [S]) {
+        if self.nq() == self.nv() {
+            let n = self.nq();
+            q_dot[..n].copy_from_slice(&v[..n]);
+        } else {
+            rate_from_integrate(self, q, v, q_dot);
+        }
+    }
     /// Checks that `q` is a valid configuration (finite, unit quaternion).
     fn check_configuration(&self, q: &[S]) -> Result<(), ConfigurationError>;
     /// `false` when every finite `q` is a valid configuration, so that
@@ -136,6 +140,31 @@ pub trait JointModel<S: Scalar, G: Space>: Copy + Debug {
     }
     /// Projects `q` back onto the configuration manifold (renormalises quaternions).
     fn normalize(&self, q: &mut [S]);
+}
+
+/// Largest nq [`rate_from_integrate`] differentiates.
+pub const MAX_RATE_NQ: usize = 8;
+
+/// `q̇ = Q(q) v` of any joint as the central difference of its
+/// [`integrate`](JointModel::integrate) over a step of ε^⅓ (an error of
+/// about ε^⅔ relative: 4e-11 in f64, 2e-5 in f32), for joints with
+/// nq ≠ nv that do not state their rate. Writes `q_dot[..nq]`, nq at most
+/// [`MAX_RATE_NQ`] (entries beyond it are left untouched).
+pub fn rate_from_integrate<S: Scalar, G: Space, J: JointModel<S, G>>(
+    joint: &J,
+    q: &[S],
+    v: &[S],
+    q_dot: &mut [S],
+) {
+    let n = joint.nq().min(MAX_RATE_NQ);
+    let h = (S::from_f64(S::EPSILON).ln() * S::from_f64(1.0 / 3.0)).exp();
+    let (mut ahead, mut behind) = ([S::ZERO; MAX_RATE_NQ], [S::ZERO; MAX_RATE_NQ]);
+    joint.integrate(q, v, h, &mut ahead[..n]);
+    joint.integrate(q, v, -h, &mut behind[..n]);
+    let inv = S::ONE / (h + h);
+    for k in 0..n {
+        q_dot[k] = (ahead[k] - behind[k]) * inv;
+    }
 }
 
 /// The built-in joints of 3-D models.
@@ -173,9 +202,10 @@ impl<S: Scalar> Joint<S> {
     #[must_use]
     pub const fn const_nq(&self) -> usize {
         match self {
-            Self::Revolute(_) | Self::Prismatic(_) => 1,
+            Self::Revolute(_) => Revolute::<S>::NQ,
+            Self::Prismatic(_) => Prismatic::<S>::NQ,
             Self::Fixed => 0,
-            Self::FreeFlyer(_) => 7,
+            Self::FreeFlyer(_) => FreeFlyer::NQ,
             Self::Custom(c) => c.nq,
         }
     }
@@ -183,10 +213,25 @@ impl<S: Scalar> Joint<S> {
     #[must_use]
     pub const fn const_nv(&self) -> usize {
         match self {
-            Self::Revolute(_) | Self::Prismatic(_) => 1,
+            Self::Revolute(_) => Revolute::<S>::NV,
+            Self::Prismatic(_) => Prismatic::<S>::NV,
             Self::Fixed => 0,
-            Self::FreeFlyer(_) => 6,
+            Self::FreeFlyer(_) => FreeFlyer::NV,
             Self::Custom(c) => c.nv,
+        }
+    }
+    /// Whether a finite `q` can still be invalid (a quaternion off unit
+    /// length, a custom joint's own rule), usable in `const` context: each
+    /// variant answers with its type's `CONSTRAINS_CONFIGURATION`, so a new
+    /// joint type must state it here rather than be left out of a list.
+    #[must_use]
+    pub const fn const_constrains_configuration(&self) -> bool {
+        match self {
+            Self::Revolute(_) => Revolute::<S>::CONSTRAINS_CONFIGURATION,
+            Self::Prismatic(_) => Prismatic::<S>::CONSTRAINS_CONFIGURATION,
+            Self::Fixed => false,
+            Self::FreeFlyer(_) => FreeFlyer::CONSTRAINS_CONFIGURATION,
+            Self::Custom(_) => CustomJoint::<S>::CONSTRAINS_CONFIGURATION,
         }
     }
     /// Converts the scalar type; `None` for a custom joint, whose behaviour
@@ -338,9 +383,18 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
             Self::Custom(c) => c.behaviour.integrate(q, v, dt, out),
         }
     }
+    fn configuration_rate(&self, q: &[S], v: &[S], q_dot: &mut [S]) {
+        match self {
+            Self::Revolute(_) | Self::Prismatic(_) => q_dot[0] = v[0],
+            Self::Fixed => {}
+            Self::FreeFlyer(j) => j.configuration_rate(q, v, q_dot),
+            Self::Custom(c) if c.nq == c.nv => q_dot[..c.nq].copy_from_slice(&v[..c.nv]),
+            Self::Custom(_) => rate_from_integrate(self, q, v, q_dot),
+        }
+    }
     #[inline]
     fn constrains_configuration(&self) -> bool {
-        matches!(self, Self::FreeFlyer(_) | Self::Custom(_))
+        self.const_constrains_configuration()
     }
     fn check_configuration(&self, q: &[S]) -> Result<(), ConfigurationError> {
         match self {

@@ -13,6 +13,16 @@ pub struct Prismatic<S> {
     pub axis: Axis<S>,
 }
 
+impl<S> Prismatic<S> {
+    /// Configuration coordinates: the displacement.
+    pub const NQ: usize = 1;
+    /// Velocity coordinates.
+    pub const NV: usize = 1;
+    /// Every finite `q` is a valid configuration (no quaternion to keep
+    /// of unit length).
+    pub const CONSTRAINS_CONFIGURATION: bool = false;
+}
+
 impl<S: Scalar> Prismatic<S> {
     /// `jMi(q)`.
     #[inline]

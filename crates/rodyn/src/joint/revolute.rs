@@ -14,6 +14,16 @@ pub struct Revolute<S> {
     pub axis: Axis<S>,
 }
 
+impl<S> Revolute<S> {
+    /// Configuration coordinates: the angle.
+    pub const NQ: usize = 1;
+    /// Velocity coordinates.
+    pub const NV: usize = 1;
+    /// Every finite `q` is a valid configuration (no quaternion to keep
+    /// of unit length).
+    pub const CONSTRAINS_CONFIGURATION: bool = false;
+}
+
 impl<S: Scalar> Revolute<S> {
     /// `jMi(q)`.
     #[inline]

@@ -166,6 +166,19 @@ impl<S: Scalar> JointModel<S, Planar> for PlanarJoint<S> {
             }
         }
     }
+    fn configuration_rate(&self, q: &[S], v: &[S], q_dot: &mut [S]) {
+        match self {
+            Self::Revolute | Self::Prismatic(_) => q_dot[0] = v[0],
+            Self::Fixed => {}
+            Self::Floating => {
+                // [x y θ] with [vx vy ω] in the body frame.
+                let (s, c) = q[2].sin_cos();
+                q_dot[0] = c * v[0] - s * v[1];
+                q_dot[1] = s * v[0] + c * v[1];
+                q_dot[2] = v[2];
+            }
+        }
+    }
     fn check_configuration(&self, q: &[S]) -> Result<(), ConfigurationError> {
         if q[..self.const_nq()].iter().all(|x| x.is_finite()) {
             Ok(())

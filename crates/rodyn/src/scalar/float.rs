@@ -17,6 +17,12 @@ macro_rules! float_fn {
         {
             $libm($x)
         }
+        // Never built: the `compile_error!` above stops such a build; this
+        // arm only keeps the compiler from adding a dozen type errors to it.
+        #[cfg(not(any(feature = "std", feature = "libm")))]
+        {
+            $x
+        }
     }};
 }
 
@@ -56,6 +62,11 @@ impl Scalar for f64 {
         #[cfg(all(not(feature = "std"), feature = "libm"))]
         {
             libm::atan2(self, x)
+        }
+        #[cfg(not(any(feature = "std", feature = "libm")))]
+        {
+            let _ = x;
+            self
         }
     }
     #[inline]
@@ -108,6 +119,10 @@ impl Scalar for f32 {
         {
             super::sin_cos_f32::sin_cos(self)
         }
+        #[cfg(not(any(feature = "std", feature = "libm")))]
+        {
+            (self, self)
+        }
     }
     #[inline]
     fn atan2(self, x: Self) -> Self {
@@ -118,6 +133,11 @@ impl Scalar for f32 {
         #[cfg(all(not(feature = "std"), feature = "libm"))]
         {
             libm::atan2f(self, x)
+        }
+        #[cfg(not(any(feature = "std", feature = "libm")))]
+        {
+            let _ = x;
+            self
         }
     }
     #[inline]

@@ -26,7 +26,7 @@ use crate::joint::{Joint, JointModel};
 use crate::model::Model;
 use crate::planar::{Planar, PlanarJoint};
 use crate::space::Space;
-use crate::spatial::{Mat3, Spatial, Vec3};
+use crate::spatial::Spatial;
 use crate::Scalar;
 
 /// How an integrator moves the configuration.
@@ -87,84 +87,24 @@ pub fn add_scaled<S: Scalar, const N: usize>(q: &[S; N], q_dot: &[S; N], dt: S) 
     core::array::from_fn(|k| q[k] + q_dot[k] * dt)
 }
 
+// The rates themselves live beside `integrate` in each joint
+// ([`JointModel::configuration_rate`]); a geometry only forwards to them.
 impl ConfigurationRate for Spatial {
+    #[inline]
     fn joint_configuration_rate<S: Scalar>(joint: &Joint<S>, q: &[S], v: &[S], q_dot: &mut [S]) {
-        match joint {
-            Joint::Revolute(_) | Joint::Prismatic(_) => q_dot[0] = v[0],
-            Joint::Fixed => {}
-            Joint::FreeFlyer(_) => {
-                // Position: the body-frame linear velocity rotated into the
-                // parent. The rotation is built from the normalised
-                // quaternion so that an unnormalised one does not scale it.
-                let (x, y, z, w) = (q[3], q[4], q[5], q[6]);
-                let n2 = x * x + y * y + z * z + w * w;
-                let inv = if n2 > S::ZERO {
-                    S::ONE / n2.sqrt()
-                } else {
-                    S::ONE
-                };
-                let rot = Mat3::from_quaternion(x * inv, y * inv, z * inv, w * inv);
-                let p_dot = rot.mul_vec(&Vec3::new(v[0], v[1], v[2]));
-                q_dot[..3].copy_from_slice(&p_dot.to_array());
-                // Orientation: q̇ = ½ q ⊗ (ω, 0), linear in q, so its exact
-                // flow keeps |q| constant whatever |q| is.
-                let half = S::from_f64(0.5);
-                let (wx, wy, wz) = (v[3] * half, v[4] * half, v[5] * half);
-                q_dot[3] = w * wx + y * wz - z * wy;
-                q_dot[4] = w * wy + z * wx - x * wz;
-                q_dot[5] = w * wz + x * wy - y * wx;
-                q_dot[6] = -(x * wx + y * wy + z * wz);
-            }
-            Joint::Custom(c) => custom_rate(joint, c.nq, c.nv, q, v, q_dot),
-        }
-    }
-}
-
-/// A custom joint with `nq == nv` is taken as `q̇ = v`; otherwise its rate is
-/// the central difference of its own `integrate` over a step of ε^⅓ (an
-/// error of about ε^⅔ relative: 4e-11 in f64, 2e-5 in f32).
-fn custom_rate<S: Scalar, J: JointModel<S, Spatial>>(
-    joint: &J,
-    nq: usize,
-    nv: usize,
-    q: &[S],
-    v: &[S],
-    q_dot: &mut [S],
-) {
-    if nq == nv {
-        q_dot[..nq].copy_from_slice(&v[..nv]);
-        return;
-    }
-    const MAX_NQ: usize = 8;
-    let n = nq.min(MAX_NQ);
-    let h = (S::from_f64(S::EPSILON).ln() * S::from_f64(1.0 / 3.0)).exp();
-    let (mut ahead, mut behind) = ([S::ZERO; MAX_NQ], [S::ZERO; MAX_NQ]);
-    joint.integrate(q, v, h, &mut ahead[..n]);
-    joint.integrate(q, v, -h, &mut behind[..n]);
-    let inv = S::ONE / (h + h);
-    for k in 0..n {
-        q_dot[k] = (ahead[k] - behind[k]) * inv;
+        joint.configuration_rate(q, v, q_dot);
     }
 }
 
 impl ConfigurationRate for Planar {
+    #[inline]
     fn joint_configuration_rate<S: Scalar>(
         joint: &PlanarJoint<S>,
         q: &[S],
         v: &[S],
         q_dot: &mut [S],
     ) {
-        match joint {
-            PlanarJoint::Revolute | PlanarJoint::Prismatic(_) => q_dot[0] = v[0],
-            PlanarJoint::Fixed => {}
-            PlanarJoint::Floating => {
-                // [x y θ] with [vx vy ω] in the body frame.
-                let (s, c) = q[2].sin_cos();
-                q_dot[0] = c * v[0] - s * v[1];
-                q_dot[1] = s * v[0] + c * v[1];
-                q_dot[2] = v[2];
-            }
-        }
+        joint.configuration_rate(q, v, q_dot);
     }
 }
 

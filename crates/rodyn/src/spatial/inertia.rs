@@ -5,6 +5,7 @@
 //! body's frame. Ten numbers, and transforming it is a rotation and a shift.
 
 use super::{Force, Motion, Sym3, Transform, Vec3};
+use crate::error::ModelProblem;
 use crate::space::{BodyInertia, RigidTransform};
 use crate::Scalar;
 
@@ -116,5 +117,77 @@ impl<S: Scalar> BodyInertia<S> for Inertia<S> {
     }
     fn is_finite(&self) -> bool {
         self.mass.is_finite() && self.com.is_finite() && self.rot_inertia.is_finite()
+    }
+}
+
+impl<S: Scalar> Inertia<S> {
+    /// Checks that the inertia is physical: finite, non-negative mass,
+    /// products that do not overflow (`m |c|²`, the trace), a rotational
+    /// inertia that is positive semi-definite and satisfies the triangle
+    /// inequality of its diagonal (with a relative slack of 1e-9 for
+    /// rounding). Used by [`Model::validate`](crate::Model::validate) and
+    /// the setters.
+    ///
+    /// # Errors
+    /// [`ModelProblem::NonFiniteParameter`], [`ModelProblem::InvalidMass`],
+    /// [`ModelProblem::Overflow`] or [`ModelProblem::InvalidInertia`].
+    ///
+    /// # Example
+    ///
+    /// ```
+    /// use rodyn::error::ModelProblem;
+    /// use rodyn::spatial::{Inertia, Sym3, Vec3};
+    /// // A 2 kg, 10 x 20 x 30 cm box about its centre is physical.
+    /// let (m, a, b, c) = (2.0, 0.1, 0.2, 0.3);
+    /// let box_ = Sym3::diagonal(m * (b * b + c * c) / 12.0, m * (a * a + c * c) / 12.0, m * (a * a + b * b) / 12.0);
+    /// assert_eq!(Inertia::new(m, Vec3::ZERO, box_).validate(), Ok(()));
+    /// // No body has I_zz > I_xx + I_yy.
+    /// let impossible = Sym3::diagonal(0.01, 0.01, 0.03);
+    /// assert_eq!(Inertia::new(m, Vec3::ZERO, impossible).validate(), Err(ModelProblem::InvalidInertia));
+    /// assert_eq!(Inertia::new(-1.0, Vec3::ZERO, box_).validate(), Err(ModelProblem::InvalidMass));
+    /// ```
+    pub fn validate(&self) -> Result<(), ModelProblem> {
+        if !self.is_finite() {
+            return Err(ModelProblem::NonFiniteParameter);
+        }
+        if self.mass.to_f64() < 0.0 {
+            return Err(ModelProblem::InvalidMass);
+        }
+        // The algorithms form m c, m |c|² (the inertia about the body's
+        // origin) and traces; finite parameters whose sums or products
+        // overflow are refused.
+        let r = &self.rot_inertia;
+        let trace = r.xx + r.yy + r.zz;
+        if !(self.mass * self.com.norm_squared()).is_finite()
+            || !trace.is_finite()
+            || !self.rot_inertia_at_origin().is_finite()
+        {
+            return Err(ModelProblem::Overflow);
+        }
+        // Scaled to the largest entry, so that the minors below cannot
+        // overflow (an inertia with 1e308 entries would otherwise pass as NaN).
+        let largest = [r.xx, r.yy, r.zz, r.xy, r.xz, r.yz]
+            .iter()
+            .fold(f64::MIN_POSITIVE, |m, v| m.max(v.to_f64().abs()));
+        let unit = |v: S| v.to_f64() / largest;
+        let (xx, yy, zz) = (unit(r.xx), unit(r.yy), unit(r.zz));
+        let (xy, xz, yz) = (unit(r.xy), unit(r.xz), unit(r.yz));
+        // Positive semi-definite through the leading minors, with a small slack
+        // for rounding, and the triangle inequality of the diagonal.
+        let scale = (xx.abs() + yy.abs() + zz.abs()).max(f64::MIN_POSITIVE);
+        let tol = 1e-9 * scale;
+        let minor2 = xx * yy - xy * xy;
+        let det = xx * (yy * zz - yz * yz) - xy * (xy * zz - yz * xz) + xz * (xy * yz - yy * xz);
+        let psd = xx >= -tol
+            && yy >= -tol
+            && zz >= -tol
+            && minor2 >= -tol * scale
+            && det >= -tol * scale * scale;
+        let triangle = xx + yy + tol >= zz && xx + zz + tol >= yy && yy + zz + tol >= xx;
+        if psd && triangle {
+            Ok(())
+        } else {
+            Err(ModelProblem::InvalidInertia)
+        }
     }
 }

@@ -66,10 +66,10 @@ impl Space for Spatial {
         Motion::new(m.ang.cast(), m.lin.cast())
     }
     fn validate_inertia<S: Scalar>(i: &Inertia<S>) -> Result<(), ModelProblem> {
-        crate::model::validate_inertia_3d(i)
+        i.validate()
     }
     fn validate_transform<S: Scalar>(x: &Transform<S>) -> Result<(), ModelProblem> {
-        crate::model::validate_transform_3d(x)
+        x.validate()
     }
     fn validate_joint<S: Scalar>(j: &Joint<S>) -> Result<(), ModelProblem> {
         let axis = match j {

@@ -13,6 +13,7 @@
 //! | `act_inv_force`    | force a → b     | `ᵇX_a* f`       |
 
 use super::{Force, Mat3, Motion, Vec3};
+use crate::error::ModelProblem;
 use crate::space::RigidTransform;
 use crate::Scalar;
 
@@ -107,5 +108,53 @@ impl<S: Scalar> RigidTransform<S> for Transform<S> {
     }
     fn is_finite(&self) -> bool {
         self.trans.is_finite() && self.rot.m.iter().flatten().all(|v| v.is_finite())
+    }
+}
+
+impl<S: Scalar> Transform<S> {
+    /// Checks a placement: finite, with a proper rotation: orthonormal to
+    /// 10³ ε (`RᵀR = 1`) and not a reflection (`det R = +1`). Used by
+    /// [`Model::validate`](crate::Model::validate) and the setters.
+    ///
+    /// # Errors
+    /// [`ModelProblem::NonFiniteParameter`],
+    /// [`ModelProblem::RotationNotOrthonormal`] or
+    /// [`ModelProblem::Reflection`].
+    ///
+    /// # Example
+    ///
+    /// ```
+    /// use rodyn::error::ModelProblem;
+    /// use rodyn::spatial::{Mat3, Transform, Vec3};
+    /// let turned = Transform::from_rotation(Mat3::from_axis_angle(&Vec3::new(0.0, 0.6, 0.8), 1.2));
+    /// assert_eq!(turned.validate(), Ok(()));
+    /// // A rotation scaled by 1 % is not a rotation.
+    /// let mut scaled = turned;
+    /// scaled.rot.m[0] = [scaled.rot.m[0][0] * 1.01, scaled.rot.m[0][1] * 1.01, scaled.rot.m[0][2] * 1.01];
+    /// assert_eq!(scaled.validate(), Err(ModelProblem::RotationNotOrthonormal));
+    /// ```
+    pub fn validate(&self) -> Result<(), ModelProblem> {
+        if !self.is_finite() {
+            return Err(ModelProblem::NonFiniteParameter);
+        }
+        let rtr = self.rot.tr_mul_mat(&self.rot);
+        let tol = 1e3 * S::EPSILON;
+        for a in 0..3 {
+            for b in 0..3 {
+                let expect = if a == b { 1.0 } else { 0.0 };
+                if (rtr.m[a][b].to_f64() - expect).abs() > tol {
+                    return Err(ModelProblem::RotationNotOrthonormal);
+                }
+            }
+        }
+        // Orthonormal, so the determinant is ±1: the sign tells a reflection.
+        let m = &self.rot.m;
+        let det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+            - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+        if det.to_f64() < 0.0 {
+            return Err(ModelProblem::Reflection);
+        }
+        Ok(())
     }
 }

@@ -71,6 +71,29 @@ impl Integrator for ExplicitEuler {
 /// conservative systems: the energy error stays bounded instead of growing,
 /// and an oscillator of frequency ω is stable for `ω dt < 2`. The usual
 /// choice for a real-time loop.
+///
+/// # Example
+///
+/// ```
+/// use rodyn::algorithm::forward_dynamics::Aba;
+/// use rodyn::sim::{Integrator, NoLoads, SemiImplicitEuler, State};
+/// # use rodyn::prelude::*;
+/// # // A 1 kg point mass on a massless 1 m link, pivot about z, gravity -y.
+/// # const PENDULUM: Model<f64, 1, 1, 1> = Model::new(
+/// #     [None], [Joint::revolute(Axis::Z)], [Transform::IDENTITY],
+/// #     [Inertia::point_mass(1.0, Vec3::new(1.0, 0.0, 0.0))],
+/// #     Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
+/// # );
+/// let mut data = Data::new();
+/// let (q0, dt) = (0.3, 1e-3);
+/// let mut state = State::new([q0], [0.0]);
+/// SemiImplicitEuler::default().step(Aba, &PENDULUM, &mut data, &mut state, dt, &mut NoLoads)?;
+/// // v₁ = v + q̈ dt with q̈ = -(g / l) cos q, then q₁ = q + v₁ dt.
+/// let v1 = -9.81 * f64::cos(q0) * dt;
+/// assert!((state.v[0] - v1).abs() < 1e-15 && (state.q[0] - (q0 + v1 * dt)).abs() < 1e-15);
+/// assert!((state.t - dt).abs() < 1e-18);
+/// # Ok::<(), rodyn::Error>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct SemiImplicitEuler {
     /// How `q` moves (default: the exponential map).
