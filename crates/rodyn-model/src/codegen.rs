@@ -334,13 +334,16 @@ fn model_macro(w: &mut Writer, model: &ModelDescription) -> Result<()> {
             model.body_name(b.parent)
         ));
         // A quarter turn written to a few digits is rounded: say by how much.
-        match snap_deviation(&b.placement.rot) {
+        match snap_deviation(&b.placement.rot, model.snap_tolerance()) {
             Some(moved) if !model.planar && moved > 1e-15 => w.line(&format!(
                 "// (rotation rounded to a quarter turn: entries moved by up to {moved:.1e})"
             )),
             _ => {}
         }
-        w.line(&format!("{},", placement(model.planar, &b.placement)));
+        w.line(&format!(
+            "{},",
+            placement(model.planar, &b.placement, model.snap_tolerance())
+        ));
     }
     w.close("],");
     w.open("[");
@@ -406,7 +409,7 @@ fn placement_turns(w: &mut Writer, model: &ModelDescription) {
     let turns: Vec<Option<Mat3>> = model
         .bodies
         .iter()
-        .map(|b| snap_signed_permutation(&b.placement.rot))
+        .map(|b| snap_signed_permutation(&b.placement.rot, model.snap_tolerance()))
         .collect();
     if turns.iter().all(Option::is_none) {
         return;
@@ -430,7 +433,7 @@ fn placement_turns(w: &mut Writer, model: &ModelDescription) {
     w.close("])");
 }
 
-fn placement(planar: bool, p: &Pose) -> String {
+fn placement(planar: bool, p: &Pose, tolerance: f64) -> String {
     if planar {
         // Checked by `check_planar`: a rotation about z.
         return format!(
@@ -440,7 +443,7 @@ fn placement(planar: bool, p: &Pose) -> String {
             vec2(p.trans[0], p.trans[1])
         );
     }
-    let rot = snap_signed_permutation(&p.rot).unwrap_or(p.rot);
+    let rot = snap_signed_permutation(&p.rot, tolerance).unwrap_or(p.rot);
     if rot == IDENTITY {
         format!("Transform::from_translation({})", vec3(&p.trans))
     } else {

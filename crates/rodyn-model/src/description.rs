@@ -248,9 +248,27 @@ pub struct ModelDescription {
     pub warnings: Vec<Diagnostic>,
     /// Every file read to build the model (the model file and its includes).
     pub included_files: Vec<std::path::PathBuf>,
+    /// Round placements within [`SNAP_TOLERANCE`](crate::geometry::SNAP_TOLERANCE)
+    /// of a quarter turn to exact quarter turns (a speed aid for CRBA that
+    /// moves the model by up to that much); off by default, when only the
+    /// rounding of exact quarter turns is removed.
+    pub round_quarter_turns: bool,
 }
 
 impl ModelDescription {
+    /// The tolerance within which placements are taken as quarter turns:
+    /// [`SNAP_TOLERANCE`](crate::geometry::SNAP_TOLERANCE) when
+    /// [`round_quarter_turns`](Self::round_quarter_turns) asks for it,
+    /// otherwise [`EXACT_TOLERANCE`](crate::geometry::EXACT_TOLERANCE).
+    #[must_use]
+    pub fn snap_tolerance(&self) -> f64 {
+        if self.round_quarter_turns {
+            crate::geometry::SNAP_TOLERANCE
+        } else {
+            crate::geometry::EXACT_TOLERANCE
+        }
+    }
+
     /// Number of configuration coordinates.
     #[must_use]
     pub fn nq(&self) -> usize {

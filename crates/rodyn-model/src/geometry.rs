@@ -85,16 +85,22 @@ pub fn rotation_from_rpy(rpy: &Vec3) -> Mat3 {
 }
 
 /// How close (absolute) an entry must be to 0 or ±1 for
-/// [`snap_signed_permutation`] to round it: far above the 1e-16 that
-/// `cos(π/2)` leaves and the 4.9e-12 of π/2 written to 12 digits
-/// (`1.57079632679`, as the UR descriptions write it), ten times below the
-/// 1e-9 to which rodyn is held against Pinocchio, and far below any
-/// deliberate rotation.
+/// [`snap_signed_permutation`] to round it when a file asks for it
+/// ([`ModelDescription::round_quarter_turns`](crate::ModelDescription::round_quarter_turns)):
+/// above the 4.9e-12 of π/2 written to 12 digits (`1.57079632679`, as the
+/// UR descriptions write it) and far below any deliberate rotation. The
+/// rounding moves the model: on Talos, ABA by up to 2.8e-9 relative.
 pub const SNAP_TOLERANCE: f64 = 1e-10;
 
+/// The default: only the rounding that evaluating an exact quarter turn
+/// leaves (`cos(π/2)` is 6.1e-17 in f64), so the compiled model keeps the
+/// file's rotation to the last bit but a few.
+pub const EXACT_TOLERANCE: f64 = 4.0 * f64::EPSILON;
+
 /// `m` with its entries rounded to exactly 0 or ±1 when every entry is within
-/// [`SNAP_TOLERANCE`] of one of them and the result is a rotation (a signed
-/// permutation: one ±1 per row and column, determinant +1); otherwise `None`.
+/// `tolerance` ([`EXACT_TOLERANCE`] or, on request, [`SNAP_TOLERANCE`]) of
+/// one of them and the result is a rotation (a signed permutation: one ±1
+/// per row and column, determinant +1); otherwise `None`.
 ///
 /// A URDF `rpy` of 0 or ±π/2 gives such a rotation up to 6e-17 entries where
 /// zeros belong, or up to 5e-12 when π/2 is written to 12 digits; exact
@@ -102,12 +108,12 @@ pub const SNAP_TOLERANCE: f64 = 1e-10;
 /// exact, and let the algorithms take the quarter turn into their frames.
 /// [`snap_deviation`] says how far the entries moved.
 #[must_use]
-pub fn snap_signed_permutation(m: &Mat3) -> Option<Mat3> {
+pub fn snap_signed_permutation(m: &Mat3, tolerance: f64) -> Option<Mat3> {
     let mut out = [[0.0; 3]; 3];
     for (row, out_row) in m.iter().zip(&mut out) {
         for (v, o) in row.iter().zip(out_row.iter_mut()) {
             let snapped = v.round();
-            if (v - snapped).abs() > SNAP_TOLERANCE || snapped.abs() > 1.0 {
+            if (v - snapped).abs() > tolerance || snapped.abs() > 1.0 {
                 return None;
             }
             // `round` keeps the sign of a tiny negative: write a clean zero.
@@ -126,10 +132,10 @@ pub fn snap_signed_permutation(m: &Mat3) -> Option<Mat3> {
 }
 
 /// The largest change of an entry of `m` that [`snap_signed_permutation`]
-/// makes; `None` where it does not snap.
+/// makes at `tolerance`; `None` where it does not snap.
 #[must_use]
-pub fn snap_deviation(m: &Mat3) -> Option<f64> {
-    let snapped = snap_signed_permutation(m)?;
+pub fn snap_deviation(m: &Mat3, tolerance: f64) -> Option<f64> {
+    let snapped = snap_signed_permutation(m, tolerance)?;
     Some(
         m.iter()
             .flatten()
@@ -311,7 +317,7 @@ mod tests {
             .iter()
             .flatten()
             .any(|v| *v != 0.0 && v.abs() < 1e-15));
-        let snapped = snap_signed_permutation(&quarter).expect("a quarter turn");
+        let snapped = snap_signed_permutation(&quarter, EXACT_TOLERANCE).expect("a quarter turn");
         assert!(snapped
             .iter()
             .flatten()
@@ -319,23 +325,25 @@ mod tests {
         for (a, b) in snapped.iter().flatten().zip(quarter.iter().flatten()) {
             assert!((a - b).abs() < 1e-15);
         }
-        // π/2 to 12 digits, as the UR descriptions write it: rounded, and
-        // the change said; to 10 digits (1.8e-9 off): kept.
+        // π/2 to 12 digits, as the UR descriptions write it: kept as
+        // written by default; rounded on request, and the change said; to
+        // 10 digits (1.8e-9 off): kept either way.
         let ur = rotation_from_rpy(&[0.0, 1.57079632679, 0.0]);
-        let moved = snap_deviation(&ur).expect("a quarter turn to 12 digits");
+        assert_eq!(snap_deviation(&ur, EXACT_TOLERANCE), None);
+        let moved = snap_deviation(&ur, SNAP_TOLERANCE).expect("a quarter turn to 12 digits");
         assert!(moved > 4.8e-12 && moved < 5.0e-12, "{moved}");
         assert_eq!(
-            snap_deviation(&rotation_from_rpy(&[0.0, 1.570796327, 0.0])),
+            snap_deviation(&rotation_from_rpy(&[0.0, 1.570796327, 0.0]), SNAP_TOLERANCE),
             None
         );
         // A small deliberate rotation is kept as it is.
         assert_eq!(
-            snap_signed_permutation(&rotation_from_rpy(&[1e-9, 0.0, 0.0])),
+            snap_signed_permutation(&rotation_from_rpy(&[1e-9, 0.0, 0.0]), SNAP_TOLERANCE),
             None
         );
         // A reflection is not a rotation.
         let mirror = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, -1.0]];
-        assert_eq!(snap_signed_permutation(&mirror), None);
+        assert_eq!(snap_signed_permutation(&mirror, SNAP_TOLERANCE), None);
     }
 
     #[test]

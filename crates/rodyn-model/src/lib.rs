@@ -52,6 +52,13 @@ pub struct LoadOptions {
     /// into errors. A rodyn file can ask for it with `strict = true` in
     /// its `[model]` table; the CLI with `--strict`.
     pub strict: bool,
+    /// Round placements within 1e-10 of a quarter turn to exact quarter
+    /// turns, which CRBA exploits (π/2 written to 12 digits, as the UR
+    /// descriptions do, then counts as one). Off by default: the compiled
+    /// model keeps the file's rotations. A rodyn file asks with
+    /// `round_quarter_turns = true` in `[model]`; the CLI with
+    /// `--round-quarter-turns`.
+    pub round_quarter_turns: bool,
 }
 
 /// The largest model file read, bytes: far above any robot's (a 16,000-link
@@ -95,6 +102,12 @@ pub fn read_model_file(path: &Path) -> std::io::Result<String> {
 /// # Errors
 /// The first problem, with its file, line and column.
 pub fn load(path: &Path, options: LoadOptions) -> diagnostic::Result<ModelDescription> {
+    let mut model = load_file(path, options)?;
+    model.round_quarter_turns |= options.round_quarter_turns;
+    Ok(model)
+}
+
+fn load_file(path: &Path, options: LoadOptions) -> diagnostic::Result<ModelDescription> {
     let text = read_model_file(path).map_err(|e| {
         Diagnostic::error(
             Location::start_of(path),

@@ -47,6 +47,7 @@ fn run(args: &[String]) -> Result<(), String> {
             "--module" => module = Some(it.next().ok_or("--module needs a name")?.clone()),
             "--floating-base" => options.floating_base = true,
             "--strict" => options.strict = true,
+            "--round-quarter-turns" => options.round_quarter_turns = true,
             "--q" => {
                 let list = it.next().ok_or("--q needs comma-separated numbers")?;
                 q = list

@@ -58,6 +58,9 @@ struct ModelSection {
     /// Warnings about what cannot harm the dynamics become errors.
     #[serde(default)]
     strict: bool,
+    /// Placements within 1e-10 of a quarter turn become exact ones.
+    #[serde(default)]
+    round_quarter_turns: bool,
 }
 
 #[derive(Deserialize, Default)]
@@ -322,8 +325,10 @@ impl Reader<'_> {
                 contacts: Vec::new(),
                 warnings: Vec::new(),
                 included_files: vec![self.file.to_path_buf()],
+                round_quarter_turns: false,
             },
         };
+        model.round_quarter_turns = f.model.round_quarter_turns;
         model.name = f.model.name.get_ref().clone();
         model.planar = planar;
         if planar {

@@ -99,7 +99,8 @@ impl RuntimeModel {
                 JointType::FreeFlyer | JointType::PlanarFloating => Joint::free_flyer(),
             };
             // Quarter turns exact, as the generated code has them.
-            let rot = snap_signed_permutation(&b.placement.rot).unwrap_or(b.placement.rot);
+            let rot = snap_signed_permutation(&b.placement.rot, description.snap_tolerance())
+                .unwrap_or(b.placement.rot);
             placements[i] = Transform::new(Mat3::from_rows(rot), vec3(&b.placement.trans));
             let r = &b.inertia.inertia;
             inertias[i] = Inertia::new(

@@ -686,6 +686,7 @@ impl<'a> Reader<'a> {
             contacts: Vec::new(),
             warnings: Vec::new(),
             included_files: vec![self.file.to_path_buf()],
+            round_quarter_turns: false,
         };
         let root_link = &links[root];
         let root_frame = if options.floating_base {

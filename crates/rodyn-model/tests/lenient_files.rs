@@ -16,6 +16,7 @@ fn write(name: &str, text: &str) -> PathBuf {
 const STRICT: LoadOptions = LoadOptions {
     floating_base: false,
     strict: true,
+    round_quarter_turns: false,
 };
 
 /// A link `name` with `mass` and the tensor entries `(ixx, iyy, izz, ixy)`.

@@ -13,10 +13,10 @@ use std::path::Path;
 /// Pinocchio writes six significant digits into no file here, so the
 /// parameters agree to rounding; torques are sums of a few dozen products.
 const PARAMETER_TOLERANCE: f64 = 1e-12;
-/// The compiler rounds a rotation within 1e-10 of a quarter turn
-/// (`rodyn_model::geometry::SNAP_TOLERANCE`) to the exact one: the UR5's
-/// `rpy` of 1.57079632679 leaves 4.9e-12 where a zero belongs.
-const ROTATION_TOLERANCE: f64 = 1e-10;
+/// The compiler keeps a file's rotations (only the rounding of exact
+/// quarter turns, 4 ε, is removed): the UR5's `rpy` of 1.57079632679, 4.9e-12
+/// from a quarter turn, is compiled as written, as Pinocchio reads it.
+const ROTATION_TOLERANCE: f64 = 1e-12;
 const TORQUE_TOLERANCE: f64 = 1e-9;
 
 fn fixture(name: &str) -> Value {
