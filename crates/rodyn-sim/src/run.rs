@@ -177,16 +177,19 @@ pub fn run_command(config: &RunConfig, out: &Path) -> Result<(), Box<dyn std::er
             q[0], q[1], a[0], a[1], a[2], a[3]
         );
     }
-    if let Some(f) = &trajectory.failure {
-        println!("stopped early: {f}");
-    }
     println!(
         "wrote {}, {}, {}",
         csv.display(),
         plot_path.display(),
         gif.display()
     );
-    Ok(())
+    match &trajectory.failure {
+        // The files hold the run up to the failure, for a look at it.
+        Some(f) => {
+            Err(format!("the simulation failed at {f} (the files hold the run up to there)").into())
+        }
+        None => Ok(()),
+    }
 }
 
 fn figure<'a>(title: &'a str, y: &'a str) -> Figure<'a> {
