@@ -99,9 +99,10 @@ fn compare<const NB: usize, const NQ: usize, const NV: usize>(name: &str) {
             &x.trans.to_array(),
         );
 
-        // What the generated source holds: a quarter turn up to
-        // `SNAP_TOLERANCE` rounded to an exact one.
-        if let Some(rot) = snap_signed_permutation(&x.rot.m) {
+        // What the generated source holds: a quarter turn within the
+        // compiled model's tolerance (the rounding of an exact one by
+        // default) taken as the exact one.
+        if let Some(rot) = snap_signed_permutation(&x.rot.m, compiled.snap_tolerance()) {
             compiled_model
                 .set_placement(i, Transform::new(Mat3::from_rows(rot), x.trans))
                 .unwrap();

@@ -71,6 +71,7 @@ pub fn generate(model: &ModelDescription, module: &str, source: &str) -> Result<
     w.blank();
     sizes(&mut w, model);
     indices(&mut w, model);
+    names(&mut w, model);
     model_macro(&mut w, model)?;
     endpoints(&mut w, model);
     drives(&mut w, model);
@@ -206,6 +207,101 @@ fn sizes(w: &mut Writer, model: &ModelDescription) {
     w.line(&format!("pub const NV: usize = {};", model.nv()));
     w.line("/// Number of endpoints.");
     w.line(&format!("pub const NE: usize = {};", model.endpoints.len()));
+    w.blank();
+}
+
+/// A Rust string literal holding `text` exactly (quotes, backslashes and
+/// control characters escaped).
+fn string_literal(text: &str) -> String {
+    format!("{text:?}")
+}
+
+/// The file's names at run time, and the `Named` adapter that prints an
+/// error of an algorithm with them.
+fn names(w: &mut Writer, model: &ModelDescription) {
+    let list = |items: Vec<String>| {
+        items
+            .iter()
+            .map(|n| string_literal(n))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let mut q_names = Vec::new();
+    let mut v_names = Vec::new();
+    for b in &model.bodies {
+        let j = &b.joint_name;
+        let (q, v): (&[&str], &[&str]) = match b.joint {
+            JointType::FreeFlyer => (
+                &["x", "y", "z", "qx", "qy", "qz", "qw"],
+                &["vx", "vy", "vz", "wx", "wy", "wz"],
+            ),
+            JointType::PlanarFloating => (&["x", "y", "theta"], &["vx", "vy", "w"]),
+            _ => (&[""], &[""]),
+        };
+        let name = |suffix: &&str| {
+            if suffix.is_empty() {
+                j.clone()
+            } else {
+                format!("{j}:{suffix}")
+            }
+        };
+        q_names.extend(q.iter().map(name));
+        v_names.extend(v.iter().map(name));
+    }
+    w.line("/// The file's names, for messages and logs: bodies, joints (a joint's");
+    w.line("/// index is its body's), configuration and velocity coordinates (a");
+    w.line("/// floating joint's as `joint:x`, `joint:qw`, `joint:vx`, ...), endpoints.");
+    w.line(&format!(
+        "pub const BODY_NAMES: [&str; NB] = [{}];",
+        list(model.bodies.iter().map(|b| b.name.clone()).collect())
+    ));
+    w.line("/// Joint names, by body index.");
+    w.line(&format!(
+        "pub const JOINT_NAMES: [&str; NB] = [{}];",
+        list(model.bodies.iter().map(|b| b.joint_name.clone()).collect())
+    ));
+    w.line("/// Configuration coordinate names.");
+    w.line(&format!(
+        "pub const Q_NAMES: [&str; NQ] = [{}];",
+        list(q_names)
+    ));
+    w.line("/// Velocity coordinate names.");
+    w.line(&format!(
+        "pub const V_NAMES: [&str; NV] = [{}];",
+        list(v_names)
+    ));
+    w.line("/// Endpoint names.");
+    w.line(&format!(
+        "pub const ENDPOINT_NAMES: [&str; NE] = [{}];",
+        list(model.endpoints.iter().map(|e| e.name.clone()).collect())
+    ));
+    w.blank();
+    w.line("/// An error of an algorithm on this model, printed with the file's names:");
+    w.line("/// `joint \"elbow\": joint 3: articulated inertia is singular ...`.");
+    w.line("pub struct Named<'e>(pub &'e rodyn::Error);");
+    w.blank();
+    w.open("impl core::fmt::Display for Named<'_> {");
+    w.open("fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {");
+    w.line("use rodyn::error::Quantity;");
+    w.line("use rodyn::Error;");
+    w.open("let name = match *self.0 {");
+    w.line("Error::InvalidConfiguration { joint, .. } | Error::SingularArticulatedInertia { joint, .. } => JOINT_NAMES.get(joint).map(|n| (\"joint\", *n)),");
+    w.line("Error::MassMatrixNotPositiveDefinite { dof, .. } => V_NAMES.get(dof).map(|n| (\"coordinate\", *n)),");
+    w.line("Error::InvalidModel { body, .. } | Error::UnsupportedCast { body } | Error::FrameBodyOutOfRange { body } | Error::BodyOutOfRange { body } => BODY_NAMES.get(body).map(|n| (\"body\", *n)),");
+    w.open("Error::NonFinite { quantity, index } | Error::NonFiniteResult { quantity, index } => match quantity {");
+    w.line("Quantity::Configuration => Q_NAMES.get(index).map(|n| (\"coordinate\", *n)),");
+    w.line("Quantity::Velocity | Quantity::Acceleration | Quantity::Torque => V_NAMES.get(index).map(|n| (\"coordinate\", *n)),");
+    w.line("Quantity::ExternalForce => BODY_NAMES.get(index).map(|n| (\"body\", *n)),");
+    w.line("_ => None,");
+    w.close("},");
+    w.line("_ => None,");
+    w.close("};");
+    w.open("match name {");
+    w.line("Some((kind, name)) => write!(f, \"{kind} {name:?}: {}\", self.0),");
+    w.line("None => write!(f, \"{}\", self.0),");
+    w.close("}");
+    w.close("}");
+    w.close("}");
     w.blank();
 }
 
