@@ -233,6 +233,7 @@ pub fn regenerate() -> Result<()> {
         println!("wrote {}", doc_path.display());
     }
     println!("wrote {}", sizes_path().display());
+    crate::panic_sites::record()?;
     Ok(())
 }
 

@@ -23,6 +23,7 @@ mod expected;
 mod firmware;
 mod fp_ops;
 mod host_profile;
+mod panic_sites;
 mod profile;
 mod setup;
 mod shell;
@@ -111,6 +112,7 @@ fn test() -> Result<()> {
     }
     firmware::agreement_against_fresh_run()?;
     costs::check_sizes()?;
+    panic_sites::check()?;
     lint()?;
 
     if !failures.is_empty() {

@@ -91,12 +91,18 @@ fn install_debian_packages(what: &str, packages: &[&str]) -> Result<()> {
 
 /// `llvm-size` from the toolchain's llvm-tools component, added when missing.
 pub fn llvm_size() -> Result<PathBuf> {
+    llvm_tool("llvm-size")
+}
+
+/// A tool of the toolchain's llvm-tools component, added when missing.
+pub fn llvm_tool(name: &str) -> Result<PathBuf> {
     let sysroot = output(Command::new("rustc").args(["--print", "sysroot"]))?;
     let host = output(Command::new("rustc").args(["--print", "host-tuple"]))?;
     let path = PathBuf::from(sysroot.trim())
         .join("lib/rustlib")
         .join(host.trim())
-        .join("bin/llvm-size");
+        .join("bin")
+        .join(name);
     if !path.exists() {
         shell::run(Command::new("rustup").args(["component", "add", "llvm-tools"]))?;
     }
