@@ -196,13 +196,7 @@ pub fn constrained_forward_dynamics<
     cholesky_solve(&cdata.delassus, rows, &mut cdata.lambda);
 
     // q̈ = x₀ + M⁻¹ J_cᵀ λ.
-    cdata.ddq = x0;
-    for r in 0..rows {
-        let l = cdata.lambda[r];
-        for (a, y) in cdata.ddq.iter_mut().zip(&cdata.minv_jt[r]) {
-            *a += *y * l;
-        }
-    }
+    add_response(cdata, rows, &x0);
     check_result(&cdata.lambda[..rows], Quantity::Contact)?;
     check_result(&cdata.ddq, Quantity::Acceleration)?;
     data.tau = h;
@@ -260,13 +254,8 @@ pub fn impulse_dynamics<
         cdata.lambda[r] = -(S::ONE + restitution) * dot(&cdata.jc[r], v_before);
     }
     cholesky_solve(&cdata.delassus, rows, &mut cdata.lambda);
-    cdata.ddq = *v_before;
-    for r in 0..rows {
-        let l = cdata.lambda[r];
-        for (a, y) in cdata.ddq.iter_mut().zip(&cdata.minv_jt[r]) {
-            *a += *y * l;
-        }
-    }
+    // v⁺ = v⁻ + M⁻¹ J_cᵀ Λ.
+    add_response(cdata, rows, v_before);
     check_result(&cdata.lambda[..rows], Quantity::Contact)?;
     check_result(&cdata.ddq, Quantity::Velocity)?;
     Ok((&cdata.ddq, &cdata.lambda[..rows]))
@@ -347,6 +336,20 @@ fn prepare<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, const N
         cdata.delassus[r][r] += damping;
     }
     cholesky_in_place(&mut cdata.delassus, rows)
+}
+
+/// `cdata.ddq = base + M⁻¹ J_cᵀ λ` from the rows of `M⁻¹ J_cᵀ` and `λ`.
+fn add_response<S: Scalar, const NV: usize, const NC: usize>(
+    cdata: &mut ConstraintData<S, NV, NC>,
+    rows: usize,
+    base: &[S; NV],
+) {
+    cdata.ddq = *base;
+    for (row, l) in cdata.minv_jt[..rows].iter().zip(&cdata.lambda[..rows]) {
+        for (a, y) in cdata.ddq.iter_mut().zip(row) {
+            *a += *y * *l;
+        }
+    }
 }
 
 fn dot<S: Scalar, const N: usize>(a: &[S; N], b: &[S; N]) -> S {
