@@ -21,15 +21,19 @@ fn xml(text: &str) -> String {
     text.replace('&', "&amp;").replace('"', "&quot;")
 }
 
-/// Every line that carries the payload as written is a comment (constants
-/// made from the name carry it as one identifier, `..._INJECTED___STR_...`).
+/// Every line that carries the payload is a comment or holds it inside an
+/// escaped string literal (constants made from the name carry it as one
+/// identifier, `..._INJECTED___STR_...`).
 fn assert_payload_only_in_comments(source: &str) {
     let mut seen = 0;
     for line in source.lines() {
         if line.contains("static INJECTED:") {
             seen += 1;
+            // In a comment, or inside a string literal with its quotes
+            // escaped (the names at run time): never as code.
+            let escaped = line.contains(r#"static INJECTED: &str = \"x\""#);
             assert!(
-                line.trim_start().starts_with("//"),
+                line.trim_start().starts_with("//") || escaped,
                 "code line carries the name: {line}"
             );
         }
