@@ -403,3 +403,46 @@ fn ground_contact_refuses_nan_and_missing_bodies() {
     good.add_forces(&model, &mut data, &Q, &v, &on_body(6), &mut f_ext, None)
         .expect("finite inputs are accepted");
 }
+
+/// `Model::normalize` turns a quaternion whose squared norm overflows
+/// (1e200) or underflows (subnormal) into the unit quaternion it stands
+/// for, not into zeros; a zero quaternion is left for the configuration
+/// check, which names the joint.
+#[test]
+fn normalize_survives_huge_and_subnormal_quaternions() {
+    use rodyn::joint::{ConfigurationError, Joint};
+    const BALL: Model<f64, 1, 7, 6> = Model::new(
+        [None],
+        [Joint::FreeFlyer(rodyn::joint::FreeFlyer)],
+        [Transform::IDENTITY],
+        [Inertia::point_mass(1.0, Vec3::ZERO)],
+        Motion::new(Vec3::ZERO, Vec3::new(0.0, 0.0, -9.81)),
+    );
+    for scale in [1e200, 1e-310, 1.0] {
+        let mut q = [0.1, 0.2, 0.3, 0.0, 0.6 * scale, 0.0, 0.8 * scale];
+        BALL.normalize(&mut q);
+        // A subnormal input holds only about 13 significant digits.
+        assert!(
+            (q[4] - 0.6).abs() < 1e-12 && (q[6] - 0.8).abs() < 1e-12,
+            "{scale:e}: {q:?}"
+        );
+        let norm = (q[4] * q[4] + q[6] * q[6]).sqrt();
+        assert!((norm - 1.0).abs() < 1e-15, "{scale:e}: norm {norm}");
+        assert_eq!(q[..3], [0.1, 0.2, 0.3]);
+    }
+    let mut zero = [0.0; 7];
+    BALL.normalize(&mut zero);
+    let mut data = Data::new();
+    let error =
+        rodyn::algorithm::kinematics::forward_kinematics(&BALL, &mut data, &zero).unwrap_err();
+    assert!(
+        matches!(
+            error,
+            Error::InvalidConfiguration {
+                joint: 0,
+                reason: ConfigurationError::QuaternionNotUnit { .. }
+            }
+        ),
+        "{error:?}"
+    );
+}

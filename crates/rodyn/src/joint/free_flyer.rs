@@ -162,14 +162,24 @@ impl FreeFlyer {
         }
         Ok(())
     }
-    /// Rescales the quaternion to unit norm.
+    /// Rescales the quaternion to unit norm. Divided by its largest entry
+    /// first, so that a norm whose square overflows (1e200) or underflows
+    /// (a subnormal quaternion) still normalises; a zero or non-finite
+    /// quaternion is left as it is, for the configuration check to report.
     pub fn normalize<S: Scalar>(&self, q: &mut [S]) {
+        let largest = q[3..7].iter().fold(S::ZERO, |m, x| m.max(x.abs()));
+        if !(largest.is_finite() && largest > S::ZERO) {
+            return;
+        }
+        // Divided, not multiplied by the reciprocal: that of a subnormal
+        // overflows.
+        for x in &mut q[3..7] {
+            *x /= largest;
+        }
         let n = (q[3] * q[3] + q[4] * q[4] + q[5] * q[5] + q[6] * q[6]).sqrt();
-        if n > S::ZERO {
-            let inv = S::ONE / n;
-            for x in &mut q[3..7] {
-                *x *= inv;
-            }
+        let inv = S::ONE / n;
+        for x in &mut q[3..7] {
+            *x *= inv;
         }
     }
 }
