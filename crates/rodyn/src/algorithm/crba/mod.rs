@@ -1,85 +1,111 @@
 //! The composite-rigid-body algorithm for the mass matrix (Featherstone Table 6.2).
 //!
-//! Everything stays in body coordinates: each body's composite inertia
-//! `Iᶜᵢ` and each column `F = Iᶜᵢ Sₖ` of its joint are formed in its own
-//! frame, and move to the parent's frame through the joint transform
-//! `ˡⁱXᵢ`. Lever arms are a link long, so `f32` keeps its accuracy.
+//! | file            | what it is                                                        |
+//! |-----------------|-------------------------------------------------------------------|
+//! | [`textbook`]    | the book's algorithm as written, the oracle the tests hold the rest to |
+//! | `mod.rs`        | the public entries, the choice of pass ([`CrbaPass`]), the steps   |
+//! | `local.rs`      | the default backward pass, in each body's (turned) frame          |
+//! | `root_frame.rs` | the backward pass for long `f64` chains, in the root frame        |
+//! | `triangle.rs`   | the mirror above the diagonal and the zeros between limbs         |
 //!
-//! The backward pass takes the bodies from the leaves to the root, and at
-//! body i:
-//! - its columns `F = Iᶜᵢ Sₖ` join those of its subtree, which its children
-//!   have already brought into its frame;
-//! - the column `F_d` of each coordinate d of the subtree gives row d's
-//!   entries against body i's coordinates, `M[d][k] = Sₖᵀ F_d` (for a joint
-//!   about a coordinate axis, one component of `F_d`);
-//! - the subtree's columns and `Iᶜᵢ` move to the parent's frame, one joint
-//!   transform applied to all of them at once (as Pinocchio does).
+//! The tuned passes compute what [`textbook::crba`] computes: the backward
+//! pass from the leaves to the root, at body i its composite inertia `Iᶜᵢ`,
+//! its columns `F = Iᶜᵢ Sₖ`, the entries `M[d][k] = Sₖᵀ F_d` against every
+//! coordinate d of its subtree, then the subtree's columns and `Iᶜᵢ` moved to
+//! the parent through `ˡⁱXᵢ`. They differ from the book in three ways, each
+//! for speed and none for the result:
+//! - a subtree's columns move up together, one step per body
+//!   ([`Space::step_forces`]); a revolute joint about a coordinate axis
+//!   whose placement does not rotate (or turns about the same axis) moves
+//!   them by mixing two components ([`Space::joint_step`]), and the geometry
+//!   may fuse a whole body's step ([`Space::crba_axis_body`],
+//!   [`Space::crba_free_root`]);
+//! - bodies behind quarter-turn placements (a URDF arm's) are expressed in
+//!   frames turned by the quarter turns above them
+//!   ([`TurnedFrame`](crate::spatial::TurnedFrame)), where their joints
+//!   turn about coordinate axes again; `ic` is left in those frames;
+//! - with the bodies numbered depth first (URDF order), a body's subtree
+//!   holds a contiguous range of coordinates, so a column's rows are one
+//!   slice; any other tree takes the same steps with a test of support
+//!   per coordinate.
 //!
-//! A revolute joint about a coordinate axis whose placement does not rotate
-//! (or turns about the same axis) moves vectors by mixing two of their
-//! components ([`Space::joint_step`]): a Solo12 leg's joints or a chain's
-//! cost about half of a general transform's arithmetic per column and a
-//! third per inertia, and their sine and cosine are all the transform that
-//! is formed. The columns moved at one body are independent of each other,
-//! so an out-of-order core overlaps them.
-//!
-//! Two cases take the whole step as one fused pass of the geometry's
-//! ([`Space::crba_axis_body`], [`Space::crba_free_root`]): a body whose
-//! revolute joint's step turns about its own coordinate axis (its column,
-//! projections, moves and inertia with that axis known at compile time),
-//! and a free-flying root, whose block of `M` is its composite inertia
-//! and whose entries are its subtree's columns reordered. Against the
-//! same steps one operation at a time: Solo12 CRBA 17 % fewer
-//! instructions, the Panda 12 %, the 20-link chain 18 %.
-//!
-//! With the bodies numbered depth first (URDF order), a body's subtree
-//! holds a contiguous range of coordinates; any other tree takes the same
-//! steps with a test of support per coordinate. Cost O(n·depth); branches
-//! are never coupled. The backward pass fills the lower triangle; for
-//! [`crba`] on a host it writes each entry's mirror above the diagonal as
-//! it goes, and with subtrees numbered depth first it writes the zeros
-//! between unrelated limbs itself.
-//!
-//! Bodies behind quarter-turn placements (a URDF arm's) are expressed in
-//! frames turned by the quarter turns above them
-//! ([`TurnedFrame`](crate::spatial::TurnedFrame)), where
-//! their joints turn about coordinate axes again: their inertias come
-//! turned from the model, each step reads `Q_λ p` from
-//! [`Model::turned_placement`], and a turned joint's subspace column is a
-//! coordinate axis, possibly reversed. `M` does not depend on the frames.
-//! On the Panda this takes a fifth of CRBA's instructions away.
-//!
-//! Long chains in `f64` take a second form of the backward pass,
-//! `about_root`: columns and subspace columns moved once from the turned
-//! frames into the root frame, each entry a dot product (Pinocchio's world
-//! convention); for [`crba`] on a host it writes each entry's mirror too.
+//! Which backward pass runs is [`CrbaPass`], chosen by [`crba_with`]'s
+//! caller or, for [`crba`], by [`CrbaPass::default_for`]. Whether the
+//! passes write the upper triangle and the zeros as they go or in separate
+//! loops afterwards is the build's tuning profile
+//! (`ENTRIES_IN_PASS`); `M` is the same either way.
+
+mod local;
+mod root_frame;
+pub mod textbook;
+mod triangle;
 
 use crate::algorithm::kinematics::{
     body_transform_with, check_state, joint_configuration, JointSinCos, ANGLES_FIRST,
 };
-use crate::algorithm::ltdl::supporting_ranges;
 use crate::algorithm::rnea;
 use crate::data::Data;
 use crate::error::{Quantity, Result};
-use crate::joint::{JointModel, MAX_JOINT_NV};
 use crate::model::{check_result, Model};
-use crate::space::{RigidTransform, Space, VectorOps};
+use crate::space::{Space, VectorOps};
 use crate::topology::Topology;
 use crate::Scalar;
+use local::backward_body;
+use root_frame::about_root;
+use triangle::{clear_lower, mirror_lower};
 
 /// Whether the local backward pass writes `M`'s zeros (those between
 /// unrelated limbs) and, for [`crba`], its entries above the diagonal
-/// itself, as it meets each entry, on hosts (the root-frame pass, for
-/// [`crba`], the entries above the diagonal): the separate clear and mirror
-/// passes are stores to scattered rows that an out-of-order core
-/// otherwise waits on, where the stores in the pass hide among its
-/// arithmetic (x86-64 CRBA time: Solo12 -12 %, the UR5 -7 %, the Panda
-/// -4 %, for 9 % more instructions). The Cortex-M4, which pays for every
-/// instruction, keeps the separate passes (the in-pass form measured
-/// there: Panda CRBA +10 %, quadruped +17 %).
+/// itself, as it meets each entry (the root-frame pass, for [`crba`], the
+/// entries above the diagonal), instead of separate clear and mirror loops
+/// afterwards. On an out-of-order core the separate loops are stores to
+/// scattered rows that it waits on, where stores in the pass hide among
+/// its arithmetic; an in-order core pays for every extra instruction and
+/// keeps the separate loops.
 const ENTRIES_IN_PASS: bool = cfg!(not(target_arch = "arm"));
 
-/// The joint-space mass matrix `M(q)` (symmetric, NV x NV).
+/// The backward pass that forms `M`. Both give the same matrix (to
+/// rounding); they differ in cost and in `f32` accuracy.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CrbaPass {
+    /// Columns kept in each body's (turned) frame and moved up one joint
+    /// per body (`local.rs`). O(n·depth) column moves; every lever arm a
+    /// link long, so `f32` keeps its accuracy. The default.
+    Local,
+    /// Columns and subspace columns moved once into the tree's root frame,
+    /// each entry a dot product there (`root_frame.rs`). It repays its two
+    /// general transforms per body only on long chains, and its entries are
+    /// differences of terms that grow with the distance from the root:
+    /// meant for `f64` (in `f32` long chains lose digits).
+    RootFrame,
+}
+
+impl CrbaPass {
+    /// Mean number of moving ancestors a coordinate's column walks past
+    /// above which [`CrbaPass::RootFrame`] is the default (a chain of about
+    /// 50 links; an arm or a legged robot never reaches it).
+    pub const ROOT_FRAME_MIN_DEPTH: usize = 25;
+
+    /// The pass [`crba`] takes: [`CrbaPass::RootFrame`] in a scalar of
+    /// `f64` precision on trees whose mean support depth
+    /// ([`Topology::mean_support_depth`]) is at least
+    /// [`ROOT_FRAME_MIN_DEPTH`](Self::ROOT_FRAME_MIN_DEPTH), else
+    /// [`CrbaPass::Local`]. The condition on `NV` follows from the depth
+    /// and is known at compile time, so a smaller model's code carries no
+    /// root-frame pass.
+    #[inline(always)]
+    pub fn default_for<S: Scalar, const NB: usize, const NV: usize>(t: &Topology<NB, NV>) -> Self {
+        let depth = Self::ROOT_FRAME_MIN_DEPTH;
+        if NV > 2 * depth && S::EPSILON < 1.0e-10 && t.mean_support_depth >= depth {
+            Self::RootFrame
+        } else {
+            Self::Local
+        }
+    }
+}
+
+/// The joint-space mass matrix `M(q)` (symmetric, NV x NV), by the pass
+/// [`CrbaPass::default_for`] chooses.
 ///
 /// Inputs: `q` (NQ). Returns `data.mass_matrix` with both triangles filled.
 /// Leaves valid: `mass_matrix`, and `ic`, each body's composite inertia
@@ -95,11 +121,27 @@ pub fn crba<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
     data: &'d mut Data<S, NB, NV, G>,
     q: &[S; NQ],
 ) -> Result<&'d [[S; NV]; NV]> {
+    crba_with(
+        model,
+        data,
+        q,
+        CrbaPass::default_for::<S, NB, NV>(model.topology()),
+    )
+}
+
+/// [`crba`] by the backward pass `pass`; same inputs, results and errors.
+#[inline]
+pub fn crba_with<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &'d mut Data<S, NB, NV, G>,
+    q: &[S; NQ],
+    pass: CrbaPass,
+) -> Result<&'d [[S; NV]; NV]> {
     check_state(model, q, None)?;
     let upper_written = if ENTRIES_IN_PASS {
-        mass_matrix_pass::<S, NB, NQ, NV, G, true>(model, data, Some(q))
+        mass_matrix_pass::<S, NB, NQ, NV, G, true>(model, data, Some(q), pass)
     } else {
-        crba_lower(model, data, Some(q));
+        mass_matrix_pass::<S, NB, NQ, NV, G, false>(model, data, Some(q), pass);
         false
     };
     if !upper_written {
@@ -110,49 +152,6 @@ pub fn crba<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
     let diagonal: [S; NV] = core::array::from_fn(|k| data.mass_matrix[k][k]);
     check_result(&diagonal, Quantity::MassMatrix)?;
     Ok(&data.mass_matrix)
-}
-
-/// Copies the lower triangle of `m` onto the upper. On hosts two rows by
-/// two columns at a time, so that each row above takes its entries in
-/// adjacent pairs (60-link chain CRBA time -3 %); the Cortex-M4, which
-/// pays per instruction, one entry at a time (the blocked form measured
-/// there: quadruped CRBA +470 instructions).
-#[inline]
-fn mirror_lower<S: Scalar, const NV: usize>(m: &mut [[S; NV]; NV]) {
-    if cfg!(target_arch = "arm") {
-        for r in 1..NV {
-            for c in 0..r {
-                m[c][r] = m[r][c];
-            }
-        }
-        return;
-    }
-    let mut r = 1;
-    while r + 1 < NV {
-        // Rows r and r + 1, their common columns in 2 x 2 blocks.
-        let mut c = 0;
-        while c + 1 < r {
-            let (a0, a1, b0, b1) = (m[r][c], m[r][c + 1], m[r + 1][c], m[r + 1][c + 1]);
-            m[c][r] = a0;
-            m[c][r + 1] = b0;
-            m[c + 1][r] = a1;
-            m[c + 1][r + 1] = b1;
-            c += 2;
-        }
-        // The rest: at most one column of row r, two of row r + 1.
-        for k in c..=r {
-            if k < r {
-                m[k][r] = m[r][k];
-            }
-            m[k][r + 1] = m[r + 1][k];
-        }
-        r += 2;
-    }
-    if r < NV {
-        for k in 0..r {
-            m[k][r] = m[r][k];
-        }
-    }
 }
 
 /// [`crba`] without the check of `q` and without mirroring: leaves `M`'s
@@ -166,7 +165,8 @@ pub(crate) fn crba_lower<S: Scalar, const NB: usize, const NQ: usize, const NV: 
     data: &mut Data<S, NB, NV, G>,
     q: Option<&[S; NQ]>,
 ) {
-    mass_matrix_pass::<S, NB, NQ, NV, G, false>(model, data, q);
+    let pass = CrbaPass::default_for::<S, NB, NV>(model.topology());
+    mass_matrix_pass::<S, NB, NQ, NV, G, false>(model, data, q, pass);
 }
 
 /// [`crba_lower`], which with `UPPER` writes the entries above the
@@ -185,12 +185,13 @@ fn mass_matrix_pass<
     model: &Model<S, NB, NQ, NV, G>,
     data: &mut Data<S, NB, NV, G>,
     q: Option<&[S; NQ]>,
+    pass: CrbaPass,
 ) -> bool {
     let t = model.topology();
     for (i, ic) in data.ic.iter_mut().enumerate() {
         *ic = *model.turned_inertia(i);
     }
-    let upper_written = if about_root_pays::<S, NB, NV>(t) {
+    let upper_written = if pass == CrbaPass::RootFrame {
         clear_lower(t, &mut data.mass_matrix, UPPER);
         // Its steps are formed in a pass of their own already.
         about_root::<S, NB, NQ, NV, G, UPPER>(model, data, |li_m_i, i| {
@@ -280,7 +281,7 @@ pub(crate) fn bias_and_mass_lower<
         data.ic[i] = *model.turned_inertia(i);
         rnea::forward_body(model, data, i, li_m_i, v, None, f_ext, &minus_g);
     }
-    if about_root_pays::<S, NB, NV>(t) {
+    if CrbaPass::default_for::<S, NB, NV>(t) == CrbaPass::RootFrame {
         clear_lower(t, &mut data.mass_matrix, false);
         rnea::backward_force_pass_with(model, data, None, |_, _| {});
         about_root::<S, NB, NQ, NV, G, false>(model, data, |li_m_i, i| {
@@ -299,197 +300,6 @@ pub(crate) fn bias_and_mass_lower<
     add_armature(model, data);
 }
 
-/// Whether [`about_root`] pays: in double precision, on trees whose
-/// columns walk past at least `MIN_DEPTH` moving bodies on average (a
-/// chain of 51 links or more; an arm or a legged robot never). x86-64,
-/// f64, the root-frame pass against the local one (`profile` binary,
-/// fastest of alternating runs), CRBA time: 20-link chain +32 %, 30-link
-/// +20 %, 40-link +8 %, 50-link +2 %, 60-link -3.5 %; CRBA forward
-/// dynamics: 40-link +4 %, 50-link -1 %, 60-link -2.5 %; planar algebra,
-/// CRBA: 40-link +16 %, 50-link +4 %, 60-link -12 %. The root frames
-/// and the root-frame columns cost two general transforms per body, which
-/// only long chains repay. The condition on `NV` is implied by the depth
-/// and known at compile time, so smaller models carry no second copy of
-/// the pass.
-#[inline(always)]
-fn about_root_pays<S: Scalar, const NB: usize, const NV: usize>(t: &Topology<NB, NV>) -> bool {
-    const MIN_DEPTH: usize = 25;
-    NV > 2 * MIN_DEPTH && S::EPSILON < 1.0e-10 && t.mean_support_depth >= MIN_DEPTH
-}
-
-/// The backward pass for long chains: every column and every subspace
-/// column moved once from its body's turned frame into its tree's root
-/// frame, each entry below the diagonal then a dot product, 11 operations
-/// where moving a column one body up takes 24 (Pinocchio's world
-/// convention, about the root body instead of the world so that a
-/// floating base's position does not enter). The root frames compose the
-/// same steps as the local pass, so a turned joint's rotation mixes two
-/// columns of its parent's. The two terms of each product grow with the
-/// bodies' distance from the root and cancel to the offset between them,
-/// which `f32` could not afford. `step(li_m_i, i)` gives body i's step
-/// ([`joint_step`]); leaves what [`crba_lower`] leaves, and with `MIRROR`
-/// the upper triangle too.
-#[inline(never)]
-fn about_root<
-    S: Scalar,
-    const NB: usize,
-    const NQ: usize,
-    const NV: usize,
-    G: Space,
-    const MIRROR: bool,
->(
-    model: &Model<S, NB, NQ, NV, G>,
-    data: &mut Data<S, NB, NV, G>,
-    step: impl Fn(&[G::Transform<S>; NB], usize) -> Option<G::Step<S>>,
-) {
-    let t = model.topology();
-    let identity = <G::Transform<S> as RigidTransform<S>>::IDENTITY;
-    // Each body's step to its parent, the root frame from each body's
-    // turned frame, and each subspace column in it, stored by components
-    // so that a row's dot products run along contiguous arrays, two
-    // entries per SIMD instruction on a host.
-    let mut steps = [None; NB];
-    let mut to_root = [identity; NB];
-    let mut s_root = [[S::ZERO; NV]; 6];
-    for i in 0..NB {
-        steps[i] = step(&data.li_m_i, i);
-        if let (Some(p), Some(step)) = (t.parents[i], &steps[i]) {
-            to_root[i] = G::then_step(&to_root[p], step);
-        }
-        let (joint, frame) = (model.joint(i), model.turned_frame(i));
-        for k in 0..t.nv[i] {
-            let s = G::act_turned_subspace_column(&to_root[i], frame, joint, k);
-            for (d, s_d) in s_root.iter_mut().take(G::DIM).enumerate() {
-                s_d[t.idx_v[i] + k] = s.component(d);
-            }
-        }
-    }
-    // Each body's columns in the root frame, filled up to its own number
-    // of coordinates (cleared once, not per body: a `memset` call each).
-    let mut f_root = [[S::ZERO; 6]; MAX_JOINT_NV];
-    for i in (0..NB).rev() {
-        let (joint, frame) = (model.joint(i), model.turned_frame(i));
-        let iv = t.idx_v[i];
-        for (k, f_k) in f_root.iter_mut().enumerate().take(t.nv[i]) {
-            let f = G::turned_inertia_column(frame, &data.ic[i], joint, k);
-            let f = to_root[i].act_force(&f);
-            *f_k = core::array::from_fn(|d| if d < G::DIM { f.component(d) } else { S::ZERO });
-        }
-        // The composite inertias form one chain of dependent steps: the
-        // parent's is stepped before this body's rows, so that it overlaps
-        // their dot products (60-link chain CRBA time -6 %).
-        if let (Some(p), Some(step)) = (t.parents[i], &steps[i]) {
-            let ic_i = data.ic[i];
-            G::add_stepped_inertia(&mut data.ic[p], step, &ic_i);
-        }
-        for (k, f) in f_root.iter().enumerate().take(t.nv[i]) {
-            let c = iv + k;
-            let (above, below) = data.mass_matrix.split_at_mut(c);
-            let row = &mut below[0];
-            // Every supporting coordinate, the joint's own up to c included.
-            for (first, last) in supporting_ranges(t, Some(c)) {
-                if MIRROR {
-                    // The diagonal, which ends the first range, has no mirror.
-                    let end = if last == c { c } else { last + 1 };
-                    let (row, above) = (&mut row[first..end], &mut above[first..end]);
-                    dot_columns_mirrored::<S, NV, G>(row, above, c, &s_root, first, f);
-                } else {
-                    dot_columns::<S, NV, G>(&mut row[first..=last], &s_root, first, f);
-                }
-            }
-            if MIRROR {
-                row[c] = column_dot::<S, NV, G>(&s_root, c, f);
-            }
-        }
-    }
-}
-
-/// `row[j] = s_j · f` for the subspace columns `s_j` stored by components
-/// in `s`, from column `first` on.
-#[inline(always)]
-fn dot_columns<S: Scalar, const NV: usize, G: Space>(
-    row: &mut [S],
-    s: &[[S; NV]; 6],
-    first: usize,
-    f: &[S; 6],
-) {
-    let n = row.len();
-    let s: [&[S]; 6] = core::array::from_fn(|d| &s[d][first..first + n]);
-    for j in 0..n {
-        row[j] = dot_components::<S, G>(&s, j, f);
-    }
-}
-
-/// [`dot_columns`] that also writes each entry's mirror, `above[j][c]`
-/// (`above` starting at row `first`), while the entry is in a register:
-/// cheaper than copying the triangle afterwards, which loads it again
-/// (60-link chain CRBA time -8 %).
-#[inline(always)]
-fn dot_columns_mirrored<S: Scalar, const NV: usize, G: Space>(
-    row: &mut [S],
-    above: &mut [[S; NV]],
-    c: usize,
-    s: &[[S; NV]; 6],
-    first: usize,
-    f: &[S; 6],
-) {
-    let n = row.len();
-    let above = &mut above[..n];
-    let s: [&[S]; 6] = core::array::from_fn(|d| &s[d][first..first + n]);
-    for j in 0..n {
-        let m = dot_components::<S, G>(&s, j, f);
-        row[j] = m;
-        above[j][c] = m;
-    }
-}
-
-/// `s_c · f` for one subspace column, stored by components in `s`.
-#[inline(always)]
-fn column_dot<S: Scalar, const NV: usize, G: Space>(s: &[[S; NV]; 6], c: usize, f: &[S; 6]) -> S {
-    let s: [&[S]; 6] = core::array::from_fn(|d| &s[d][c..=c]);
-    dot_components::<S, G>(&s, 0, f)
-}
-
-/// `s_j · f` over the space's components, `s` holding them by component.
-#[inline(always)]
-fn dot_components<S: Scalar, G: Space>(s: &[&[S]; 6], j: usize, f: &[S; 6]) -> S {
-    let mut acc = s[0][j] * f[0];
-    for d in 1..G::DIM {
-        acc += s[d][j] * f[d];
-    }
-    acc
-}
-
-/// Zeroes the entries below the diagonal that no column reaches: those
-/// left of each coordinate's unbroken stretch of supporting coordinates
-/// (see [`Topology::chain_start_v`]) that do not support it. A chain has
-/// none. With `mirrored`, their mirrors above the diagonal too. The local
-/// pass on a tree with contiguous subtrees writes its zeros itself
-/// ([`backward_body`]).
-#[inline]
-fn clear_lower<S: Scalar, const NB: usize, const NV: usize>(
-    t: &Topology<NB, NV>,
-    m: &mut [[S; NV]; NV],
-    mirrored: bool,
-) {
-    for (k, row) in m.iter_mut().enumerate() {
-        // Most rows have nothing to clear (every row of a chain): they
-        // skip the fill, which can become a call into `memset` (M4, Panda
-        // CRBA 20 instructions fewer).
-        let start = t.chain_start_v[k];
-        if start > 0 {
-            row[..start].fill(S::ZERO);
-        }
-    }
-    if mirrored {
-        for (k, &start) in t.chain_start_v.iter().enumerate() {
-            for row in &mut m[..start] {
-                row[k] = S::ZERO;
-            }
-        }
-    }
-}
-
 /// Rotor (armature) inertias, on the diagonal only.
 #[inline]
 fn add_armature<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
@@ -501,213 +311,9 @@ fn add_armature<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
     }
 }
 
-/// Body i's step of the backward pass: its columns `Iᶜᵢ Sₖ`, its entries
-/// of `M` against every coordinate of its subtree (whose columns
-/// `columns` hold in body i's frame), then the subtree's columns and `Iᶜᵢ`
-/// moved through `step` (`ˡⁱXᵢ`; `None` at a root) to the parent's frame.
-/// With `upper`, on trees whose subtrees hold contiguous coordinates, each
-/// entry's mirror above the diagonal too.
-///
-/// Where subtrees hold contiguous coordinates, it also zeroes the entries
-/// of its coordinates' columns below its subtree (and with `upper` their
-/// mirrors): no other body writes them, and a few stores here cost less
-/// than clearing row stretches that the pass then partly overwrites
-/// ([`clear_lower`], which trees numbered otherwise take).
-#[inline(always)]
-fn backward_body<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
-    model: &Model<S, NB, NQ, NV, G>,
-    data: &mut Data<S, NB, NV, G>,
-    i: usize,
-    step: Option<&G::Step<S>>,
-    columns: &mut [G::Force<S>; NV],
-    upper: bool,
-) {
-    let t = model.topology();
-    let joint = model.joint(i);
-    let frame = model.turned_frame(i);
-    let (iv, nv) = (t.idx_v[i], t.nv[i]);
-    let end = t.subtree_end_v[i];
-    if ENTRIES_IN_PASS && t.subtrees_contiguous && end < NV {
-        let m = &mut data.mass_matrix;
-        // Bounds known to the compiler: no checks inside.
-        for k in iv..(iv + nv).min(NV) {
-            for d in end..NV {
-                m[d][k] = S::ZERO;
-                if upper {
-                    m[k][d] = S::ZERO;
-                }
-            }
-        }
-    }
-    // A revolute joint's coordinate axis in the frame of the columns.
-    let axis = match frame.axis() {
-        Some(a) => Some((a.turned, a.reversed)),
-        None => joint.revolute_axis_index().map(|k| (k, false)),
-    };
-    // The geometry's fused steps where they apply: a revolute joint whose
-    // step turns about its own coordinate axis, a free-flying root.
-    if let (true, 1, Some(axis), Some(p), Some(step)) = (
-        G::FUSES_CRBA_STEPS && t.subtrees_contiguous,
-        nv,
-        axis,
-        t.parents[i],
-        step,
-    ) {
-        let end = t.subtree_end_v[i];
-        let (ancestors, rest) = data.ic.split_at_mut(i);
-        if G::crba_axis_body(
-            step,
-            axis,
-            &rest[0],
-            &mut ancestors[p],
-            &mut columns[iv..end],
-            &mut data.mass_matrix[iv..end],
-            iv,
-            upper,
-        ) {
-            return;
-        }
-    }
-    if G::FUSES_CRBA_STEPS && t.subtrees_contiguous && t.parents[i].is_none() && nv == 6 {
-        let end = t.subtree_end_v[i];
-        if G::crba_free_root(
-            joint,
-            &data.ic[i],
-            &columns[iv + 6..end],
-            &mut data.mass_matrix[iv..end],
-            iv,
-            upper,
-        ) {
-            return;
-        }
-    }
-    for k in 0..nv {
-        columns[iv + k] = G::turned_inertia_column(frame, &data.ic[i], joint, k);
-    }
-    if t.subtrees_contiguous {
-        let end = t.subtree_end_v[i];
-        let rows = iv..end;
-        project_rows(
-            joint,
-            axis,
-            iv,
-            nv,
-            rows,
-            &mut data.mass_matrix,
-            columns,
-            upper,
-        );
-        if let Some(step) = step {
-            G::step_forces(step, &mut columns[iv..end]);
-        }
-    } else {
-        // The subtree's coordinates all follow body i's first.
-        for d in iv..NV {
-            if d < iv + nv || t.supports(i, t.body_of_v[d]) {
-                project_rows(
-                    joint,
-                    axis,
-                    iv,
-                    nv,
-                    d..d + 1,
-                    &mut data.mass_matrix,
-                    columns,
-                    false,
-                );
-                if let Some(step) = step {
-                    G::step_forces(step, &mut columns[d..=d]);
-                }
-            }
-        }
-    }
-    if let (Some(p), Some(step)) = (t.parents[i], step) {
-        let ic_i = data.ic[i];
-        G::add_stepped_inertia(&mut data.ic[p], step, &ic_i);
-    }
-}
-
-/// `M[d][iv + k] = Sₖᵀ F_d` for the rows d of `rows`, with `F_d =
-/// columns[d]`; rows of the joint's own coordinates fill the lower
-/// triangle of its block only. With `upper`, each entry's mirror
-/// `M[iv + k][d]` too. `axis`: a revolute joint's coordinate axis in the
-/// columns' frame, and whether it is reversed there.
-#[inline(always)]
-#[allow(clippy::too_many_arguments)]
-fn project_rows<S: Scalar, J: JointModel<S, G>, G: Space, const NV: usize>(
-    joint: &J,
-    axis: Option<(usize, bool)>,
-    iv: usize,
-    nv: usize,
-    rows: core::ops::Range<usize>,
-    m: &mut [[S; NV]; NV],
-    columns: &[G::Force<S>; NV],
-    upper: bool,
-) {
-    // Index loops over slices as long as the range: no bounds checks
-    // inside, and no slice lengths to divide out of byte counts (a body's
-    // subtree here is one to 30 rows; longer chains in `f64` take
-    // `about_root`). On the Panda and Solo12, 4-5 % fewer instructions
-    // than zipped slice iterators.
-    let (m, columns) = (&mut m[..rows.end], &columns[..rows.end]);
-    match (nv, axis) {
-        (0, _) => {}
-        // A coordinate axis reads one component of each column.
-        (1, Some((0, false))) => column(m, iv, rows.clone(), upper, |d| columns[d].component(0)),
-        (1, Some((1, false))) => column(m, iv, rows.clone(), upper, |d| columns[d].component(1)),
-        (1, Some((_, false))) => column(m, iv, rows.clone(), upper, |d| columns[d].component(2)),
-        (1, Some((0, true))) => column(m, iv, rows.clone(), upper, |d| -columns[d].component(0)),
-        (1, Some((1, true))) => column(m, iv, rows.clone(), upper, |d| -columns[d].component(1)),
-        (1, Some((_, true))) => column(m, iv, rows.clone(), upper, |d| -columns[d].component(2)),
-        // One coordinate: its own row is the diagonal alone.
-        (1, None) => {
-            for d in rows {
-                joint.project_force(&columns[d], &mut m[d][iv..=iv]);
-                if upper {
-                    m[iv][d] = m[d][iv];
-                }
-            }
-        }
-        _ => {
-            for d in rows {
-                if d < iv + nv {
-                    let mut projected = [S::ZERO; MAX_JOINT_NV];
-                    joint.project_force(&columns[d], &mut projected[..nv]);
-                    m[d][iv..=d].copy_from_slice(&projected[..=d - iv]);
-                } else {
-                    joint.project_force(&columns[d], &mut m[d][iv..iv + nv]);
-                }
-                if upper {
-                    for k in iv..(iv + nv).min(d + 1) {
-                        m[k][d] = m[d][k];
-                    }
-                }
-            }
-        }
-    }
-}
-
-/// `M[d][iv] = entry(d)` for the rows d of `rows` (with `upper`, its
-/// mirror `M[iv][d]` too): a one-coordinate joint's column.
-#[inline(always)]
-fn column<S: Scalar, const NV: usize>(
-    m: &mut [[S; NV]],
-    iv: usize,
-    rows: core::ops::Range<usize>,
-    upper: bool,
-    entry: impl Fn(usize) -> S,
-) {
-    for d in rows {
-        let e = entry(d);
-        m[d][iv] = e;
-        if upper {
-            m[iv][d] = e;
-        }
-    }
-}
-
 #[cfg(all(test, feature = "std"))]
 mod tests {
-    use super::{bias_and_mass_lower, crba, crba_lower};
+    use super::{bias_and_mass_lower, crba, crba_lower, CrbaPass};
     use crate::algorithm::kinematics::body_transform;
     use crate::joint::{Axis, Joint};
     use crate::spatial::{AxisPermutation, Inertia, Mat3, Motion, Spatial, Sym3, Transform, Vec3};
@@ -877,7 +483,7 @@ mod tests {
     #[test]
     fn the_root_frame_pass_gives_rneas_columns_with_and_without_turns() {
         let plain = long_chain();
-        assert!(super::about_root_pays::<f64, 52, 52>(plain.topology()));
+        assert!(CrbaPass::default_for::<f64, 52, 52>(plain.topology()) == CrbaPass::RootFrame);
         let turned = plain.with_recognised_turns();
         let turned_bodies = (0..52)
             .filter(|&i| turned.turned_frame(i).axis().is_some())
@@ -899,7 +505,7 @@ mod tests {
             i => Some(i - 1),
         });
         let model = long_tree::<60, 60, 60>(parents, Joint::revolute(Axis::X));
-        assert!(super::about_root_pays::<f64, 60, 60>(model.topology()));
+        assert!(CrbaPass::default_for::<f64, 60, 60>(model.topology()) == CrbaPass::RootFrame);
         let q: [f64; 60] = core::array::from_fn(|k| (0.9 * k as f64).cos() * 1.2);
         assert_rneas_columns(&model, &q);
         let m = *crba(&model, &mut Data::new(), &q).unwrap();
@@ -912,7 +518,7 @@ mod tests {
         // a block whose entries below its diagonal are dot products too.
         let parents = core::array::from_fn(|i: usize| i.checked_sub(1));
         let model = long_tree::<61, 67, 66>(parents, Joint::free_flyer());
-        assert!(super::about_root_pays::<f64, 61, 66>(model.topology()));
+        assert!(CrbaPass::default_for::<f64, 61, 66>(model.topology()) == CrbaPass::RootFrame);
         let norm = (0.01f64 + 0.04 + 0.09 + 0.86).sqrt();
         let q: [f64; 67] = core::array::from_fn(|k| match k {
             0..3 => 0.3 * k as f64 - 0.2,
@@ -1067,7 +673,7 @@ mod tests {
                 *e = (10 * r + c) as f64;
             }
         }
-        super::mirror_lower(&mut m);
+        super::triangle::mirror_lower(&mut m);
         for r in 0..N {
             for c in 0..N {
                 let e = (10 * r.max(c) + r.min(c)) as f64;
