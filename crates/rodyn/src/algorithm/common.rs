@@ -345,3 +345,56 @@ mod tests {
         }
     }
 }
+
+/// The lower Cholesky factor `L` (`A = L Lᵀ`) of the leading `n × n` block
+/// of `a`, in place (lower triangle; the upper is left as it was). A pivot
+/// must exceed `tolerance · ε · max diag` (0 asks only for a positive one).
+///
+/// # Errors
+/// The row of the first pivot that does not (NaN included).
+pub(crate) fn cholesky_in_place<S: Scalar, const N: usize>(
+    a: &mut [[S; N]; N],
+    n: usize,
+    tolerance: f64,
+) -> core::result::Result<(), usize> {
+    let scale = (0..n).fold(0.0_f64, |m, k| m.max(a[k][k].to_f64().abs()));
+    let smallest = S::EPSILON * tolerance * scale;
+    for j in 0..n {
+        let mut d = a[j][j];
+        for k in 0..j {
+            d -= a[j][k] * a[j][k];
+        }
+        // A NaN pivot fails too: `d > smallest` is false for it.
+        if d.to_f64().partial_cmp(&smallest) != Some(core::cmp::Ordering::Greater) {
+            return Err(j);
+        }
+        let d = d.sqrt();
+        a[j][j] = d;
+        for i in j + 1..n {
+            let mut s = a[i][j];
+            for k in 0..j {
+                s -= a[i][k] * a[j][k];
+            }
+            a[i][j] = s / d;
+        }
+    }
+    Ok(())
+}
+
+/// Solves `L Lᵀ x = b` in place for the factor of [`cholesky_in_place`].
+pub(crate) fn cholesky_solve<S: Scalar, const N: usize>(l: &[[S; N]; N], n: usize, b: &mut [S; N]) {
+    for i in 0..n {
+        let mut s = b[i];
+        for k in 0..i {
+            s -= l[i][k] * b[k];
+        }
+        b[i] = s / l[i][i];
+    }
+    for i in (0..n).rev() {
+        let mut s = b[i];
+        for k in i + 1..n {
+            s -= l[k][i] * b[k];
+        }
+        b[i] = s / l[i][i];
+    }
+}

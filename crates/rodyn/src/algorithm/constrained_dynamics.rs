@@ -28,6 +28,7 @@
 //! Cost: one RNEA, one CRBA and factorisation, one `Lᵀ D L` solve per
 //! constrained row, the joint Jacobians, and a dense `3k × 3k` solve.
 
+use super::common::{cholesky_in_place, cholesky_solve};
 use super::crba::crba;
 use super::frames::{
     frame_classical_acceleration, frame_placement, frame_velocity, ReferenceFrame,
@@ -43,6 +44,11 @@ use crate::model::{check_finite, check_result, Model};
 use crate::space::{RigidTransform, VectorOps};
 use crate::spatial::{Motion, Spatial, Vec3};
 use crate::Scalar;
+
+/// Relative size (of the Delassus matrix's largest diagonal entry, in
+/// units of ε) below which a pivot counts as zero: the contacts are
+/// redundant.
+const PIVOT_TOLERANCE: f64 = 1e3;
 
 /// A point of a body held by the environment: the origin of `frame` kept
 /// at `anchor` (world frame, m).
@@ -335,7 +341,8 @@ fn prepare<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, const N
         }
         cdata.delassus[r][r] += damping;
     }
-    cholesky_in_place(&mut cdata.delassus, rows)
+    cholesky_in_place(&mut cdata.delassus, rows, PIVOT_TOLERANCE)
+        .map_err(|row| Error::RedundantConstraints { row })
 }
 
 /// `cdata.ddq = base + M⁻¹ J_cᵀ λ` from the rows of `M⁻¹ J_cᵀ` and `λ`.
@@ -354,53 +361,4 @@ fn add_response<S: Scalar, const NV: usize, const NC: usize>(
 
 fn dot<S: Scalar, const N: usize>(a: &[S; N], b: &[S; N]) -> S {
     a.iter().zip(b).fold(S::ZERO, |acc, (x, y)| acc + *x * *y)
-}
-
-/// The lower Cholesky factor `L` (`A = L Lᵀ`) of the leading `n × n` block
-/// of `a`, in place (lower triangle; the upper is left as it was).
-///
-/// # Errors
-/// [`Error::RedundantConstraints`] at the first pivot that is not safely
-/// positive (relative to the largest diagonal entry).
-fn cholesky_in_place<S: Scalar, const N: usize>(a: &mut [[S; N]; N], n: usize) -> Result<()> {
-    let scale = (0..n).fold(0.0_f64, |m, k| m.max(a[k][k].to_f64().abs()));
-    let tolerance = S::EPSILON * 1e3 * scale.max(f64::MIN_POSITIVE);
-    for j in 0..n {
-        let mut d = a[j][j];
-        for k in 0..j {
-            d -= a[j][k] * a[j][k];
-        }
-        // A NaN pivot fails too: `d > tolerance` is false for it.
-        if d.to_f64().partial_cmp(&tolerance) != Some(core::cmp::Ordering::Greater) {
-            return Err(Error::RedundantConstraints { row: j });
-        }
-        let d = d.sqrt();
-        a[j][j] = d;
-        for i in j + 1..n {
-            let mut s = a[i][j];
-            for k in 0..j {
-                s -= a[i][k] * a[j][k];
-            }
-            a[i][j] = s / d;
-        }
-    }
-    Ok(())
-}
-
-/// Solves `L Lᵀ x = b` in place for the factor of [`cholesky_in_place`].
-fn cholesky_solve<S: Scalar, const N: usize>(l: &[[S; N]; N], n: usize, b: &mut [S; N]) {
-    for i in 0..n {
-        let mut s = b[i];
-        for k in 0..i {
-            s -= l[i][k] * b[k];
-        }
-        b[i] = s / l[i][i];
-    }
-    for i in (0..n).rev() {
-        let mut s = b[i];
-        for k in i + 1..n {
-            s -= l[k][i] * b[k];
-        }
-        b[i] = s / l[i][i];
-    }
 }

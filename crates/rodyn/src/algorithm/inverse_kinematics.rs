@@ -14,6 +14,7 @@
 //! unreachable targets, where the iteration then settles at the closest
 //! reachable pose and reports [`Error::NotConverged`].
 
+use super::common::{cholesky_in_place, cholesky_solve};
 use super::frames::{frame_placement, ReferenceFrame};
 use super::jacobian::{frame_jacobian, joint_jacobians, JacobianData};
 use crate::data::Data;
@@ -179,7 +180,7 @@ pub fn step<S: Scalar, const NB: usize, const NQ: usize, const NV: usize>(
     for r in 0..6 {
         a[r][r] += damping * damping;
     }
-    let y = cholesky_solve(&mut a, &column(&e));
+    let y = cholesky_solve_6(&mut a, &column(&e));
     let dq: [S; NV] = core::array::from_fn(|k| {
         let c = column(&j[k]);
         (0..6).fold(S::ZERO, |acc, r| acc + c[r] * y[r])
@@ -237,41 +238,14 @@ fn column<S: Scalar>(m: &Motion<S>) -> [S; 6] {
 }
 
 /// Solves `A y = b` for a symmetric positive definite 6×6 `A` given by its
-/// lower triangle, which it overwrites with its Cholesky factor.
-fn cholesky_solve<S: Scalar>(a: &mut [[S; 6]; 6], b: &[S; 6]) -> [S; 6] {
-    for k in 0..6 {
-        let mut d = a[k][k];
-        for p in 0..k {
-            d -= a[k][p] * a[k][p];
-        }
-        // A non-positive pivot (rounding with a tiny damping) makes the
-        // step non-finite, which the caller reports.
-        let l = if d > S::ZERO {
-            d.sqrt()
-        } else {
-            S::from_f64(f64::NAN)
-        };
-        a[k][k] = l;
-        for r in k + 1..6 {
-            let mut s = a[r][k];
-            for p in 0..k {
-                s -= a[r][p] * a[k][p];
-            }
-            a[r][k] = s / l;
-        }
-    }
+/// lower triangle, which it overwrites with its Cholesky factor. A
+/// non-positive pivot (rounding with a tiny damping) makes the step
+/// non-finite, which the caller reports.
+fn cholesky_solve_6<S: Scalar>(a: &mut [[S; 6]; 6], b: &[S; 6]) -> [S; 6] {
     let mut y = *b;
-    for r in 0..6 {
-        for p in 0..r {
-            y[r] -= a[r][p] * y[p];
-        }
-        y[r] /= a[r][r];
-    }
-    for r in (0..6).rev() {
-        for p in r + 1..6 {
-            y[r] -= a[p][r] * y[p];
-        }
-        y[r] /= a[r][r];
+    match cholesky_in_place(a, 6, 0.0) {
+        Ok(()) => cholesky_solve(a, 6, &mut y),
+        Err(_) => y = [S::from_f64(f64::NAN); 6],
     }
     y
 }
