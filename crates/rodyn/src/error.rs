@@ -30,6 +30,9 @@ pub enum Quantity {
     Contact,
     /// A drive input `w` (a muscle activation, a motor current).
     DriveInput,
+    /// A derivative of the dynamics (a result; `index` is `row · NV +
+    /// column` of its matrix).
+    Derivative,
 }
 
 /// What is wrong with a model parameter.

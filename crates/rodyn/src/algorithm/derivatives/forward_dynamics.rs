@@ -1,0 +1,94 @@
+//! `∂q̈/∂q`, `∂q̈/∂v` and `∂q̈/∂τ = M⁻¹` of forward dynamics.
+//!
+//! Forward dynamics solves `τ = ID(q, v, q̈)` for q̈, so differentiating
+//! that identity gives `∂q̈/∂x = −M⁻¹ ∂ID/∂x` at `q̈ = FD(q, v, τ)`
+//! (Carpentier & Mansard 2018, §IV). `M⁻¹` comes from the branch-aware
+//! `Lᵀ D L` factorisation, one sparse solve per column.
+
+use super::{rnea_derivatives, DerivativeData, DerivativeSpace};
+use crate::algorithm::aba::aba;
+use crate::algorithm::ltdl::{ltdl_factor, ltdl_solve};
+use crate::data::Data;
+use crate::error::{Quantity, Result};
+use crate::model::{check_result, Model};
+use crate::Scalar;
+
+/// Forward dynamics and its derivatives at `(q, v, τ)`: `q̈` in
+/// `data.ddq`, `∂q̈/∂q` in `deriv.ddq_dq`, `∂q̈/∂v` in `deriv.ddq_dv` and
+/// `∂q̈/∂τ = M⁻¹` in `deriv.minv` (both triangles).
+///
+/// External forces as for [`aba`]. Runs [`aba`] and
+/// [`rnea_derivatives`] at the result, then factors `M`: leaves valid
+/// `deriv.dtau_dq` and `deriv.dtau_dv` at `(q, v, q̈)`, `data.mass_matrix`
+/// and `data.ltdl`.
+///
+/// # Errors
+/// As [`aba`] and [`rnea_derivatives`];
+/// [`Error::MassMatrixNotPositiveDefinite`](crate::Error::MassMatrixNotPositiveDefinite)
+/// from the factorisation.
+///
+/// # Example
+///
+/// ```
+/// use rodyn::algorithm::derivatives::{aba_derivatives, DerivativeData};
+/// use rodyn::prelude::*;
+/// // The pendulum of `rnea_derivatives`: q̈ = τ - g cos q, so
+/// // ∂q̈/∂q = g sin q and ∂q̈/∂τ = 1.
+/// const PENDULUM: Model<f64, 1, 1, 1> = Model::new(
+///     [None], [Joint::revolute(Axis::Z)], [Transform::IDENTITY],
+///     [Inertia::point_mass(1.0, Vec3::new(1.0, 0.0, 0.0))],
+///     Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
+/// );
+/// let (mut data, mut deriv) = (Data::new(), DerivativeData::new());
+/// let q = 0.3;
+/// aba_derivatives(&PENDULUM, &mut data, &mut deriv, &[q], &[2.0], &[4.0], None)?;
+/// assert!((deriv.ddq_dq[0][0] - 9.81 * f64::sin(q)).abs() < 1e-12);
+/// assert!((deriv.minv[0][0] - 1.0).abs() < 1e-12);
+/// # Ok::<(), rodyn::Error>(())
+/// ```
+#[allow(clippy::too_many_arguments)]
+pub fn aba_derivatives<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: DerivativeSpace,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    deriv: &mut DerivativeData<S, NB, NV, G>,
+    q: &[S; NQ],
+    v: &[S; NV],
+    tau: &[S; NV],
+    f_ext: Option<&[G::Force<S>; NB]>,
+) -> Result<()> {
+    let ddq = *aba(model, data, q, v, tau, f_ext)?;
+    rnea_derivatives(model, data, deriv, q, v, &ddq, f_ext)?;
+    ltdl_factor(model, data)?;
+    for c in 0..NV {
+        let mut e = [S::ZERO; NV];
+        e[c] = S::ONE;
+        ltdl_solve(model, data, &mut e)?;
+        set_column(&mut deriv.minv, c, &e);
+        let mut x = column(&deriv.dtau_dq, c).map(|x| -x);
+        ltdl_solve(model, data, &mut x)?;
+        set_column(&mut deriv.ddq_dq, c, &x);
+        let mut x = column(&deriv.dtau_dv, c).map(|x| -x);
+        ltdl_solve(model, data, &mut x)?;
+        set_column(&mut deriv.ddq_dv, c, &x);
+    }
+    data.ddq = ddq;
+    check_result(deriv.ddq_dq.as_flattened(), Quantity::Derivative)?;
+    check_result(deriv.ddq_dv.as_flattened(), Quantity::Derivative)?;
+    check_result(deriv.minv.as_flattened(), Quantity::Derivative)
+}
+
+fn column<S: Scalar, const N: usize>(m: &[[S; N]; N], c: usize) -> [S; N] {
+    core::array::from_fn(|r| m[r][c])
+}
+
+fn set_column<S: Scalar, const N: usize>(m: &mut [[S; N]; N], c: usize, x: &[S; N]) {
+    for (row, x) in m.iter_mut().zip(x) {
+        row[c] = *x;
+    }
+}

@@ -1,0 +1,227 @@
+//! `∂τ/∂q`, `∂τ/∂v` and `M` of inverse dynamics (Carpentier & Mansard 2018).
+//!
+//! All quantities are in the world frame, body i's written `vᵢ`, `aᵢ`
+//! (gravity included as a base acceleration `−g`), `Yᵢ`, `Ẏᵢ`, and its
+//! subtree's composites `Yᶜᵢ`, `Ẏᶜᵢ`, `Fᶜᵢ` (the force across joint i);
+//! `S_c` is coordinate c's column and λ its body's parent. Per coordinate:
+//!
+//! ```text
+//! ∂v/∂q_c = v_λ × S_c                        (dv_dq)
+//! ∂a/∂q_c = a_λ × S_c + v_λ × (v_λ × S_c)    (da_dq)
+//! ∂a/∂v_c = vᵢ × S_c + v_λ × S_c             (da_dv)
+//! ∂F/∂q_c = Yᶜᵢ da_dq + Ẏᶜᵢ dv_dq            (df_dq)
+//! ∂F/∂v_c = Yᶜᵢ da_dv + Ẏᶜᵢ S_c              (df_dv)
+//! ```
+//!
+//! which every body of i's subtree shares, beyond the rigid turn of the
+//! subtree about `S_c` (which leaves `S_rᵀ Fᶜ` unchanged for any row r in
+//! the subtree, and adds `S_c ×* Fᶜᵢ` to the force seen by the rows above
+//! i). With rows r of joint j: for c in j's subtree (j's own columns
+//! included) `∂τ_r/∂q_c = S_rᵀ (df_dq_c + [c not j's] S_c ×* Fᶜᵢ)`; for c
+//! above j, `∂τ_r/∂q_c = S_rᵀ (Yᶜⱼ da_dq_c + Ẏᶜⱼ dv_dq_c)`; and likewise
+//! for v without the turn term. Other entries are zero.
+
+use super::{DerivativeData, DerivativeSpace, InertiaVariation};
+use crate::algorithm::rnea::rnea;
+use crate::data::Data;
+use crate::error::{Quantity, Result};
+use crate::model::{check_result, Model};
+use crate::space::{BodyInertia, MotionVector, RigidTransform, VectorOps};
+use crate::Scalar;
+
+/// Inverse dynamics and its derivatives at `(q, v, a)`: `τ` in `data.tau`,
+/// `∂τ/∂q` in `deriv.dtau_dq`, `∂τ/∂v` in `deriv.dtau_dv`, and
+/// `∂τ/∂a = M(q)` in `data.mass_matrix` (both triangles, rotor inertias
+/// included).
+///
+/// External forces, one per body in its own frame as for
+/// [`rnea`], enter `τ` and, since they turn with their bodies, `∂τ/∂q`.
+/// Runs [`rnea`]; leaves valid what it leaves, and `data.o_m_i`.
+///
+/// # Errors
+/// As [`rnea`], and
+/// [`Error::NonFiniteResult`](crate::Error::NonFiniteResult) with
+/// [`Quantity::Derivative`] (index `row · NV + column`) when a derivative
+/// overflows.
+///
+/// # Example
+///
+/// ```
+/// use rodyn::algorithm::derivatives::{rnea_derivatives, DerivativeData};
+/// use rodyn::prelude::*;
+/// // A 1 kg point mass on a massless 1 m link, pivot about z, gravity -y:
+/// // τ = q̈ + g cos q, so ∂τ/∂q = -g sin q and ∂τ/∂v = 0.
+/// const PENDULUM: Model<f64, 1, 1, 1> = Model::new(
+///     [None], [Joint::revolute(Axis::Z)], [Transform::IDENTITY],
+///     [Inertia::point_mass(1.0, Vec3::new(1.0, 0.0, 0.0))],
+///     Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
+/// );
+/// let (mut data, mut deriv) = (Data::new(), DerivativeData::new());
+/// let q = 0.3;
+/// rnea_derivatives(&PENDULUM, &mut data, &mut deriv, &[q], &[2.0], &[1.5], None)?;
+/// assert!((deriv.dtau_dq[0][0] + 9.81 * f64::sin(q)).abs() < 1e-12);
+/// assert!(deriv.dtau_dv[0][0].abs() < 1e-12);
+/// assert!((data.mass_matrix[0][0] - 1.0).abs() < 1e-12);
+/// # Ok::<(), rodyn::Error>(())
+/// ```
+#[allow(clippy::too_many_arguments)]
+pub fn rnea_derivatives<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: DerivativeSpace,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    deriv: &mut DerivativeData<S, NB, NV, G>,
+    q: &[S; NQ],
+    v: &[S; NV],
+    a: &[S; NV],
+    f_ext: Option<&[G::Force<S>; NB]>,
+) -> Result<()> {
+    // RNEA checks the inputs and leaves the joint transforms, body
+    // velocities and accelerations and the composite forces, in body frames.
+    rnea(model, data, q, v, a, f_ext)?;
+    world_pass(model, data, deriv);
+    for row in deriv.dtau_dq.iter_mut().chain(deriv.dtau_dv.iter_mut()) {
+        *row = [S::ZERO; NV];
+    }
+    data.mass_matrix = [[S::ZERO; NV]; NV];
+    backward_pass(model, deriv);
+    subtree_columns_pass(model, data, deriv);
+    for (k, armature) in model.armature().iter().enumerate() {
+        data.mass_matrix[k][k] += *armature;
+    }
+    check_result(deriv.dtau_dq.as_flattened(), Quantity::Derivative)?;
+    check_result(deriv.dtau_dv.as_flattened(), Quantity::Derivative)?;
+    check_result(data.mass_matrix.as_flattened(), Quantity::MassMatrix)
+}
+
+/// Root to leaves: body poses `ᵒMᵢ`, world velocities and accelerations,
+/// each body's `Yᵢ` and `Ẏᵢ` (the composites' starting values), the
+/// composite forces in the world, and per coordinate `S_c`, `dv_dq`,
+/// `da_dq`, `da_dv`.
+fn world_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: DerivativeSpace>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    deriv: &mut DerivativeData<S, NB, NV, G>,
+) {
+    let t = model.topology();
+    let minus_g = -*model.gravity();
+    for i in 0..NB {
+        let (o_m_i, v_parent, a_parent) = match model.parent(i) {
+            Some(p) => (
+                data.o_m_i[p].compose(&data.li_m_i[i]),
+                deriv.o_v[p],
+                deriv.o_a[p],
+            ),
+            None => (
+                data.li_m_i[i],
+                <G::Motion<S> as VectorOps<S>>::ZERO,
+                minus_g,
+            ),
+        };
+        data.o_m_i[i] = o_m_i;
+        let v_i = o_m_i.act_motion(&data.v[i]);
+        let y_i = model.inertia(i).act(&o_m_i);
+        deriv.o_v[i] = v_i;
+        deriv.o_a[i] = o_m_i.act_motion(&data.a_gf[i]);
+        deriv.o_yc[i] = y_i;
+        deriv.o_dyc[i] = InertiaVariation::of_body(&y_i, &v_i);
+        deriv.o_fc[i] = o_m_i.act_force(&data.f[i]);
+        let joint = model.joint(i);
+        for k in 0..t.nv[i] {
+            let c = t.idx_v[i] + k;
+            let s = G::act_subspace_column(&o_m_i, joint, k);
+            let dv_dq = v_parent.cross_motion(&s);
+            deriv.s[c] = s;
+            deriv.dv_dq[c] = dv_dq;
+            deriv.da_dq[c] = a_parent.cross_motion(&s) + v_parent.cross_motion(&dv_dq);
+            deriv.da_dv[c] = v_i.cross_motion(&s) + dv_dq;
+        }
+    }
+}
+
+/// Leaves to root, with body j's composites complete: the force
+/// derivatives of j's own columns, and the entries of j's rows in the
+/// columns of the joints above it.
+fn backward_pass<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: DerivativeSpace,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    deriv: &mut DerivativeData<S, NB, NV, G>,
+) {
+    let t = model.topology();
+    for j in (0..NB).rev() {
+        let (y, dy) = (deriv.o_yc[j], deriv.o_dyc[j]);
+        let columns = t.idx_v[j]..t.idx_v[j] + t.nv[j];
+        for c in columns.clone() {
+            deriv.df_dq[c] = y.mul_motion(&deriv.da_dq[c]) + dy.mul_motion(&deriv.dv_dq[c]);
+            deriv.df_dv[c] = y.mul_motion(&deriv.da_dv[c]) + dy.mul_motion(&deriv.s[c]);
+            deriv.df_da[c] = y.mul_motion(&deriv.s[c]);
+        }
+        for r in columns {
+            // `Yᶜ` is symmetric, so `S_rᵀ Yᶜ x = (Yᶜ S_r) · x`.
+            let y_s = deriv.df_da[r];
+            let dy_row = dy.row(&deriv.s[r]);
+            let mut above = model.parent(j);
+            while let Some(i) = above {
+                for c in t.idx_v[i]..t.idx_v[i] + t.nv[i] {
+                    deriv.dtau_dq[r][c] = deriv.da_dq[c].dot(&y_s)
+                        + InertiaVariation::<S, G>::dot_row(&dy_row, &deriv.dv_dq[c]);
+                    deriv.dtau_dv[r][c] = deriv.da_dv[c].dot(&y_s)
+                        + InertiaVariation::<S, G>::dot_row(&dy_row, &deriv.s[c]);
+                }
+                above = model.parent(i);
+            }
+        }
+        if let Some(p) = model.parent(j) {
+            deriv.o_yc[p] = deriv.o_yc[p].combine(&y);
+            deriv.o_dyc[p].add_assign(&dy);
+        }
+    }
+}
+
+/// For every column c (of body i), the rows of i and of the joints above
+/// it, which see the subtree's force change `df_dq_c` (and, above i, the
+/// turn `S_c ×* Fᶜᵢ`); and `M`'s entries there, both triangles.
+fn subtree_columns_pass<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: DerivativeSpace,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    deriv: &mut DerivativeData<S, NB, NV, G>,
+) {
+    let t = model.topology();
+    for i in 0..NB {
+        for c in t.idx_v[i]..t.idx_v[i] + t.nv[i] {
+            let turn = deriv.s[c].cross_force(&deriv.o_fc[i]);
+            let mut row_body = Some(i);
+            while let Some(j) = row_body {
+                for r in t.idx_v[j]..t.idx_v[j] + t.nv[j] {
+                    let s_r = &deriv.s[r];
+                    let df_dq = if j == i {
+                        deriv.df_dq[c]
+                    } else {
+                        deriv.df_dq[c] + turn
+                    };
+                    deriv.dtau_dq[r][c] = s_r.dot(&df_dq);
+                    deriv.dtau_dv[r][c] = s_r.dot(&deriv.df_dv[c]);
+                    let m = s_r.dot(&deriv.df_da[c]);
+                    data.mass_matrix[r][c] = m;
+                    data.mass_matrix[c][r] = m;
+                }
+                row_body = model.parent(j);
+            }
+        }
+    }
+}
