@@ -38,3 +38,31 @@ pub fn median(values: &mut [f64]) -> f64 {
         0.5 * (values[mid - 1] + values[mid])
     }
 }
+
+/// Nanoseconds per call of `f(k)` over about `ms` milliseconds, median of
+/// five measurements (the loop of `bench_timing.hpp` on Pinocchio's side).
+pub fn median_ns<R>(ms: f64, states: usize, mut f: impl FnMut(usize) -> R) -> f64 {
+    let calls = calls_for(ms * 1e6, states, &mut f);
+    let mut runs: Vec<f64> = (0..5).map(|_| ns_per_call(calls, states, &mut f)).collect();
+    median(&mut runs)
+}
+
+/// The `--ms M` argument of a timing binary (milliseconds per
+/// measurement), `default` without it.
+///
+/// # Panics
+/// When `--ms` is not followed by a number.
+#[must_use]
+pub fn ms_argument(default: f64) -> f64 {
+    let mut args = std::env::args().skip(1);
+    let mut ms = default;
+    while let Some(a) = args.next() {
+        if a == "--ms" {
+            ms = args
+                .next()
+                .and_then(|v| v.parse().ok())
+                .expect("--ms <milliseconds>");
+        }
+    }
+    ms
+}

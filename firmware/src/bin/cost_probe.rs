@@ -11,6 +11,7 @@
 
 use cortex_m_rt::entry;
 use rodyn::algorithm::crba::crba;
+use rodyn::algorithm::derivatives::{aba_derivatives, rnea_derivatives, DerivativeData};
 use rodyn::algorithm::forward_dynamics::{Aba, Crba, ForwardDynamics};
 use rodyn::algorithm::rnea::rnea;
 use rodyn::sim::SemiImplicitEuler;
@@ -271,6 +272,29 @@ fn probe_quadruped_step(counter: &InstructionCounter) -> bool {
     )
 }
 
+/// The Panda's analytic derivatives: `∂τ/∂(q, v)` with `M`, and
+/// `∂q̈/∂(q, v, τ)`, at random angles (±π), rates (±2) and accelerations or
+/// torques (±5).
+fn probe_derivatives(counter: &InstructionCounter) -> bool {
+    const NB: usize = 7;
+    let draw = |rng: &mut XorShift32| {
+        let (mut q, mut v, mut u) = ([0.0f32; NB], [0.0f32; NB], [0.0f32; NB]);
+        rng.fill_symmetric(&mut q, core::f32::consts::PI);
+        rng.fill_symmetric(&mut v, 2.0);
+        rng.fill_symmetric(&mut u, 5.0);
+        (q, v, u)
+    };
+    let mut data = Data::new();
+    let mut deriv = DerivativeData::<f32, NB, NB>::new();
+    let inverse = probe_scene("panda-7dof", "RNEA-derivatives", counter, draw, |(q, v, a)| {
+        rnea_derivatives(&PANDA, &mut data, &mut deriv, q, v, a, None).is_ok()
+    });
+    let forward = probe_scene("panda-7dof", "ABA-derivatives", counter, draw, |(q, v, tau)| {
+        aba_derivatives(&PANDA, &mut data, &mut deriv, q, v, tau, None).is_ok()
+    });
+    inverse & forward
+}
+
 /// One f32 `sin_cos` as rodyn's scalar computes it without std (libm): every
 /// revolute joint pays it once per call of an algorithm.
 fn sin_cos_cost(counter: &InstructionCounter) {
@@ -304,6 +328,7 @@ fn main() -> ! {
         & probe("pendulum-planar", &PENDULUM_PLANAR, &counter)
         & probe("panda-7dof", &PANDA, &counter)
         & probe("quadruped-floating", &QUADRUPED, &counter)
+        & probe_derivatives(&counter)
         & probe_muscle_robot(&counter)
         & probe_quadruped_step(&counter);
     exit_with(passed)

@@ -1,50 +1,21 @@
 // Pinocchio's time per call of the kinematics-for-control algorithms, as
 // `model algorithm ns` lines beside rodyn's (`kinematics_timing`); built and
-// run by compare_kinematics.sh with the flags of bench.cpp.
+// run by compare_suite.sh with the flags of bench.cpp.
 #include <pinocchio/algorithm/centroidal.hpp>
 #include <pinocchio/algorithm/frames.hpp>
 #include <pinocchio/algorithm/jacobian.hpp>
 #include <pinocchio/algorithm/joint-configuration.hpp>
 #include <pinocchio/parsers/urdf.hpp>
 
-#include <algorithm>
-#include <chrono>
 #include <cstdio>
-#include <functional>
 #include <string>
 #include <vector>
 
+#include "bench_timing.hpp"
+
 namespace
 {
-  double ns_per_call(std::size_t calls, std::size_t states, const std::function<void(std::size_t)> & body)
-  {
-    const auto start = std::chrono::steady_clock::now();
-    for (std::size_t i = 0; i < calls; ++i)
-      body(i % states);
-    const auto stop = std::chrono::steady_clock::now();
-    return std::chrono::duration<double, std::nano>(stop - start).count() / double(calls);
-  }
-
-  // The calibration of rodyn-bench's timing loop, median of five runs.
-  double time(double ms, std::size_t states, const std::function<void(std::size_t)> & body)
-  {
-    std::size_t calls = 16;
-    for (;;)
-    {
-      const double per_call = ns_per_call(calls, states, body);
-      if (per_call * double(calls) > 2.0e6 || calls >= (std::size_t(1) << 24))
-      {
-        std::size_t n = std::size_t(ms * 1e6 / std::max(per_call, 1.0));
-        n = std::min(std::max(n, std::size_t(16)), std::size_t(1) << 26);
-        std::vector<double> runs;
-        for (int r = 0; r < 5; ++r)
-          runs.push_back(ns_per_call(n, states, body));
-        std::sort(runs.begin(), runs.end());
-        return runs[2];
-      }
-      calls *= 4;
-    }
-  }
+  using bench::time;
 
   void run(const std::string & name, const std::string & path, bool free_flyer, double ms)
   {

@@ -1,70 +1,7 @@
 #!/usr/bin/env bash
-# rodyn against Pinocchio on the kinematics-for-control algorithms: joint
-# Jacobians, a frame Jacobian, the centroidal map and CCRBA, on UR5, Panda
-# and Solo12 (same URDFs; each side its own 64 random states).
+# rodyn against Pinocchio on the kinematics-for-control algorithms:
 #
 #   tools/pinocchio/bench/compare_kinematics.sh [milliseconds per measurement]
 #
-# Builds tools/pinocchio/bench/bench_kinematics.cpp with compare.sh's flags
-# (g++ -O3, baseline x86-64) and runs it and rodyn-bench's
-# `kinematics_timing` (release) alternately, twice, printing a markdown
-# table of the medians and the ratio rodyn / Pinocchio.
-set -euo pipefail
-
-ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)"
-OUT="$ROOT/target/pinocchio-bench"
-mkdir -p "$OUT"
-MS="${1:-50}"
-
-PREFIX="$(python3 -c 'import sysconfig; print(sysconfig.get_paths()["purelib"])')/cmeel.prefix"
-for header in pinocchio/config.hpp eigen3/Eigen/Core urdfdom_headers/urdf_model/model.h; do
-    if [[ ! -e "$PREFIX/include/$header" ]]; then
-        echo "missing $PREFIX/include/$header: pip install pin cmeel-eigen cmeel-urdfdom-headers" >&2
-        exit 1
-    fi
-done
-
-CXXFLAGS=(-std=c++17 -O3 -DNDEBUG -g
-    -I"$PREFIX/include" -I"$PREFIX/include/eigen3"
-    -I"$PREFIX/include/urdfdom" -I"$PREFIX/include/urdfdom_headers"
-    -DPINOCCHIO_WITH_URDFDOM
-    -DPINOCCHIO_URDFDOM_HEADERS_MAJOR_VERSION=3
-    -DPINOCCHIO_URDFDOM_HEADERS_MINOR_VERSION=0
-    -DPINOCCHIO_URDFDOM_HEADERS_PATCH_VERSION=0
-    -DBOOST_MPL_LIMIT_LIST_SIZE=30 -DBOOST_MPL_LIMIT_VECTOR_SIZE=30
-    -DBOOST_MPL_CFG_NO_PREPROCESSED_HEADERS -DBOOST_FUSION_INVOKE_MAX_ARITY=12)
-LDFLAGS=(-L"$PREFIX/lib" -Wl,-rpath,"$PREFIX/lib"
-    -lpinocchio_parsers -lpinocchio_default -lurdfdom_model -lconsole_bridge
-    -ltinyxml2 -lboost_filesystem)
-
-SRC="$ROOT/tools/pinocchio/bench/bench_kinematics.cpp"
-EXE="$OUT/pinocchio-bench-kinematics"
-if [[ ! -x "$EXE" || "$SRC" -nt "$EXE" || "$0" -nt "$EXE" ]]; then
-    echo "building $EXE (about a minute)" >&2
-    g++ "${CXXFLAGS[@]}" "$SRC" -o "$EXE" "${LDFLAGS[@]}"
-fi
-
-cd "$ROOT"
-cargo build --quiet -p rodyn-bench --release --bin kinematics_timing
-RODYN="$ROOT/target/release/kinematics_timing"
-TMP="$(mktemp -d)"
-for round in 1 2; do
-    "$RODYN" --ms "$MS" >>"$TMP/rodyn"
-    "$EXE" "$MS" >>"$TMP/pinocchio"
-done
-python3 - "$TMP/rodyn" "$TMP/pinocchio" <<'PY'
-import statistics, sys
-def read(path):
-    out = {}
-    for line in open(path):
-        model, algorithm, ns = line.split()
-        out.setdefault((model, algorithm), []).append(float(ns))
-    return {k: statistics.median(v) for k, v in out.items()}
-rodyn, pin = read(sys.argv[1]), read(sys.argv[2])
-print("| model | algorithm | rodyn (ns) | Pinocchio (ns) | rodyn / Pinocchio |")
-print("|---|---|---:|---:|---:|")
-for key in rodyn:
-    r, p = rodyn[key], pin[key]
-    print(f"| {key[0]} | {key[1]} | {r:.0f} | {p:.0f} | {r / p:.2f}x |")
-PY
-rm -r "$TMP"
+# See compare_suite.sh.
+exec "$(dirname "${BASH_SOURCE[0]}")/compare_suite.sh" kinematics "$@"

@@ -21,13 +21,7 @@ use rodyn::spatial::{Force, Motion, Transform};
 use rodyn::{Data, Frame, Model};
 use rodyn_bench::models::{PANDA, SOLO12, UR5};
 use rodyn_bench::state::random_states;
-use rodyn_bench::timing::{calls_for, median, ns_per_call};
-
-fn time(ms: f64, states: usize, mut f: impl FnMut(usize)) -> f64 {
-    let calls = calls_for(ms * 1e6, states, &mut f);
-    let mut runs: Vec<f64> = (0..5).map(|_| ns_per_call(calls, states, &mut f)).collect();
-    median(&mut runs)
-}
+use rodyn_bench::timing::{median_ns as time, ms_argument};
 
 fn run<const NB: usize, const NQ: usize, const NV: usize>(
     name: &str,
@@ -71,16 +65,7 @@ fn run<const NB: usize, const NQ: usize, const NV: usize>(
 }
 
 fn main() {
-    let mut args = std::env::args().skip(1);
-    let mut ms = 50.0;
-    while let Some(a) = args.next() {
-        if a == "--ms" {
-            ms = args
-                .next()
-                .and_then(|v| v.parse().ok())
-                .expect("--ms <milliseconds>");
-        }
-    }
+    let ms = ms_argument(50.0);
     run("ur5", &UR5, ms);
     run("panda", &PANDA, ms);
     run("solo12", &SOLO12, ms);

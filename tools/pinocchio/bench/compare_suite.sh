@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# rodyn against Pinocchio on one suite of algorithms beyond compare.sh's,
+# on UR5, Panda and Solo12 (same URDFs; each side its own 64 random states):
+#
+#   tools/pinocchio/bench/compare_suite.sh SUITE [milliseconds per measurement]
+#
+# SUITE is `kinematics` (joint Jacobians, a frame Jacobian, the centroidal
+# map, CCRBA) or `derivatives` (RNEA and ABA derivatives). Builds
+# tools/pinocchio/bench/bench_SUITE.cpp with compare.sh's flags (g++ -O3,
+# baseline x86-64) and runs it and rodyn-bench's `SUITE_timing` (release)
+# alternately, twice, printing a markdown table of the medians and the
+# ratio rodyn / Pinocchio. compare_kinematics.sh and compare_derivatives.sh
+# name the suite for you.
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)"
+OUT="$ROOT/target/pinocchio-bench"
+mkdir -p "$OUT"
+SUITE="${1:?usage: compare_suite.sh kinematics|derivatives [ms]}"
+MS="${2:-50}"
+case "$SUITE" in
+    kinematics | derivatives) ;;
+    *) echo "unknown suite '$SUITE': kinematics or derivatives" >&2; exit 2 ;;
+esac
+
+PREFIX="$(python3 -c 'import sysconfig; print(sysconfig.get_paths()["purelib"])')/cmeel.prefix"
+for header in pinocchio/config.hpp eigen3/Eigen/Core urdfdom_headers/urdf_model/model.h; do
+    if [[ ! -e "$PREFIX/include/$header" ]]; then
+        echo "missing $PREFIX/include/$header: pip install pin cmeel-eigen cmeel-urdfdom-headers" >&2
+        exit 1
+    fi
+done
+
+CXXFLAGS=(-std=c++17 -O3 -DNDEBUG -g
+    -I"$PREFIX/include" -I"$PREFIX/include/eigen3"
+    -I"$PREFIX/include/urdfdom" -I"$PREFIX/include/urdfdom_headers"
+    -DPINOCCHIO_WITH_URDFDOM
+    -DPINOCCHIO_URDFDOM_HEADERS_MAJOR_VERSION=3
+    -DPINOCCHIO_URDFDOM_HEADERS_MINOR_VERSION=0
+    -DPINOCCHIO_URDFDOM_HEADERS_PATCH_VERSION=0
+    -DBOOST_MPL_LIMIT_LIST_SIZE=30 -DBOOST_MPL_LIMIT_VECTOR_SIZE=30
+    -DBOOST_MPL_CFG_NO_PREPROCESSED_HEADERS -DBOOST_FUSION_INVOKE_MAX_ARITY=12)
+LDFLAGS=(-L"$PREFIX/lib" -Wl,-rpath,"$PREFIX/lib"
+    -lpinocchio_parsers -lpinocchio_default -lurdfdom_model -lconsole_bridge
+    -ltinyxml2 -lboost_filesystem)
+
+SRC="$ROOT/tools/pinocchio/bench/bench_$SUITE.cpp"
+HEADER="$ROOT/tools/pinocchio/bench/bench_timing.hpp"
+EXE="$OUT/pinocchio-bench-$SUITE"
+if [[ ! -x "$EXE" || "$SRC" -nt "$EXE" || "$HEADER" -nt "$EXE" || "$0" -nt "$EXE" ]]; then
+    echo "building $EXE (about a minute)" >&2
+    g++ "${CXXFLAGS[@]}" "$SRC" -o "$EXE" "${LDFLAGS[@]}"
+fi
+
+cd "$ROOT"
+cargo build --quiet -p rodyn-bench --release --bin "${SUITE}_timing"
+RODYN="$ROOT/target/release/${SUITE}_timing"
+TMP="$(mktemp -d)"
+for round in 1 2; do
+    "$RODYN" --ms "$MS" >>"$TMP/rodyn"
+    "$EXE" "$MS" >>"$TMP/pinocchio"
+done
+python3 - "$TMP/rodyn" "$TMP/pinocchio" <<'PY'
+import statistics, sys
+def read(path):
+    out = {}
+    for line in open(path):
+        model, algorithm, ns = line.split()
+        out.setdefault((model, algorithm), []).append(float(ns))
+    return {k: statistics.median(v) for k, v in out.items()}
+rodyn, pin = read(sys.argv[1]), read(sys.argv[2])
+print("| model | algorithm | rodyn (ns) | Pinocchio (ns) | rodyn / Pinocchio |")
+print("|---|---|---:|---:|---:|")
+for key in rodyn:
+    r, p = rodyn[key], pin[key]
+    print(f"| {key[0]} | {key[1]} | {r:.0f} | {p:.0f} | {r / p:.2f}x |")
+PY
+rm -r "$TMP"
