@@ -85,6 +85,9 @@ pub enum DriveProblem {
         /// The field's index.
         index: usize,
     },
+    /// An element without derivatives with respect to the state (see
+    /// [`ForceElement::add_state_derivatives`](crate::drive::ForceElement::add_state_derivatives)).
+    NotDifferentiable,
 }
 
 /// The error type of every fallible rodyn function.

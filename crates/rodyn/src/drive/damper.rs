@@ -1,5 +1,6 @@
 //! A linear damper along a path.
 
+use crate::drive::derivatives::{add_tension_derivatives, DriveDerivativeState, DriveDerivatives};
 use crate::drive::geometry::PointGeometry;
 use crate::drive::{DriveForces, DriveState, ForceElement, Path};
 use crate::error::Result;
@@ -36,5 +37,16 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
         let tension = self.damping * kin.lengthening_velocity;
         self.path
             .add_tension(&kin, tension, state.data, &mut out.f_ext)
+    }
+    fn add_state_derivatives(
+        &self,
+        state: &DriveDerivativeState<'_, S, G, NB, NV>,
+        _w: &[S],
+        out: &mut DriveDerivatives<S, NV>,
+    ) -> Result<()> {
+        let path = self.path.length_derivatives(state)?;
+        let tension = self.damping * path.lengthening_velocity;
+        add_tension_derivatives(&path, state.v, (tension, S::ZERO, self.damping), out);
+        Ok(())
     }
 }

@@ -70,6 +70,7 @@
 //! ```
 
 pub mod damper;
+pub mod derivatives;
 pub mod geometry;
 pub mod motor;
 pub mod muscle;
@@ -77,6 +78,10 @@ pub mod path;
 pub mod spring;
 
 pub use damper::LinearDamper;
+pub use derivatives::{
+    aba_derivatives_with_drives, drive_force_derivatives, DriveDerivativeState, DriveDerivatives,
+    PathDerivatives,
+};
 pub use geometry::PointGeometry;
 pub use motor::JointMotor;
 pub use muscle::{ThelenMuscle, ThelenParameters};
@@ -166,6 +171,24 @@ pub trait ForceElement<S: Scalar, G: Space, const NB: usize, const NV: usize> {
     ) -> Result<()> {
         Ok(())
     }
+
+    /// Adds the element's generalised force `Q` at drive inputs `w` and its
+    /// derivatives `∂Q/∂q`, `∂Q/∂v` at fixed inputs (see
+    /// [`derivatives`]). The default reports
+    /// [`DriveProblem::NotDifferentiable`]: an element must opt in.
+    ///
+    /// # Errors
+    /// As [`add_forces`](Self::add_forces).
+    fn add_state_derivatives(
+        &self,
+        _state: &DriveDerivativeState<'_, S, G, NB, NV>,
+        _w: &[S],
+        _out: &mut DriveDerivatives<S, NV>,
+    ) -> Result<()> {
+        Err(Error::InvalidDrive {
+            problem: DriveProblem::NotDifferentiable,
+        })
+    }
 }
 
 /// Reads `w[input]` or says which input is missing.
@@ -199,6 +222,14 @@ where
     ) -> Result<()> {
         (**self).add_input_derivative(state, w, input, out)
     }
+    fn add_state_derivatives(
+        &self,
+        state: &DriveDerivativeState<'_, S, G, NB, NV>,
+        w: &[S],
+        out: &mut DriveDerivatives<S, NV>,
+    ) -> Result<()> {
+        (**self).add_state_derivatives(state, w, out)
+    }
 }
 
 impl<S, G, E, const N: usize, const NB: usize, const NV: usize> ForceElement<S, G, NB, NV>
@@ -225,6 +256,14 @@ where
     ) -> Result<()> {
         self.as_slice().add_input_derivative(state, w, input, out)
     }
+    fn add_state_derivatives(
+        &self,
+        state: &DriveDerivativeState<'_, S, G, NB, NV>,
+        w: &[S],
+        out: &mut DriveDerivatives<S, NV>,
+    ) -> Result<()> {
+        self.as_slice().add_state_derivatives(state, w, out)
+    }
 }
 
 impl<S, G, E, const NB: usize, const NV: usize> ForceElement<S, G, NB, NV> for [E]
@@ -250,6 +289,15 @@ where
     ) -> Result<()> {
         self.iter()
             .try_for_each(|e| e.add_input_derivative(state, w, input, out))
+    }
+    fn add_state_derivatives(
+        &self,
+        state: &DriveDerivativeState<'_, S, G, NB, NV>,
+        w: &[S],
+        out: &mut DriveDerivatives<S, NV>,
+    ) -> Result<()> {
+        self.iter()
+            .try_for_each(|e| e.add_state_derivatives(state, w, out))
     }
 }
 
@@ -280,6 +328,15 @@ macro_rules! tuple_element {
                 out: &mut DriveForces<S, G, NB, NV>,
             ) -> Result<()> {
                 $(self.$idx.add_input_derivative(state, w, input, out)?;)+
+                Ok(())
+            }
+            fn add_state_derivatives(
+                &self,
+                state: &DriveDerivativeState<'_, S, G, NB, NV>,
+                w: &[S],
+                out: &mut DriveDerivatives<S, NV>,
+            ) -> Result<()> {
+                $(self.$idx.add_state_derivatives(state, w, out)?;)+
                 Ok(())
             }
         }

@@ -12,7 +12,9 @@
 //! gyroscopic coupling with the link it rides on is neglected, as in
 //! Pinocchio's and MuJoCo's armature.
 
-use crate::drive::{read_input, DriveForces, DriveState, ForceElement};
+use crate::drive::{
+    read_input, DriveDerivativeState, DriveDerivatives, DriveForces, DriveState, ForceElement,
+};
 use crate::error::{DriveProblem, Error, Result};
 use crate::space::Space;
 use crate::Scalar;
@@ -106,6 +108,18 @@ impl<S: Scalar, G: Space, const NB: usize, const NV: usize> ForceElement<S, G, N
         if input == self.input {
             out.tau[self.dof] += self.torque_per_current();
         }
+        Ok(())
+    }
+    /// The motor's torque depends on its current alone: no state
+    /// derivatives.
+    fn add_state_derivatives(
+        &self,
+        _state: &DriveDerivativeState<'_, S, G, NB, NV>,
+        w: &[S],
+        out: &mut DriveDerivatives<S, NV>,
+    ) -> Result<()> {
+        self.check_dof::<NV>()?;
+        out.tau[self.dof] += self.torque_per_current() * read_input(w, self.input)?;
         Ok(())
     }
 }

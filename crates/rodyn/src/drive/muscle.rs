@@ -50,6 +50,7 @@
 //!   bounded by `F̃_len`;
 //! * activation is clamped to `[0, 1]` where it enters the force.
 
+use crate::drive::derivatives::{add_tension_derivatives, DriveDerivativeState, DriveDerivatives};
 use crate::drive::geometry::PointGeometry;
 use crate::drive::path::PathKinematics;
 use crate::drive::{read_input, DriveForces, DriveState, ForceElement, Path};
@@ -313,10 +314,11 @@ impl<S: Scalar, G: PointGeometry, const K: usize> ThelenMuscle<S, G, K> {
         self.params.activation_rate(excitation, activation)
     }
 
-    /// Fibre state and tension for a path of length `L` (m) lengthening at
-    /// `L̇` (m/s), at activation `a`.
-    #[must_use]
-    pub fn state(&self, length: S, lengthening_velocity: S, activation: S) -> MuscleState<S> {
+    /// The fibre's length, pennation and velocity for a path of length `L`
+    /// lengthening at `L̇` (rigid tendon, constant muscle height), with
+    /// their slopes in `L` and `L̇`; at the shortest fibre the geometry
+    /// stops and the slopes are zero.
+    fn fiber_geometry(&self, length: S, lengthening_velocity: S) -> FiberGeometry<S> {
         let p = &self.params;
         let l_opt = p.optimal_fiber_length;
         let height = l_opt * p.pennation_angle_at_optimal.sin();
@@ -327,17 +329,90 @@ impl<S: Scalar, G: PointGeometry, const K: usize> ThelenMuscle<S, G, K> {
             .max(S::ZERO)
             .sqrt();
         let projection = length - p.tendon_slack_length;
-        let (fiber_length, cos_pennation, fiber_velocity) = if projection > min_projection {
+        if projection > min_projection {
             let l = (projection * projection + height * height).sqrt();
             let cos = projection / l;
-            (l, cos, lengthening_velocity * cos)
+            // d cos/dL = h² / l³.
+            let dcos = height * height / (l * l * l);
+            FiberGeometry {
+                fiber_length: l,
+                cos_pennation: cos,
+                fiber_velocity: lengthening_velocity * cos,
+                dlength_dl: cos,
+                dcos_dl: dcos,
+                dvelocity_dl: lengthening_velocity * dcos,
+                dvelocity_dv: cos,
+            }
         } else {
-            (min_length, min_projection / min_length, S::ZERO)
+            FiberGeometry {
+                fiber_length: min_length,
+                cos_pennation: min_projection / min_length,
+                fiber_velocity: S::ZERO,
+                dlength_dl: S::ZERO,
+                dcos_dl: S::ZERO,
+                dvelocity_dl: S::ZERO,
+                dvelocity_dv: S::ZERO,
+            }
+        }
+    }
+
+    /// The fibre velocity that normalises to 1: `(0.25 + 0.75 a) v_max l_opt`.
+    fn velocity_scale(&self, clamped_activation: S) -> S {
+        let p = &self.params;
+        (S::from_f64(0.25) + S::from_f64(0.75) * clamped_activation)
+            * p.max_contraction_velocity
+            * p.optimal_fiber_length
+    }
+
+    /// The tension `T` (N) and its partial derivatives `∂T/∂L` (N/m) and
+    /// `∂T/∂L̇` (N s/m) at fixed activation, for a path of length `L`
+    /// lengthening at `L̇`: the tension of [`state`](Self::state),
+    /// differentiated through the pennation, the force-length curves and
+    /// the force-velocity curve (one-sided at its kinks).
+    #[must_use]
+    pub fn tension_partials(&self, length: S, lengthening_velocity: S, activation: S) -> (S, S, S) {
+        let p = &self.params;
+        let l_opt = p.optimal_fiber_length;
+        let g = self.fiber_geometry(length, lengthening_velocity);
+        let a = activation.max(S::ZERO).min(S::ONE);
+        let scale = self.velocity_scale(a);
+        let (l_norm, v_norm) = (g.fiber_length / l_opt, g.fiber_velocity / scale);
+        let f_l = p.active_force_length(l_norm);
+        let df_l = f_l * S::from_f64(-2.0) * (l_norm - S::ONE) / p.active_shape_factor;
+        let f_pe = p.passive_force_length(l_norm);
+        let df_pe = if l_norm <= S::ONE {
+            S::ZERO
+        } else {
+            let k = p.passive_shape_factor;
+            let strain = p.passive_strain_at_one;
+            (k / strain) * (k * (l_norm - S::ONE) / strain).exp() / (k.exp() - S::ONE)
         };
+        let (f_v, df_v) = p.force_velocity(v_norm);
+        let f0 = p.max_isometric_force;
+        let fiber_force = a * f_l * f_v + f_pe;
+        let tension = f0 * g.cos_pennation * fiber_force;
+        let (dl_norm, dv_norm) = (g.dlength_dl / l_opt, g.dvelocity_dl / scale);
+        let dforce_dl = a * (df_l * f_v * dl_norm + f_l * df_v * dv_norm) + df_pe * dl_norm;
+        let tension_dl = f0 * (g.dcos_dl * fiber_force + g.cos_pennation * dforce_dl);
+        let tension_dv = f0 * g.cos_pennation * a * f_l * df_v * g.dvelocity_dv / scale;
+        (tension, tension_dl, tension_dv)
+    }
+
+    /// Fibre state and tension for a path of length `L` (m) lengthening at
+    /// `L̇` (m/s), at activation `a`.
+    #[must_use]
+    pub fn state(&self, length: S, lengthening_velocity: S, activation: S) -> MuscleState<S> {
+        let p = &self.params;
+        let l_opt = p.optimal_fiber_length;
+        let FiberGeometry {
+            fiber_length,
+            cos_pennation,
+            fiber_velocity,
+            ..
+        } = self.fiber_geometry(length, lengthening_velocity);
         let clamped = activation.max(S::ZERO).min(S::ONE);
         let a_in_range = activation > S::ZERO && activation < S::ONE;
-        let velocity_scale =
-            (S::from_f64(0.25) + S::from_f64(0.75) * clamped) * p.max_contraction_velocity * l_opt;
+        let velocity_scale = self.velocity_scale(clamped);
         let v_norm = fiber_velocity / velocity_scale;
         let l_norm = fiber_length / l_opt;
         let f_l = p.active_force_length(l_norm);
@@ -437,4 +512,40 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
         self.path
             .add_tension(&kin, slope, state.data, &mut out.f_ext)
     }
+    fn add_state_derivatives(
+        &self,
+        state: &DriveDerivativeState<'_, S, G, NB, NV>,
+        w: &[S],
+        out: &mut DriveDerivatives<S, NV>,
+    ) -> Result<()> {
+        let activation = read_input(w, self.input)?;
+        check_activation(activation, self.input)?;
+        let path = self.path.length_derivatives(state)?;
+        let tension = self.tension_partials(path.length, path.lengthening_velocity, activation);
+        if !(tension.0.is_finite() && tension.1.is_finite() && tension.2.is_finite()) {
+            return Err(Error::NonFiniteResult {
+                quantity: Quantity::ExternalForce,
+                index: self.input,
+            });
+        }
+        add_tension_derivatives(&path, state.v, tension, out);
+        Ok(())
+    }
+}
+
+/// A fibre's geometry from its path, and its slopes (see
+/// `ThelenMuscle::fiber_geometry`).
+#[derive(Clone, Copy, Debug)]
+struct FiberGeometry<S> {
+    fiber_length: S,
+    cos_pennation: S,
+    fiber_velocity: S,
+    /// `∂l/∂L`.
+    dlength_dl: S,
+    /// `∂cos α/∂L`.
+    dcos_dl: S,
+    /// `∂l̇/∂L`.
+    dvelocity_dl: S,
+    /// `∂l̇/∂L̇`.
+    dvelocity_dv: S,
 }

@@ -170,7 +170,7 @@ impl<S: Scalar, G: PointGeometry, const K: usize> Path<S, G, K> {
 }
 
 /// The error of an endpoint on a body the model does not have.
-fn body_out_of_range(body: usize) -> Error {
+pub(crate) fn body_out_of_range(body: usize) -> Error {
     Error::InvalidDrive {
         problem: DriveProblem::BodyOutOfRange { body },
     }

@@ -5,6 +5,7 @@
 //! with the potential energies documented on each, so a model driven only by
 //! springs conserves `kinetic + gravitational + spring` energy.
 
+use crate::drive::derivatives::{add_tension_derivatives, DriveDerivativeState, DriveDerivatives};
 use crate::drive::geometry::PointGeometry;
 use crate::drive::{DriveForces, DriveState, ForceElement, Path};
 use crate::error::Result;
@@ -56,6 +57,17 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
         self.path
             .add_tension(&kin, self.tension(kin.length), state.data, &mut out.f_ext)
     }
+    fn add_state_derivatives(
+        &self,
+        state: &DriveDerivativeState<'_, S, G, NB, NV>,
+        _w: &[S],
+        out: &mut DriveDerivatives<S, NV>,
+    ) -> Result<()> {
+        let path = self.path.length_derivatives(state)?;
+        let tension = (self.tension(path.length), self.stiffness, S::ZERO);
+        add_tension_derivatives(&path, state.v, tension, out);
+        Ok(())
+    }
 }
 
 /// A hardening spring along a path: `T = k δ + k₃ δ³` with `δ = L - L₀`,
@@ -94,6 +106,12 @@ impl<S: Scalar, G: PointGeometry, const K: usize> NonlinearSpring<S, G, K> {
         let delta = length - self.rest_length;
         delta * (self.stiffness + self.cubic_stiffness * delta * delta)
     }
+    /// The tangent stiffness `dT/dL = k + 3 k₃ (L − L₀)²` (N/m).
+    #[must_use]
+    pub fn stiffness_at(&self, length: S) -> S {
+        let delta = length - self.rest_length;
+        self.stiffness + S::from_f64(3.0) * self.cubic_stiffness * delta * delta
+    }
     /// Stored energy (J) at path length `length` (m).
     #[must_use]
     pub fn potential_energy(&self, length: S) -> S {
@@ -114,5 +132,20 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
         let kin = self.path.kinematics(state.data)?;
         self.path
             .add_tension(&kin, self.tension(kin.length), state.data, &mut out.f_ext)
+    }
+    fn add_state_derivatives(
+        &self,
+        state: &DriveDerivativeState<'_, S, G, NB, NV>,
+        _w: &[S],
+        out: &mut DriveDerivatives<S, NV>,
+    ) -> Result<()> {
+        let path = self.path.length_derivatives(state)?;
+        let tension = (
+            self.tension(path.length),
+            self.stiffness_at(path.length),
+            S::ZERO,
+        );
+        add_tension_derivatives(&path, state.v, tension, out);
+        Ok(())
     }
 }
