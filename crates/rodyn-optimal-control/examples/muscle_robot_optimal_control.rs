@@ -4,9 +4,10 @@
 //!
 //! `cargo run --release -p rodyn-optimal-control --example muscle_robot_optimal_control -- --out DIR`
 //!
-//! Solves the problem once per derivative route (rodyn's sensitivity with
-//! dual numbers, dual numbers throughout, finite differences) and writes,
-//! from the sensitivity route's solution:
+//! Solves the problem once per derivative route (rodyn's analytic
+//! derivatives, dual numbers throughout, finite differences) and writes,
+//! from the first route that converged (analytic first; else the most
+//! nearly feasible):
 //! - `DIR/controls.csv`: time, the four excitations and activations, the
 //!   joint angles and their desired values;
 //! - `DIR/summary.json`: convergence, iterations, solve time, objective,
@@ -39,7 +40,7 @@ struct Arguments {
     /// Duration of the motion, s.
     #[arg(long, default_value_t = Task::default().duration)]
     duration: f64,
-    /// Only the sensitivity route (skips the comparison of derivative routes).
+    /// Only the analytic route (skips the comparison of derivative routes).
     #[arg(long)]
     single: bool,
 }
@@ -115,7 +116,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         task.nodes * (NX + NU)
     );
     let routes: &[Derivatives] = if arguments.single {
-        &[Derivatives::Sensitivity]
+        &[Derivatives::Analytic]
     } else {
         &Derivatives::ALL
     };
@@ -123,8 +124,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .iter()
         .map(|&route| run(&task, route))
         .collect::<Result<Vec<_>, _>>()?;
-    let main = &runs[0];
-    eprintln!("  re-simulating the controls by RK4 at {RESIMULATION_STEP} s");
+    let main = best(&runs).ok_or("no derivative route ran")?;
+    eprintln!(
+        "  writing the solution of the {} route; re-simulating its controls by RK4 at {RESIMULATION_STEP} s",
+        main.route.name()
+    );
     let (tracking_rms, tracking_max) = resimulate(&task, &main.nodes, RESIMULATION_STEP)?;
 
     write_controls(&arguments.out.join("controls.csv"), &task, &main.nodes)?;
@@ -132,6 +136,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     write_summary(
         &arguments.out.join("summary.json"),
         &task,
+        main,
         &runs,
         tracking_rms,
         tracking_max,
@@ -199,19 +204,36 @@ fn write_controls(path: &Path, task: &Task, nodes: &[Node<NX, NU>]) -> std::io::
     std::fs::write(path, text)
 }
 
+/// The solution the files show: the first route (in [`Derivatives::ALL`]'s
+/// order, analytic first) that converged, else the most nearly feasible.
+fn best(runs: &[Run]) -> Option<&Run> {
+    runs.iter().find(|run| converged(run)).or_else(|| {
+        runs.iter()
+            .min_by(|a, b| a.max_defect.total_cmp(&b.max_defect))
+    })
+}
+
+fn converged(run: &Run) -> bool {
+    matches!(
+        run.solution.status,
+        Status::Solved | Status::SolvedToAcceptableLevel
+    )
+}
+
+#[allow(clippy::too_many_arguments)]
 fn write_summary(
     path: &Path,
     task: &Task,
+    main: &Run,
     runs: &[Run],
     tracking_rms: f64,
     tracking_max: f64,
     participation: &[f64; NU],
 ) -> std::io::Result<()> {
-    let main = &runs[0];
     let route = |run: &Run| {
         serde_json::json!({
             "derivatives": run.route.name(),
-            "converged": matches!(run.solution.status, Status::Solved | Status::SolvedToAcceptableLevel),
+            "converged": converged(run),
             "status": format!("{:?}", run.solution.status),
             "iterations": run.solution.iterations,
             "final_dual_infeasibility": run.solution.dual_infeasibility,
@@ -230,7 +252,8 @@ fn write_summary(
         "nodes": task.nodes,
         "peak_angles_rad": task.peak,
         "derivatives": main.route.name(),
-        "converged": matches!(main.solution.status, Status::Solved | Status::SolvedToAcceptableLevel),
+        "solution_shown": "the first route that converged (analytic, dual, finite-difference in that order), else the most nearly feasible",
+        "converged": converged(main),
         "status": format!("{:?}", main.solution.status),
         "convergence_test": format!("IPOPT acceptable level: defects below 1e-7 and the objective's relative change below {STATIONARY_OBJECTIVE:e} for 10 iterations (the muscle model's kinks keep the dual infeasibility above IPOPT's tol)"),
         "final_dual_infeasibility": main.solution.dual_infeasibility,

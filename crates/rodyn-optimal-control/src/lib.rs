@@ -9,9 +9,8 @@
 //! - [`collocation`]: trapezoidal direct collocation of `ẋ = f(t, x, u)`
 //!   with an effort objective, as a sparse nonlinear program.
 //! - [`muscle_robot`]: the seed's robot as such a system, with its state
-//!   Jacobians by three routes (dual numbers, finite differences, and
-//!   rodyn's analytic activation sensitivity with dual numbers for the
-//!   rest).
+//!   Jacobians by three routes (rodyn's analytic derivatives, dual
+//!   numbers, finite differences).
 //!
 //! The example `muscle_robot_optimal_control` runs the seed's problem end
 //! to end and writes the controls, a summary and the figure.

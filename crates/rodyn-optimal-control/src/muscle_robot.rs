@@ -37,12 +37,16 @@
 //! routes ([`Derivatives`]), compared by the example in one run.
 
 use crate::collocation::{Dynamics, Hessian, Node, NodeBounds, Trapezoidal, Weights};
+use rodyn::algorithm::derivatives::DerivativeData;
 use rodyn::algorithm::forward_dynamics::Aba;
+use rodyn::algorithm::jacobian::JacobianData;
+use rodyn::drive::{aba_derivatives_with_drives, DriveDerivatives};
+use rodyn::planar::Planar;
 use rodyn::sim::{Integrator, Rk4};
 use rodyn::{Data, Dual};
 use rodyn_scenarios::muscle_robot::{
     self as robot, activation_rates, RobotData, RobotForces, RobotLoads, RobotModel, RobotMuscles,
-    NU, NV,
+    NB, NU, NV,
 };
 
 /// Size of the state: joint angles, joint rates, activations.
@@ -51,11 +55,12 @@ pub const NX: usize = 2 * NV + NU;
 /// How the state Jacobians `A = ∂f/∂x` and `B = ∂f/∂u` are computed.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Derivatives {
-    /// rodyn's analytic parts — the seed's sensitivity `∂q̈/∂a` (one extra
-    /// articulated-body pass per muscle) and `∂ȧ/∂(u, a)` in closed form —
-    /// with dual numbers for `∂q̈/∂(q, q̇)`, through which the muscle paths'
-    /// lengths and velocities change.
-    Sensitivity,
+    /// rodyn's analytic derivatives: `∂q̈/∂(q, q̇)` of forward dynamics
+    /// with the muscles (Carpentier & Mansard's for the rigid body, the
+    /// paths' gradients and Hessians and the muscles' tension partials for
+    /// the drives), the seed's sensitivity `∂q̈/∂a` (one extra
+    /// articulated-body pass per muscle) and `∂ȧ/∂(u, a)` in closed form.
+    Analytic,
     /// Forward-mode dual numbers through the whole of `f`: one pass per
     /// state and control, exact to rounding.
     Dual,
@@ -65,13 +70,13 @@ pub enum Derivatives {
 
 impl Derivatives {
     /// All three routes.
-    pub const ALL: [Self; 3] = [Self::Sensitivity, Self::Dual, Self::FiniteDifference];
+    pub const ALL: [Self; 3] = [Self::Analytic, Self::Dual, Self::FiniteDifference];
 
     /// A short name for tables and files.
     #[must_use]
     pub fn name(self) -> &'static str {
         match self {
-            Self::Sensitivity => "sensitivity",
+            Self::Analytic => "analytic",
             Self::Dual => "dual",
             Self::FiniteDifference => "finite-difference",
         }
@@ -85,6 +90,9 @@ pub struct MuscleRobot {
     muscles: RobotMuscles<f64>,
     data: RobotData<f64>,
     forces: RobotForces<f64>,
+    derivatives: Box<DerivativeData<f64, NB, NV, Planar>>,
+    jacobians: Box<JacobianData<f64, NV, Planar>>,
+    drive: Box<DriveDerivatives<f64, NV>>,
     model_dual: RobotModel<Dual>,
     muscles_dual: RobotMuscles<Dual>,
     data_dual: RobotData<Dual>,
@@ -105,6 +113,9 @@ impl MuscleRobot {
             muscles: robot::MUSCLES_F64,
             data: Data::new(),
             forces: RobotForces::new(),
+            derivatives: Box::default(),
+            jacobians: Box::default(),
+            drive: Box::default(),
             model_dual: robot::model()?,
             muscles_dual: robot::muscles(),
             data_dual: Data::new(),
@@ -214,8 +225,20 @@ impl MuscleRobot {
                 }
                 Ok(f)
             }
-            Derivatives::Sensitivity => {
+            Derivatives::Analytic => {
                 let (q, v, act) = split(x);
+                aba_derivatives_with_drives(
+                    &self.model,
+                    &mut self.data,
+                    &mut self.derivatives,
+                    &mut self.jacobians,
+                    &mut self.drive,
+                    &q,
+                    &v,
+                    &[0.0; NV],
+                    &self.muscles,
+                    &act,
+                )?;
                 let mut dq_ddot_da = [[0.0; NU]; NV];
                 let q_ddot = *robot::sensitivity(
                     &self.model,
@@ -230,12 +253,12 @@ impl MuscleRobot {
                 *a_out = [[0.0; NX]; NX];
                 *b_out = [[0.0; NU]; NX];
                 // q̈ along q and q̇: the muscles' paths move with them.
-                for j in 0..2 * NV {
-                    let (dx, du) = unit(j);
-                    let rate = self.dual_rate(x, u, &dx, &du)?;
-                    for (row, r) in a_out[NV..2 * NV].iter_mut().zip(&rate[NV..2 * NV]) {
-                        row[j] = r.du;
-                    }
+                for (row, (dq, dv)) in a_out[NV..2 * NV]
+                    .iter_mut()
+                    .zip(self.derivatives.ddq_dq.iter().zip(&self.derivatives.ddq_dv))
+                {
+                    row[..NV].copy_from_slice(dq);
+                    row[NV..2 * NV].copy_from_slice(dv);
                 }
                 for (i, sensitivity) in dq_ddot_da.iter().enumerate() {
                     a_out[i][NV + i] = 1.0;
@@ -508,7 +531,7 @@ mod tests {
         };
         let dual = jacobians(Derivatives::Dual);
         for (route, tolerance) in [
-            (Derivatives::Sensitivity, 1e-10),
+            (Derivatives::Analytic, 1e-10),
             (Derivatives::FiniteDifference, 1e-6),
         ] {
             for (n, ((f, a, b), (f_ref, a_ref, b_ref))) in

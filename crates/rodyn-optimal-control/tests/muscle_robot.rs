@@ -20,7 +20,7 @@ fn coarse_solution_is_feasible_and_tracks() {
         nodes: 26,
         ..Task::default()
     };
-    let mut problem = task.transcribe(Derivatives::Sensitivity).unwrap();
+    let mut problem = task.transcribe(Derivatives::Analytic).unwrap();
     let options = Options {
         max_iterations: 1000,
         ..Options::default()
