@@ -262,8 +262,8 @@ fn forward_dynamics_with_drives_match_dual_numbers_and_differences() {
             drive.tau
         );
         let ddq = forward(&model, lengths, &q, &v, &tau, &w, &[0.0; NV]);
-        for k in 0..NV {
-            close("q̈", data.ddq[k], ddq[k], 1e-12, ddq[k].abs());
+        for (x, y) in data.ddq.iter().zip(&ddq) {
+            close("q̈", *x, *y, 1e-12, y.abs());
         }
         let scale_q = deriv
             .ddq_dq
