@@ -28,6 +28,10 @@ pub const EXAMPLES: &[Example] = &[
         about: "computed-torque control of a 7-DoF arm through embedded-hal drivers",
     },
     Example {
+        name: "task_space",
+        about: "task-space impedance control of the 7-DoF arm's flange along a pose trajectory",
+    },
+    Example {
         name: "pendulum",
         about: "the seed pendulum with its return spring, simulated in real time",
     },
