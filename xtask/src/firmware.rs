@@ -44,6 +44,10 @@ pub const EXAMPLES: &[Example] = &[
         about: "instructions and stack bytes per call, per model and algorithm",
     },
     Example {
+        name: "task_cost_probe",
+        about: "instructions and stack bytes of the flange's Jacobian, J̇v, an IK step and a task-space tick",
+    },
+    Example {
         name: "agreement",
         about: "RNEA and ABA on seeded random states, for the host to recompute in f64",
     },

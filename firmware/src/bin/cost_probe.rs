@@ -17,18 +17,13 @@ use rodyn::sim::SemiImplicitEuler;
 use rodyn::space::Space;
 use rodyn::{Data, Model, Scalar};
 use rodyn_firmware::exit::{exit, exit_with, CHECK_FAILED};
-use rodyn_firmware::measure::{stack_bytes, InstructionCounter};
+use rodyn_firmware::measure::{probe_scene, stack_bytes, Cost, InstructionCounter, SEED, STATES};
 use rodyn_firmware::models::aibo::MODEL_F32 as QUADRUPED;
 use rodyn_firmware::models::panda::MODEL_F32 as PANDA;
 use rodyn_firmware::models::pendulum::MODEL_F32 as PENDULUM;
 use rodyn_firmware::models::quadruped::{self, QuadrupedLoads};
 use rodyn_firmware::models::{muscle_robot as robot, PENDULUM_PLANAR};
 use rodyn_firmware::rng::XorShift32;
-
-/// Random states per model and algorithm.
-const STATES: u32 = 100;
-/// Seed of the state generator.
-const SEED: u32 = 0x5EED_0001;
 
 /// The algorithms probed, as they appear in the table.
 #[derive(Clone, Copy)]
@@ -47,52 +42,6 @@ impl Algorithm {
             Self::Crba => "CRBA",
             Self::CrbaForwardDynamics => "CRBA+LTDL-FD",
             Self::Aba => "ABA",
-        }
-    }
-}
-
-/// Min and max instructions and max stack over random states.
-struct Cost {
-    min: u32,
-    max: u32,
-    stack: Option<u32>,
-}
-
-impl Cost {
-    const NONE: Self = Self {
-        min: u32::MAX,
-        max: 0,
-        stack: Some(0),
-    };
-
-    fn add(&mut self, instructions: u32, stack: Option<u32>) {
-        self.min = self.min.min(instructions);
-        self.max = self.max.max(instructions);
-        self.stack = match (self.stack, stack) {
-            (Some(a), Some(b)) => Some(a.max(b)),
-            _ => None,
-        };
-    }
-
-    /// One `cost` line (`model` and `algorithm` without spaces: the xtask
-    /// splits the line at whitespace).
-    fn report(&self, model: &str, algorithm: &str) {
-        match self.stack {
-            Some(stack) => defmt::println!(
-                "cost model={=str} algorithm={=str} min={} max={} stack={}",
-                model,
-                algorithm,
-                self.min,
-                self.max,
-                stack
-            ),
-            None => defmt::println!(
-                "cost model={=str} algorithm={=str} min={} max={} stack=>16384",
-                model,
-                algorithm,
-                self.min,
-                self.max
-            ),
         }
     }
 }
@@ -156,38 +105,6 @@ fn probe<const NB: usize, const NQ: usize, const NV: usize, G: Space>(
         }
         cost.report(name, algorithm.name());
     }
-    true
-}
-
-/// Probes one scene-level call on [`STATES`] random inputs: `draw` makes
-/// an input (not counted), `call` runs on it (counted, then run again on a
-/// fresh copy for its stack). Returns false when a call failed.
-fn probe_scene<T: Clone>(
-    model: &str,
-    algorithm: &str,
-    counter: &InstructionCounter,
-    mut draw: impl FnMut(&mut XorShift32) -> T,
-    mut call: impl FnMut(&mut T) -> bool,
-) -> bool {
-    let mut rng = XorShift32::new(SEED);
-    let mut cost = Cost::NONE;
-    for _ in 0..STATES {
-        let input = draw(&mut rng);
-        let mut first = input.clone();
-        let (ok, instructions) = counter.count(|| call(&mut first));
-        let mut second = input;
-        let (ok_again, stack) = stack_bytes(|| call(&mut second));
-        if !(ok && ok_again) {
-            defmt::error!(
-                "{=str} {=str}: the call returned an error",
-                model,
-                algorithm
-            );
-            return false;
-        }
-        cost.add(instructions, stack);
-    }
-    cost.report(model, algorithm);
     true
 }
 
