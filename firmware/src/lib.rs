@@ -9,7 +9,7 @@
 //! |---------------|--------------------------------------------------------------|
 //! | [`models`]    | the example models as `const` values (f32)                   |
 //! | [`drivers`]   | an SPI absolute encoder and a PWM torque drive (embedded-hal)|
-//! | [`control`]   | a computed-torque controller and its reference trajectory   |
+//! | [`control`]   | computed-torque and task-space controllers, their references |
 //! | [`simulated`] | the plant and the fake SPI / PWM peripherals standing for it |
 //! | [`measure`]   | instruction counts (SysTick under `-icount`) and stack use   |
 //! | [`rng`]       | a seeded xorshift generator for reproducible random states  |

@@ -1,8 +1,8 @@
 //! The cost and size tables of `docs/sections/firmware.md` and `README.md`.
 //!
-//! `cargo xtask costs` runs the `cost_probe` firmware (instructions per call
-//! counted with QEMU's `-icount` and SysTick, stack bytes from a painted
-//! stack) and measures each example's image with `llvm-size`, then rewrites
+//! `cargo xtask costs` runs the `cost_probe` and `control_cost_probe` firmware
+//! (instructions per call counted with QEMU's `-icount` and SysTick, stack
+//! bytes from a painted stack) and measures each example's image with `llvm-size`, then rewrites
 //! the tables between the `<!-- …:begin -->` / `<!-- …:end -->` markers of
 //! the section and `firmware/expected/sizes.txt`. `cargo xtask test` compares
 //! the pendulum image with that file: a scene pays only for what it models,
@@ -17,6 +17,10 @@ use std::fmt::Write;
 use std::path::PathBuf;
 use std::process::Command;
 
+/// The images whose `cost` lines make the cost table, in its order: the
+/// control-level rows (task space, derivatives) have an image of their own
+/// (see `control_cost_probe.rs`).
+const PROBES: [&str; 2] = ["cost_probe", "control_cost_probe"];
 /// The example whose size must not grow.
 const SIZE_GUARDED: &str = "pendulum";
 /// Growth of its flash image accepted without failing (fraction): room for
@@ -175,12 +179,15 @@ pub fn regenerate() -> Result<()> {
     setup::ensure_target()?;
     setup::ensure_qemu()?;
     firmware::build()?;
-    let probe = firmware::example("cost_probe")?;
-    let outcome = firmware::run(probe, |line| println!("{line}"))?;
-    if outcome.exit_code != 0 {
-        bail!("cost_probe exited with code {}", outcome.exit_code);
+    let mut costs = Vec::new();
+    for name in PROBES {
+        let probe = firmware::example(name)?;
+        let outcome = firmware::run(probe, |line| println!("{line}"))?;
+        if outcome.exit_code != 0 {
+            bail!("{name} exited with code {}", outcome.exit_code);
+        }
+        costs.extend(parse_costs(&outcome.lines)?);
     }
-    let costs = parse_costs(&outcome.lines)?;
 
     let mut cost_table = String::from(
         "| model | algorithm | instructions per call (min – max) | stack bytes per call |\n\

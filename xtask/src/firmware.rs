@@ -28,6 +28,10 @@ pub const EXAMPLES: &[Example] = &[
         about: "computed-torque control of a 7-DoF arm through embedded-hal drivers",
     },
     Example {
+        name: "task_space",
+        about: "task-space impedance control of the 7-DoF arm's flange along a pose trajectory",
+    },
+    Example {
         name: "pendulum",
         about: "the seed pendulum with its return spring, simulated in real time",
     },
@@ -38,6 +42,10 @@ pub const EXAMPLES: &[Example] = &[
     Example {
         name: "cost_probe",
         about: "instructions and stack bytes per call, per model and algorithm",
+    },
+    Example {
+        name: "control_cost_probe",
+        about: "instructions and stack bytes of the flange's Jacobian, J̇v, an IK step and a task-space tick",
     },
     Example {
         name: "agreement",

@@ -11,25 +11,19 @@
 
 use cortex_m_rt::entry;
 use rodyn::algorithm::crba::crba;
-use rodyn::algorithm::derivatives::{aba_derivatives, rnea_derivatives, DerivativeData};
 use rodyn::algorithm::forward_dynamics::{Aba, Crba, ForwardDynamics};
 use rodyn::algorithm::rnea::rnea;
 use rodyn::sim::SemiImplicitEuler;
 use rodyn::space::Space;
 use rodyn::{Data, Model, Scalar};
 use rodyn_firmware::exit::{exit, exit_with, CHECK_FAILED};
-use rodyn_firmware::measure::{stack_bytes, InstructionCounter};
+use rodyn_firmware::measure::{probe_scene, stack_bytes, Cost, InstructionCounter, SEED, STATES};
 use rodyn_firmware::models::aibo::MODEL_F32 as QUADRUPED;
 use rodyn_firmware::models::panda::MODEL_F32 as PANDA;
 use rodyn_firmware::models::pendulum::MODEL_F32 as PENDULUM;
 use rodyn_firmware::models::quadruped::{self, QuadrupedLoads};
 use rodyn_firmware::models::{muscle_robot as robot, PENDULUM_PLANAR};
 use rodyn_firmware::rng::XorShift32;
-
-/// Random states per model and algorithm.
-const STATES: u32 = 100;
-/// Seed of the state generator.
-const SEED: u32 = 0x5EED_0001;
 
 /// The algorithms probed, as they appear in the table.
 #[derive(Clone, Copy)]
@@ -48,52 +42,6 @@ impl Algorithm {
             Self::Crba => "CRBA",
             Self::CrbaForwardDynamics => "CRBA+LTDL-FD",
             Self::Aba => "ABA",
-        }
-    }
-}
-
-/// Min and max instructions and max stack over random states.
-struct Cost {
-    min: u32,
-    max: u32,
-    stack: Option<u32>,
-}
-
-impl Cost {
-    const NONE: Self = Self {
-        min: u32::MAX,
-        max: 0,
-        stack: Some(0),
-    };
-
-    fn add(&mut self, instructions: u32, stack: Option<u32>) {
-        self.min = self.min.min(instructions);
-        self.max = self.max.max(instructions);
-        self.stack = match (self.stack, stack) {
-            (Some(a), Some(b)) => Some(a.max(b)),
-            _ => None,
-        };
-    }
-
-    /// One `cost` line (`model` and `algorithm` without spaces: the xtask
-    /// splits the line at whitespace).
-    fn report(&self, model: &str, algorithm: &str) {
-        match self.stack {
-            Some(stack) => defmt::println!(
-                "cost model={=str} algorithm={=str} min={} max={} stack={}",
-                model,
-                algorithm,
-                self.min,
-                self.max,
-                stack
-            ),
-            None => defmt::println!(
-                "cost model={=str} algorithm={=str} min={} max={} stack=>16384",
-                model,
-                algorithm,
-                self.min,
-                self.max
-            ),
         }
     }
 }
@@ -157,38 +105,6 @@ fn probe<const NB: usize, const NQ: usize, const NV: usize, G: Space>(
         }
         cost.report(name, algorithm.name());
     }
-    true
-}
-
-/// Probes one scene-level call on [`STATES`] random inputs: `draw` makes
-/// an input (not counted), `call` runs on it (counted, then run again on a
-/// fresh copy for its stack). Returns false when a call failed.
-fn probe_scene<T: Clone>(
-    model: &str,
-    algorithm: &str,
-    counter: &InstructionCounter,
-    mut draw: impl FnMut(&mut XorShift32) -> T,
-    mut call: impl FnMut(&mut T) -> bool,
-) -> bool {
-    let mut rng = XorShift32::new(SEED);
-    let mut cost = Cost::NONE;
-    for _ in 0..STATES {
-        let input = draw(&mut rng);
-        let mut first = input.clone();
-        let (ok, instructions) = counter.count(|| call(&mut first));
-        let mut second = input;
-        let (ok_again, stack) = stack_bytes(|| call(&mut second));
-        if !(ok && ok_again) {
-            defmt::error!(
-                "{=str} {=str}: the call returned an error",
-                model,
-                algorithm
-            );
-            return false;
-        }
-        cost.add(instructions, stack);
-    }
-    cost.report(model, algorithm);
     true
 }
 
@@ -272,29 +188,6 @@ fn probe_quadruped_step(counter: &InstructionCounter) -> bool {
     )
 }
 
-/// The Panda's analytic derivatives: `∂τ/∂(q, v)` with `M`, and
-/// `∂q̈/∂(q, v, τ)`, at random angles (±π), rates (±2) and accelerations or
-/// torques (±5).
-fn probe_derivatives(counter: &InstructionCounter) -> bool {
-    const NB: usize = 7;
-    let draw = |rng: &mut XorShift32| {
-        let (mut q, mut v, mut u) = ([0.0f32; NB], [0.0f32; NB], [0.0f32; NB]);
-        rng.fill_symmetric(&mut q, core::f32::consts::PI);
-        rng.fill_symmetric(&mut v, 2.0);
-        rng.fill_symmetric(&mut u, 5.0);
-        (q, v, u)
-    };
-    let mut data = Data::new();
-    let mut deriv = DerivativeData::<f32, NB, NB>::new();
-    let inverse = probe_scene("panda-7dof", "RNEA-derivatives", counter, draw, |(q, v, a)| {
-        rnea_derivatives(&PANDA, &mut data, &mut deriv, q, v, a, None).is_ok()
-    });
-    let forward = probe_scene("panda-7dof", "ABA-derivatives", counter, draw, |(q, v, tau)| {
-        aba_derivatives(&PANDA, &mut data, &mut deriv, q, v, tau, None).is_ok()
-    });
-    inverse & forward
-}
-
 /// One f32 `sin_cos` as rodyn's scalar computes it without std (libm): every
 /// revolute joint pays it once per call of an algorithm.
 fn sin_cos_cost(counter: &InstructionCounter) {
@@ -328,7 +221,6 @@ fn main() -> ! {
         & probe("pendulum-planar", &PENDULUM_PLANAR, &counter)
         & probe("panda-7dof", &PANDA, &counter)
         & probe("quadruped-floating", &QUADRUPED, &counter)
-        & probe_derivatives(&counter)
         & probe_muscle_robot(&counter)
         & probe_quadruped_step(&counter);
     exit_with(passed)

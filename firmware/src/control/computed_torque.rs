@@ -2,11 +2,10 @@
 //!
 //! With an exact model the closed loop is `ë + K_d ė + K_p e = 0` per joint,
 //! so the gains set a natural frequency `ωₙ = √K_p` and damping
-//! `ζ = K_d / (2 ωₙ)`. The rate `q̇` is not measured: it is the backward
-//! difference of successive encoder angles, low-pass filtered (first order),
-//! because one 24 µrad encoder count per 1 ms tick is already 0.024 rad/s.
+//! `ζ = K_d / (2 ωₙ)`. The rate `q̇` is estimated from the encoder angles
+//! ([`RateEstimate`]).
 
-use super::Reference;
+use super::{RateEstimate, Reference};
 use crate::drivers::{AbsoluteEncoder, DriveError, EncoderError, TorqueDrive};
 use embedded_hal::pwm::SetDutyCycle;
 use embedded_hal::spi::SpiDevice;
@@ -43,8 +42,11 @@ pub enum ControlError {
     Encoder(usize, EncoderError),
     /// A drive refused the command (joint index).
     Drive(usize, DriveError),
-    /// Inverse dynamics failed.
+    /// Inverse dynamics, kinematics or a Jacobian failed.
     Dynamics(rodyn::Error),
+    /// A task-space controller's damped pseudo-inverse was not finite
+    /// (non-finite Jacobian entries).
+    PseudoInverse,
 }
 
 /// What one tick measured and commanded.
@@ -64,10 +66,7 @@ pub struct ComputedTorque<'m, SPI, PWM, const N: usize> {
     encoders: [AbsoluteEncoder<SPI>; N],
     drives: [TorqueDrive<PWM>; N],
     gains: Gains,
-    /// Tick period (s).
-    dt: f32,
-    q_previous: Option<[f32; N]>,
-    v_estimate: [f32; N],
+    rate: RateEstimate<N>,
 }
 
 impl<'m, SPI: SpiDevice, PWM: SetDutyCycle, const N: usize> ComputedTorque<'m, SPI, PWM, N> {
@@ -85,9 +84,7 @@ impl<'m, SPI: SpiDevice, PWM: SetDutyCycle, const N: usize> ComputedTorque<'m, S
             encoders,
             drives,
             gains,
-            dt,
-            q_previous: None,
-            v_estimate: [0.0; N],
+            rate: RateEstimate::new(gains.rate_filter, dt),
         }
     }
 
@@ -103,16 +100,14 @@ impl<'m, SPI: SpiDevice, PWM: SetDutyCycle, const N: usize> ComputedTorque<'m, S
                 .read_angle()
                 .map_err(|e| ControlError::Encoder(k, e))?;
         }
-        self.update_rate_estimate(&q);
+        let v = *self.rate.update(&q);
         let g = self.gains;
         let mut a = [0.0; N];
         for k in 0..N {
-            a[k] = reference.a[k]
-                + g.kd * (reference.v[k] - self.v_estimate[k])
-                + g.kp * (reference.q[k] - q[k]);
+            a[k] = reference.a[k] + g.kd * (reference.v[k] - v[k]) + g.kp * (reference.q[k] - q[k]);
         }
-        let tau = *rnea(self.model, &mut self.data, &q, &self.v_estimate, &a, None)
-            .map_err(ControlError::Dynamics)?;
+        let tau =
+            *rnea(self.model, &mut self.data, &q, &v, &a, None).map_err(ControlError::Dynamics)?;
         let mut commanded = [0.0; N];
         for (k, drive) in self.drives.iter_mut().enumerate() {
             commanded[k] = drive
@@ -120,17 +115,5 @@ impl<'m, SPI: SpiDevice, PWM: SetDutyCycle, const N: usize> ComputedTorque<'m, S
                 .map_err(|e| ControlError::Drive(k, e))?;
         }
         Ok(TickReport { q, tau: commanded })
-    }
-
-    /// The filtered backward difference of the angles.
-    fn update_rate_estimate(&mut self, q: &[f32; N]) {
-        if let Some(previous) = self.q_previous {
-            let alpha = self.gains.rate_filter;
-            for k in 0..N {
-                let raw = (q[k] - previous[k]) / self.dt;
-                self.v_estimate[k] = alpha * self.v_estimate[k] + (1.0 - alpha) * raw;
-            }
-        }
-        self.q_previous = Some(*q);
     }
 }

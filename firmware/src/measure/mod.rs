@@ -5,9 +5,11 @@
 //! measuring code whatever the optimiser decides about the algorithm itself.
 
 mod instructions;
+mod probe;
 mod stack;
 
 pub use instructions::{InstructionCounter, MAX_INSTRUCTIONS};
+pub use probe::{probe_scene, Cost, SEED, STATES};
 pub use stack::{stack_bytes, STACK_WINDOW_BYTES};
 
 /// Calls `f` in a frame of its own; the optimiser sees neither through the
