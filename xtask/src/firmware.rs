@@ -32,6 +32,10 @@ pub const EXAMPLES: &[Example] = &[
         about: "task-space impedance control of the 7-DoF arm's flange along a pose trajectory",
     },
     Example {
+        name: "mpc_pendulum",
+        about: "model-predictive control of the pendulum by iLQR on rodyn's analytic derivatives",
+    },
+    Example {
         name: "pendulum",
         about: "the seed pendulum with its return spring, simulated in real time",
     },
@@ -45,7 +49,7 @@ pub const EXAMPLES: &[Example] = &[
     },
     Example {
         name: "control_cost_probe",
-        about: "instructions and stack bytes of the flange's Jacobian, J̇v, an IK step and a task-space tick",
+        about: "instructions and stack bytes of the flange's Jacobian, J̇v, an IK step, a task-space tick, the derivatives and an MPC tick",
     },
     Example {
         name: "agreement",

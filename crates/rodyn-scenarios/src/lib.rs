@@ -16,6 +16,9 @@
 //! | [`gait_planar`]      | `models/gait_planar.toml`     | the seed's planar gait model (8 segments, Winter's table)         |
 //! | [`quadruped`]        | [`aibo`]                      | stance / trot PD controller, ground contact, one call per step     |
 //! | [`muscle_robot`]     | [`two_link_muscles`]          | forward dynamics with the muscles, its sensitivity `∂q̈/∂a`, loads with the activations as auxiliary states |
+//! | [`ilqr`]             |                               | iterative LQR with constant work per call, for MPC                |
+//! | [`driven_system`]    |                               | a model with drives as a discrete system, analytic linearisation  |
+//! | [`pendulum_mpc`]     | [`pendulum`]                  | model-predictive control of the pendulum by iLQR                  |
 //!
 //! Every generated module holds `MODEL_F64` and `MODEL_F32`, the sizes
 //! `NB`, `NQ`, `NV`, `NE`, named indices (`body::`, `joint::`, `q::`, `v::`,
@@ -33,6 +36,12 @@ include!(concat!(env!("OUT_DIR"), "/gait_planar.rs"));
 // The generated modules document their items but not each coordinate index
 // (`q::`, `v::`); the hand-written ones document everything.
 #[warn(missing_docs)]
+pub mod driven_system;
+#[warn(missing_docs)]
+pub mod ilqr;
+#[warn(missing_docs)]
 pub mod muscle_robot;
+#[warn(missing_docs)]
+pub mod pendulum_mpc;
 #[warn(missing_docs)]
 pub mod quadruped;

@@ -1,7 +1,8 @@
 //! What control-level computations cost on a Cortex-M4F: the Panda
 //! flange's Jacobian and `J̇ v`, one inverse-kinematics step, one tick of
-//! the `task_space` example's controller, and the Panda's analytic
-//! derivatives of inverse and forward dynamics.
+//! the `task_space` example's controller, the Panda's analytic
+//! derivatives of inverse and forward dynamics, and one tick of the
+//! `mpc_pendulum` example's model-predictive controller.
 //!
 //! Measured as `cost_probe` measures (seeded random inputs, instructions
 //! by QEMU `-icount` and SysTick, stack bytes from a painted window), in an
@@ -25,9 +26,11 @@ use rodyn_firmware::drivers::{AbsoluteEncoder, TorqueDrive};
 use rodyn_firmware::exit::{exit, exit_with, CHECK_FAILED};
 use rodyn_firmware::measure::{probe_scene, InstructionCounter, STATES};
 use rodyn_firmware::models::panda::MODEL_F32 as PANDA;
+use rodyn_firmware::models::pendulum::{MODEL_F32 as PENDULUM, RETURN_SPRING_F32 as SPRING};
 use rodyn_firmware::models::{PANDA_FLANGE, PANDA_READY, PANDA_TORQUE_LIMITS};
 use rodyn_firmware::rng::XorShift32;
 use rodyn_firmware::simulated::{Signals, SimulatedEncoderSpi, SimulatedPwm};
+use rodyn_scenarios::pendulum_mpc::{reference, PendulumMpc};
 
 /// The Panda's flange (`models::PANDA_FLANGE`) for task-space control, at
 /// random angles (±π) and rates (±2 rad/s):
@@ -159,13 +162,47 @@ fn probe_derivatives(counter: &InstructionCounter) -> bool {
     };
     let mut data = Data::new();
     let mut deriv = DerivativeData::<f32, NB, NB>::new();
-    let inverse = probe_scene("panda-7dof", "RNEA-derivatives", counter, draw, |(q, v, a)| {
-        rnea_derivatives(&PANDA, &mut data, &mut deriv, q, v, a, None).is_ok()
-    });
-    let forward = probe_scene("panda-7dof", "ABA-derivatives", counter, draw, |(q, v, tau)| {
-        aba_derivatives(&PANDA, &mut data, &mut deriv, q, v, tau, None).is_ok()
-    });
+    let inverse = probe_scene(
+        "panda-7dof",
+        "RNEA-derivatives",
+        counter,
+        draw,
+        |(q, v, a)| rnea_derivatives(&PANDA, &mut data, &mut deriv, q, v, a, None).is_ok(),
+    );
+    let forward = probe_scene(
+        "panda-7dof",
+        "ABA-derivatives",
+        counter,
+        draw,
+        |(q, v, tau)| aba_derivatives(&PANDA, &mut data, &mut deriv, q, v, tau, None).is_ok(),
+    );
     inverse & forward
+}
+
+/// One tick of `mpc_pendulum`'s controller (`pendulum_mpc::PendulumMpc`:
+/// one iLQR iteration over 25 stages, its references included) after its
+/// warm-up, at random times of the reference (0 to 4 s) from states within
+/// ±0.05 rad and ±0.2 rad/s of it.
+fn probe_mpc_tick(counter: &InstructionCounter) -> bool {
+    let mut mpc = PendulumMpc::new(&PENDULUM, &SPRING);
+    // The first tick warms the plan up with more iterations: not counted.
+    if mpc.tick(0.0, &[0.0, 0.0]).is_err() {
+        return false;
+    }
+    let draw = |rng: &mut XorShift32| {
+        let t = rng.uniform(0.0, 4.0);
+        let r = reference::<f32>(t);
+        (
+            t,
+            [
+                r[0] + rng.uniform(-0.05, 0.05),
+                r[1] + rng.uniform(-0.2, 0.2),
+            ],
+        )
+    };
+    probe_scene("pendulum", "MPC-tick(iLQR,25)", counter, draw, |(t, x)| {
+        mpc.tick(*t, x).is_ok()
+    })
 }
 
 #[entry]
@@ -175,7 +212,9 @@ fn main() -> ! {
     };
     let counter = InstructionCounter::start(&mut peripherals.SYST);
     defmt::println!("control_cost_probe: f32, {} random states per call", STATES);
-    let passed =
-        probe_flange(&counter) & probe_task_space_tick(&counter) & probe_derivatives(&counter);
+    let passed = probe_flange(&counter)
+        & probe_task_space_tick(&counter)
+        & probe_derivatives(&counter)
+        & probe_mpc_tick(&counter);
     exit_with(passed)
 }

@@ -37,6 +37,7 @@ use super::{ControlError, RateEstimate, TickReport};
 use crate::drivers::{AbsoluteEncoder, TorqueDrive};
 use embedded_hal::pwm::SetDutyCycle;
 use embedded_hal::spi::SpiDevice;
+use rodyn::algorithm::dense::{cholesky_in_place, cholesky_solve};
 use rodyn::algorithm::frames::{frame_placement, ReferenceFrame};
 use rodyn::algorithm::inverse_kinematics::log3;
 use rodyn::algorithm::jacobian::{
@@ -45,7 +46,7 @@ use rodyn::algorithm::jacobian::{
 };
 use rodyn::algorithm::rnea::rnea;
 use rodyn::spatial::{Motion, Spatial, Vec3};
-use rodyn::{Data, Frame, Model, Scalar};
+use rodyn::{Data, Frame, Model};
 
 /// The task-space impedance, the posture term and the rate filter.
 #[derive(Clone, Copy, Debug)]
@@ -200,14 +201,14 @@ impl<'m, SPI: SpiDevice, PWM: SetDutyCycle, const N: usize> TaskSpaceImpedance<'
         for (r, row) in gram.iter_mut().enumerate() {
             row[r] += g.pseudo_inverse_damping * g.pseudo_inverse_damping;
         }
-        if !cholesky_6(&mut gram) {
+        if cholesky_in_place(&mut gram, 6, 0.0).is_err() {
             return Err(ControlError::PseudoInverse);
         }
 
         // The joint accelerations of least norm that give the reference's
         // task acceleration: J⁺ (ẍ_d − J̇ q̇).
         let mut y = components(&(reference.acceleration - dj_v));
-        cholesky_solve_6(&gram, &mut y);
+        cholesky_solve(&gram, 6, &mut y);
         let a_feedforward: [f32; N] = core::array::from_fn(|k| dot6(&components(&self.j[k]), &y));
 
         // The posture torque without its component along the task: τ₀ − Jᵀ (J Jᵀ + λ² I)⁻¹ J τ₀.
@@ -215,7 +216,7 @@ impl<'m, SPI: SpiDevice, PWM: SetDutyCycle, const N: usize> TaskSpaceImpedance<'
             g.posture_stiffness * (self.posture[k] - q[k]) - g.posture_damping * v[k]
         });
         let mut z = components(&mul_rates::<f32, N, Spatial>(&self.j, &tau_posture));
-        cholesky_solve_6(&gram, &mut z);
+        cholesky_solve(&gram, 6, &mut z);
 
         let tau_dynamics = *rnea(self.model, &mut self.data, &q, &v, &a_feedforward, None)
             .map_err(ControlError::Dynamics)?;
@@ -242,46 +243,6 @@ fn dot6(a: &[f32; 6], b: &[f32; 6]) -> f32 {
     dot(a, b)
 }
 
-/// Overwrites the lower triangle of the symmetric 6×6 `a` with its
-/// Cholesky factor `L` (`a = L Lᵀ`). False when a pivot is not positive
-/// (or not finite): the matrix was not positive definite.
-fn cholesky_6(a: &mut [[f32; 6]; 6]) -> bool {
-    for j in 0..6 {
-        let (row_j, below) = a[j..].split_at_mut(1);
-        let row_j = &mut row_j[0];
-        let (done, rest) = row_j.split_at_mut(j);
-        let d = rest[0] - dot(done, done);
-        // A NaN pivot fails too.
-        if d.is_nan() || d <= 0.0 {
-            return false;
-        }
-        let l = d.sqrt();
-        rest[0] = l;
-        for row_i in below {
-            row_i[j] = (row_i[j] - dot(&row_i[..j], done)) / l;
-        }
-    }
-    true
-}
-
 fn dot(a: &[f32], b: &[f32]) -> f32 {
     a.iter().zip(b).map(|(x, y)| x * y).sum()
-}
-
-/// Solves `L Lᵀ x = b` in place, `L` from [`cholesky_6`].
-fn cholesky_solve_6(l: &[[f32; 6]; 6], b: &mut [f32; 6]) {
-    for i in 0..6 {
-        let mut s = b[i];
-        for k in 0..i {
-            s -= l[i][k] * b[k];
-        }
-        b[i] = s / l[i][i];
-    }
-    for i in (0..6).rev() {
-        let mut s = b[i];
-        for k in i + 1..6 {
-            s -= l[k][i] * b[k];
-        }
-        b[i] = s / l[i][i];
-    }
 }

@@ -28,8 +28,8 @@
 //! Cost: one RNEA, one CRBA and factorisation, one `Lᵀ D L` solve per
 //! constrained row, the joint Jacobians, and a dense `3k × 3k` solve.
 
-use super::common::{cholesky_in_place, cholesky_solve};
 use super::crba::crba;
+use super::dense::{cholesky_in_place, cholesky_solve};
 use super::frames::{
     frame_classical_acceleration, frame_placement, frame_velocity, ReferenceFrame,
 };

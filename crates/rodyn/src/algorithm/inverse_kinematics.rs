@@ -14,7 +14,7 @@
 //! unreachable targets, where the iteration then settles at the closest
 //! reachable pose and reports [`Error::NotConverged`].
 
-use super::common::{cholesky_in_place, cholesky_solve};
+use super::dense::{cholesky_in_place, cholesky_solve};
 use super::frames::{frame_placement, ReferenceFrame};
 use super::jacobian::{frame_jacobian, joint_jacobians, JacobianData};
 use crate::data::Data;

@@ -13,6 +13,7 @@
 //! | [`jacobian`]          | joint and frame Jacobians, their derivatives    | §4.4          |
 //! | [`centroidal`]        | CoM Jacobian, centroidal momentum matrix, CCRBA | Orin 2013     |
 //! | [`inverse_kinematics`] | damped least-squares steps to a frame pose     |               |
+//! | [`dense`]             | small dense Cholesky factor and solve           |               |
 //! | [`derivatives`]       | `∂τ/∂(q, v)`, `∂q̈/∂(q, v, τ)`                 | Carpentier 2018 |
 //!
 //! The mass matrix of a two-link arm against its closed form (links 1 m,
@@ -43,6 +44,7 @@ pub mod centroidal;
 mod common;
 pub mod constrained_dynamics;
 pub mod crba;
+pub mod dense;
 pub mod derivatives;
 pub mod energy;
 pub mod forward_dynamics;

@@ -99,7 +99,7 @@ impl<S: Scalar, G: PointGeometry, const K: usize> Path<S, G, K> {
     /// [`kinematics`](Self::kinematics).
     ///
     /// # Errors
-    /// [`Error::InvalidDrive`] when an endpoint names a body out of range.
+    /// [`Error::InvalidDrive`](crate::Error::InvalidDrive) when an endpoint names a body out of range.
     pub fn length_derivatives<const NB: usize, const NV: usize>(
         &self,
         state: &DriveDerivativeState<'_, S, G, NB, NV>,

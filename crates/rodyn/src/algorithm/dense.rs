@@ -1,0 +1,76 @@
+//! Small dense linear algebra that algorithms and controllers share: a
+//! Cholesky factorisation and solve on fixed-size arrays, for the few
+//! coupled unknowns of a contact set, an inverse-kinematics step or an
+//! optimal-control stage (not for the mass matrix, whose branch-aware
+//! factorisation is [`ltdl`](super::ltdl)).
+//!
+//! ```
+//! use rodyn::algorithm::dense::{cholesky_in_place, cholesky_solve};
+//! // A = [[4, 2], [2, 3]], b = [2, 1]: x = [0.5, 0].
+//! let mut a: [[f64; 2]; 2] = [[4.0, 2.0], [2.0, 3.0]];
+//! cholesky_in_place(&mut a, 2, 0.0).expect("positive definite");
+//! let mut b: [f64; 2] = [2.0, 1.0];
+//! cholesky_solve(&a, 2, &mut b);
+//! assert!((b[0] - 0.5).abs() < 1e-15 && b[1].abs() < 1e-15);
+//! ```
+
+use crate::Scalar;
+
+/// The lower Cholesky factor `L` (`A = L Lᵀ`) of the leading `n × n` block
+/// of `a`, in place (lower triangle; the upper is left as it was). A pivot
+/// must exceed `tolerance · ε · max diag` (0 asks only for a positive one).
+///
+/// # Errors
+/// The row of the first pivot that does not (NaN included); the factor
+/// is then incomplete.
+pub fn cholesky_in_place<S: Scalar, const N: usize>(
+    a: &mut [[S; N]; N],
+    n: usize,
+    tolerance: f64,
+) -> core::result::Result<(), usize> {
+    let n = n.min(N);
+    let scale = (0..n).fold(0.0_f64, |m, k| m.max(a[k][k].to_f64().abs()));
+    let smallest = S::EPSILON * tolerance * scale;
+    // Plain indexing: on the Cortex-M4 it ran fewer instructions than rows
+    // split at the pivot (docs/sections/performance.md, "Derivatives and
+    // the small dense Cholesky").
+    for j in 0..n {
+        let mut d = a[j][j];
+        for k in 0..j {
+            d -= a[j][k] * a[j][k];
+        }
+        // A NaN pivot fails too: `d > smallest` is false for it.
+        if d.to_f64().partial_cmp(&smallest) != Some(core::cmp::Ordering::Greater) {
+            return Err(j);
+        }
+        let d = d.sqrt();
+        a[j][j] = d;
+        for i in j + 1..n {
+            let mut s = a[i][j];
+            for k in 0..j {
+                s -= a[i][k] * a[j][k];
+            }
+            a[i][j] = s / d;
+        }
+    }
+    Ok(())
+}
+
+/// Solves `L Lᵀ x = b` in place for the factor of [`cholesky_in_place`].
+pub fn cholesky_solve<S: Scalar, const N: usize>(l: &[[S; N]; N], n: usize, b: &mut [S; N]) {
+    let n = n.min(N);
+    for i in 0..n {
+        let mut s = b[i];
+        for k in 0..i {
+            s -= l[i][k] * b[k];
+        }
+        b[i] = s / l[i][i];
+    }
+    for i in (0..n).rev() {
+        let mut s = b[i];
+        for k in i + 1..n {
+            s -= l[k][i] * b[k];
+        }
+        b[i] = s / l[i][i];
+    }
+}
