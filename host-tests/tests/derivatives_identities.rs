@@ -260,3 +260,43 @@ fn bad_input_is_reported() {
     );
     assert!(err.is_err(), "{err:?}");
 }
+
+/// The closed form of `Ẏ` in space against its definition applied to a
+/// basis (`ColumnVariation`, the plane's form), on random bodies, velocities
+/// and directions, and sums of them (a composite).
+#[test]
+fn spatial_variation_matches_its_definition() {
+    use rodyn::algorithm::derivatives::{ColumnVariation, SpatialVariation, VariationMap};
+    let mut rng = Rng::new(13);
+    let motion = |rng: &mut Rng| {
+        let [a, b, c, d, e, f]: [f64; 6] = rng.vector(2.0);
+        Motion::new(Vec3::new(a, b, c), Vec3::new(d, e, f))
+    };
+    let (mut closed, mut columns) = (
+        SpatialVariation::ZERO,
+        ColumnVariation::<f64, Spatial>::ZERO,
+    );
+    for _ in 0..5 {
+        let body = rng.inertia().act(&rng.placement());
+        let v = motion(&mut rng);
+        closed.add_assign(&SpatialVariation::of_body(&body, &v));
+        columns.add_assign(&ColumnVariation::of_body(&body, &v));
+        for _ in 0..4 {
+            let (delta, s) = (motion(&mut rng), motion(&mut rng));
+            let (x, y) = (closed.mul_motion(&delta), columns.mul_motion(&delta));
+            let scale = y.ang.norm().max(y.lin.norm()).max(1.0);
+            assert!(
+                (x - y).ang.norm() + (x - y).lin.norm() < 1e-12 * scale,
+                "Ẏδ: {x:?} against {y:?}"
+            );
+            let (x, y) = (
+                SpatialVariation::dot_row(&closed.row(&s), &delta),
+                ColumnVariation::<f64, Spatial>::dot_row(&columns.row(&s), &delta),
+            );
+            assert!(
+                (x - y).abs() < 1e-12 * y.abs().max(1.0),
+                "sᵀẎδ: {x} against {y}"
+            );
+        }
+    }
+}

@@ -414,6 +414,85 @@ pub fn ltdl_solve<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, 
     check_result(b, Quantity::Acceleration)
 }
 
+/// Solves `M X = B` in place for `C` right-hand sides at once, with the
+/// factors from [`ltdl_factor`]: row k of `b` holds coordinate k's entries
+/// of every column (so `b = I` gives `M⁻¹`). The same sweeps as
+/// [`ltdl_solve`], each step a row update across all columns, which
+/// vectorises and saves a sweep per column.
+///
+/// # Errors
+/// As [`ltdl_solve`], the index being the flattened `row · C + column`.
+///
+/// # Example
+///
+/// ```
+/// use rodyn::algorithm::{crba::crba, ltdl::{ltdl_factor, ltdl_solve_columns}};
+/// # use rodyn::prelude::*;
+/// # // Two 1 m links about z, 1 kg point masses at the tips, gravity -y.
+/// # const LINK: Inertia<f64> = Inertia::point_mass(1.0, Vec3::new(1.0, 0.0, 0.0));
+/// # const DOUBLE: Model<f64, 2, 2, 2> = Model::new(
+/// #     [None, Some(0)], [Joint::revolute(Axis::Z), Joint::revolute(Axis::Z)],
+/// #     [Transform::IDENTITY, Transform::from_translation(Vec3::new(1.0, 0.0, 0.0))],
+/// #     [LINK, LINK], Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
+/// # );
+/// let mut data = Data::new();
+/// let m = *crba(&DOUBLE, &mut data, &[0.1, 0.5])?;
+/// ltdl_factor(&DOUBLE, &mut data)?;
+/// let mut inverse = [[1.0, 0.0], [0.0, 1.0]];
+/// ltdl_solve_columns(&DOUBLE, &data, &mut inverse)?;
+/// // M M⁻¹ = I (CRBA fills M's lower triangle).
+/// let m01 = m[1][0];
+/// assert!((m[0][0] * inverse[0][0] + m01 * inverse[1][0] - 1.0).abs() < 1e-12);
+/// assert!((m01 * inverse[0][1] + m[1][1] * inverse[1][1] - 1.0).abs() < 1e-12);
+/// # Ok::<(), rodyn::Error>(())
+/// ```
+pub fn ltdl_solve_columns<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    const C: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &Data<S, NB, NV, G>,
+    b: &mut [[S; C]; NV],
+) -> Result<()> {
+    check_finite(b.as_flattened(), Quantity::Acceleration)?;
+    let topology = model.topology();
+    let h = &data.ltdl;
+    // Lᵀ Y = B, leaves to root.
+    for k in (0..NV).rev() {
+        let end = topology.last_supported_v[k] + 1;
+        let (head, below) = b.split_at_mut(k + 1);
+        let row_k = &mut head[k];
+        for (row_s, l) in below.iter().zip(&h[k][k + 1..end]) {
+            for (x, y) in row_k.iter_mut().zip(row_s) {
+                *x -= *l * *y;
+            }
+        }
+    }
+    // D Z = Y.
+    for (k, row) in b.iter_mut().enumerate() {
+        let inverse = S::ONE / h[k][k];
+        for x in row.iter_mut() {
+            *x *= inverse;
+        }
+    }
+    // L X = Z, root to leaves.
+    for k in 0..NV {
+        let end = topology.last_supported_v[k] + 1;
+        let (head, below) = b.split_at_mut(k + 1);
+        let row_k = &head[k];
+        for (row_s, l) in below.iter_mut().zip(&h[k][k + 1..end]) {
+            for (x, y) in row_s.iter_mut().zip(row_k) {
+                *x -= *l * *y;
+            }
+        }
+    }
+    check_result(b.as_flattened(), Quantity::Acceleration)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -2,12 +2,12 @@
 //!
 //! Forward dynamics solves `τ = ID(q, v, q̈)` for q̈, so differentiating
 //! that identity gives `∂q̈/∂x = −M⁻¹ ∂ID/∂x` at `q̈ = FD(q, v, τ)`
-//! (Carpentier & Mansard 2018, §IV). `M⁻¹` comes from the branch-aware
-//! `Lᵀ D L` factorisation, one sparse solve per column.
+//! (Carpentier & Mansard 2018, §IV). `M⁻¹` and the two products come from
+//! the branch-aware `Lᵀ D L` factorisation, each one solve of NV columns.
 
 use super::{rnea_derivatives, DerivativeData, DerivativeSpace};
 use crate::algorithm::aba::aba;
-use crate::algorithm::ltdl::{ltdl_factor, ltdl_solve};
+use crate::algorithm::ltdl::{ltdl_factor, ltdl_solve_columns};
 use crate::data::Data;
 use crate::error::{Quantity, Result};
 use crate::model::{check_result, Model};
@@ -65,30 +65,23 @@ pub fn aba_derivatives<
     let ddq = *aba(model, data, q, v, tau, f_ext)?;
     rnea_derivatives(model, data, deriv, q, v, &ddq, f_ext)?;
     ltdl_factor(model, data)?;
-    for c in 0..NV {
-        let mut e = [S::ZERO; NV];
-        e[c] = S::ONE;
-        ltdl_solve(model, data, &mut e)?;
-        set_column(&mut deriv.minv, c, &e);
-        let mut x = column(&deriv.dtau_dq, c).map(|x| -x);
-        ltdl_solve(model, data, &mut x)?;
-        set_column(&mut deriv.ddq_dq, c, &x);
-        let mut x = column(&deriv.dtau_dv, c).map(|x| -x);
-        ltdl_solve(model, data, &mut x)?;
-        set_column(&mut deriv.ddq_dv, c, &x);
+    // M⁻¹ = M⁻¹ I, and ∂q̈/∂x = M⁻¹ (−∂τ/∂x): three solves of NV columns.
+    for (r, row) in deriv.minv.iter_mut().enumerate() {
+        *row = [S::ZERO; NV];
+        row[r] = S::ONE;
+    }
+    ltdl_solve_columns(model, data, &mut deriv.minv)?;
+    for (out, dtau) in [
+        (&mut deriv.ddq_dq, &deriv.dtau_dq),
+        (&mut deriv.ddq_dv, &deriv.dtau_dv),
+    ] {
+        for (out_row, row) in out.iter_mut().zip(dtau) {
+            *out_row = row.map(|x| -x);
+        }
+        ltdl_solve_columns(model, data, out)?;
     }
     data.ddq = ddq;
     check_result(deriv.ddq_dq.as_flattened(), Quantity::Derivative)?;
     check_result(deriv.ddq_dv.as_flattened(), Quantity::Derivative)?;
     check_result(deriv.minv.as_flattened(), Quantity::Derivative)
-}
-
-fn column<S: Scalar, const N: usize>(m: &[[S; N]; N], c: usize) -> [S; N] {
-    core::array::from_fn(|r| m[r][c])
-}
-
-fn set_column<S: Scalar, const N: usize>(m: &mut [[S; N]; N], c: usize, x: &[S; N]) {
-    for (row, x) in m.iter_mut().zip(x) {
-        row[c] = *x;
-    }
 }

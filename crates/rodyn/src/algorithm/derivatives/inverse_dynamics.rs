@@ -21,7 +21,7 @@
 //! above j, `∂τ_r/∂q_c = S_rᵀ (Yᶜⱼ da_dq_c + Ẏᶜⱼ dv_dq_c)`; and likewise
 //! for v without the turn term. Other entries are zero.
 
-use super::{DerivativeData, DerivativeSpace, InertiaVariation};
+use super::{DerivativeData, DerivativeSpace, VariationMap};
 use crate::algorithm::rnea::rnea;
 use crate::data::Data;
 use crate::error::{Quantity, Result};
@@ -128,7 +128,7 @@ fn world_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: D
         deriv.o_v[i] = v_i;
         deriv.o_a[i] = o_m_i.act_motion(&data.a_gf[i]);
         deriv.o_yc[i] = y_i;
-        deriv.o_dyc[i] = InertiaVariation::of_body(&y_i, &v_i);
+        deriv.o_dyc[i] = G::Variation::<S>::of_body(&y_i, &v_i);
         deriv.o_fc[i] = o_m_i.act_force(&data.f[i]);
         let joint = model.joint(i);
         for k in 0..t.nv[i] {
@@ -173,9 +173,9 @@ fn backward_pass<
             while let Some(i) = above {
                 for c in t.idx_v[i]..t.idx_v[i] + t.nv[i] {
                     deriv.dtau_dq[r][c] = deriv.da_dq[c].dot(&y_s)
-                        + InertiaVariation::<S, G>::dot_row(&dy_row, &deriv.dv_dq[c]);
-                    deriv.dtau_dv[r][c] = deriv.da_dv[c].dot(&y_s)
-                        + InertiaVariation::<S, G>::dot_row(&dy_row, &deriv.s[c]);
+                        + G::Variation::<S>::dot_row(&dy_row, &deriv.dv_dq[c]);
+                    deriv.dtau_dv[r][c] =
+                        deriv.da_dv[c].dot(&y_s) + G::Variation::<S>::dot_row(&dy_row, &deriv.s[c]);
                 }
                 above = model.parent(i);
             }

@@ -13,7 +13,7 @@
 //! and `ᵒa_λ × ᵒS_c + ᵒv_λ × (ᵒv_λ × ᵒS_c)` (acceleration, gravity
 //! included) for every body below j. Summed over a subtree these terms meet
 //! only its composite inertia `ᵒYᶜ` and the composite of the inertias'
-//! velocity variations `ᵒẎᶜ` (see [`InertiaVariation`]), which is why
+//! velocity variations `ᵒẎᶜ` (see [`VariationMap`]), which is why
 //! the whole Jacobian costs O(n d) for a tree of n bodies and depth d.
 //!
 //! Derivatives with respect to `q` are taken in the tangent space: column
@@ -32,7 +32,7 @@ mod inertia_variation;
 mod inverse_dynamics;
 
 pub use forward_dynamics::aba_derivatives;
-pub use inertia_variation::{DerivativeSpace, InertiaVariation};
+pub use inertia_variation::{ColumnVariation, DerivativeSpace, SpatialVariation, VariationMap};
 pub use inverse_dynamics::rnea_derivatives;
 
 use crate::space::{BodyInertia, VectorOps};
@@ -61,7 +61,7 @@ pub struct DerivativeData<S: Scalar, const NB: usize, const NV: usize, G: Deriva
     pub(crate) o_v: [G::Motion<S>; NB],
     pub(crate) o_a: [G::Motion<S>; NB],
     pub(crate) o_yc: [G::Inertia<S>; NB],
-    pub(crate) o_dyc: [InertiaVariation<S, G>; NB],
+    pub(crate) o_dyc: [G::Variation<S>; NB],
     pub(crate) o_fc: [G::Force<S>; NB],
     // Per coordinate, in the world frame: `ᵒS_c` and the motion and force
     // derivatives named in `inverse_dynamics`.
@@ -89,7 +89,7 @@ impl<S: Scalar, const NB: usize, const NV: usize, G: DerivativeSpace> Derivative
             o_v: [motion; NB],
             o_a: [motion; NB],
             o_yc: [<G::Inertia<S> as BodyInertia<S>>::ZERO; NB],
-            o_dyc: [InertiaVariation::ZERO; NB],
+            o_dyc: [<G::Variation<S> as VariationMap<S, G>>::ZERO; NB],
             o_fc: [force; NB],
             s: [motion; NV],
             dv_dq: [motion; NV],
