@@ -1,8 +1,9 @@
 //! What control-level computations cost on a Cortex-M4F: the Panda
 //! flange's Jacobian and `J̇ v`, one inverse-kinematics step, one tick of
 //! the `task_space` example's controller, the Panda's analytic
-//! derivatives of inverse and forward dynamics, and one tick of the
-//! `mpc_pendulum` example's model-predictive controller.
+//! derivatives of inverse and forward dynamics, the muscle robot's with its
+//! muscles, and one tick of the `mpc_pendulum` example's model-predictive
+//! controller.
 //!
 //! Measured as `cost_probe` measures (seeded random inputs, instructions
 //! by QEMU `-icount` and SysTick, stack bytes from a painted window), in an
@@ -19,6 +20,7 @@ use rodyn::algorithm::frames::{frame_classical_acceleration, frame_placement, Re
 use rodyn::algorithm::inverse_kinematics::{self, IkData};
 use rodyn::algorithm::jacobian::{frame_jacobian, joint_jacobians, JacobianData};
 use rodyn::algorithm::kinematics::{forward_kinematics, forward_kinematics_acceleration};
+use rodyn::drive::{aba_derivatives_with_drives, DriveDerivatives};
 use rodyn::spatial::{Mat3, Motion, Transform, Vec3};
 use rodyn::Data;
 use rodyn_firmware::control::{PoseReference, TaskGains, TaskSpaceImpedance};
@@ -27,7 +29,9 @@ use rodyn_firmware::exit::{exit, exit_with, CHECK_FAILED};
 use rodyn_firmware::measure::{probe_scene, InstructionCounter, STATES};
 use rodyn_firmware::models::panda::MODEL_F32 as PANDA;
 use rodyn_firmware::models::pendulum::{MODEL_F32 as PENDULUM, RETURN_SPRING_F32 as SPRING};
-use rodyn_firmware::models::{PANDA_FLANGE, PANDA_READY, PANDA_TORQUE_LIMITS};
+use rodyn_firmware::models::{
+    muscle_robot as robot, PANDA_FLANGE, PANDA_READY, PANDA_TORQUE_LIMITS,
+};
 use rodyn_firmware::rng::XorShift32;
 use rodyn_firmware::simulated::{Signals, SimulatedEncoderSpi, SimulatedPwm};
 use rodyn_scenarios::pendulum_mpc::{reference, PendulumMpc};
@@ -179,6 +183,41 @@ fn probe_derivatives(counter: &InstructionCounter) -> bool {
     inverse & forward
 }
 
+/// The muscle robot's `dq̈/d(q, q̇)` with its four muscles, analytic
+/// (`drive::aba_derivatives_with_drives`: the rigid body's derivatives,
+/// the muscle paths' gradients and Hessians, the muscles' tension
+/// partials), at random angles (±1 rad), rates (±2 rad/s) and activations
+/// (0 to 1).
+fn probe_muscle_robot_derivatives(counter: &InstructionCounter) -> bool {
+    use robot::{NB, NU, NV};
+    let draw = |rng: &mut XorShift32| {
+        let (mut q, mut v) = ([0.0f32; NV], [0.0f32; NV]);
+        rng.fill_symmetric(&mut q, 1.0);
+        rng.fill_symmetric(&mut v, 2.0);
+        let a: [f32; NU] = core::array::from_fn(|_| rng.uniform(0.0, 1.0));
+        (q, v, a)
+    };
+    let mut data = Data::new();
+    let mut deriv = DerivativeData::<f32, NB, NV, _>::new();
+    let mut jac = JacobianData::new();
+    let mut drive = DriveDerivatives::new();
+    probe_scene("muscle-robot", "dqdd/d(q,v)", counter, draw, |(q, v, a)| {
+        aba_derivatives_with_drives(
+            &robot::MODEL_F32,
+            &mut data,
+            &mut deriv,
+            &mut jac,
+            &mut drive,
+            q,
+            v,
+            &[0.0; NV],
+            &robot::MUSCLES_F32,
+            a,
+        )
+        .is_ok()
+    })
+}
+
 /// One tick of `mpc_pendulum`'s controller (`pendulum_mpc::PendulumMpc`:
 /// one iLQR iteration over 25 stages, its references included) after its
 /// warm-up, at random times of the reference (0 to 4 s) from states within
@@ -215,6 +254,7 @@ fn main() -> ! {
     let passed = probe_flange(&counter)
         & probe_task_space_tick(&counter)
         & probe_derivatives(&counter)
+        & probe_muscle_robot_derivatives(&counter)
         & probe_mpc_tick(&counter);
     exit_with(passed)
 }
