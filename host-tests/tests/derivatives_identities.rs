@@ -143,7 +143,16 @@ fn check_model<const NB: usize, const NQ: usize, const NV: usize>(
         let f_ext: [Force<f64>; NB] = core::array::from_fn(|_| rng.force());
 
         rnea_derivatives(model, &mut data, &mut deriv, &q, &v, &a, Some(&f_ext)).unwrap();
-        let m = data.mass_matrix;
+        let (m, tau_world) = (data.mass_matrix, data.tau);
+        // Its RNEA, run in the world frame, against RNEA in body frames.
+        let tau = *rnea(model, &mut data, &q, &v, &a, Some(&f_ext)).unwrap();
+        let scale = tau.iter().fold(1.0f64, |m, x| m.max(x.abs()));
+        for (x, y) in tau_world.iter().zip(&tau) {
+            assert!(
+                (x - y).abs() <= 1e-12 * scale,
+                "{what}: τ {tau_world:?} against {tau:?}"
+            );
+        }
         let point = (&q, &v, &a, &f_ext);
         let [dq, dv, da] = dual_jacobians(Dynamics::Inverse, model, point);
         let ctx = |x: &str| format!("{what} state {state}: RNEA {x}");

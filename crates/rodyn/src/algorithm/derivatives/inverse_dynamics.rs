@@ -1,6 +1,7 @@
 //! `∂τ/∂q`, `∂τ/∂v` and `M` of inverse dynamics (Carpentier & Mansard 2018).
 //!
-//! All quantities are in the world frame, body i's written `vᵢ`, `aᵢ`
+//! All quantities are in the world frame (RNEA itself runs there too),
+//! body i's written `vᵢ`, `aᵢ`
 //! (gravity included as a base acceleration `−g`), `Yᵢ`, `Ẏᵢ`, and its
 //! subtree's composites `Yᶜᵢ`, `Ẏᶜᵢ`, `Fᶜᵢ` (the force across joint i);
 //! `S_c` is coordinate c's column and λ its body's parent. Per coordinate:
@@ -22,10 +23,10 @@
 //! for v without the turn term. Other entries are zero.
 
 use super::{DerivativeData, DerivativeSpace, VariationMap};
-use crate::algorithm::rnea::rnea;
+use crate::algorithm::common::{check_external, check_state, pose_step, JointSinCos};
 use crate::data::Data;
 use crate::error::{Quantity, Result};
-use crate::model::{check_result, Model};
+use crate::model::{check_finite, check_result, Model};
 use crate::space::{BodyInertia, MotionVector, RigidTransform, VectorOps};
 use crate::Scalar;
 
@@ -35,11 +36,14 @@ use crate::Scalar;
 /// included).
 ///
 /// External forces, one per body in its own frame as for
-/// [`rnea`], enter `τ` and, since they turn with their bodies, `∂τ/∂q`.
-/// Runs [`rnea`]; leaves valid what it leaves, and `data.o_m_i`.
+/// [`rnea`](crate::algorithm::rnea::rnea), enter `τ` and, since they turn
+/// with their bodies, `∂τ/∂q`. RNEA runs inside, in the world frame; leaves
+/// valid `data.li_m_i`, `data.o_m_i`, `data.tau` and `data.mass_matrix`.
+/// The joints' motion subspaces must be constant in their own frames, as
+/// every built-in joint's is.
 ///
 /// # Errors
-/// As [`rnea`], and
+/// As [`rnea`](crate::algorithm::rnea::rnea), and
 /// [`Error::NonFiniteResult`](crate::Error::NonFiniteResult) with
 /// [`Quantity::Derivative`] (index `row · NV + column`) when a derivative
 /// overflows.
@@ -80,62 +84,78 @@ pub fn rnea_derivatives<
     a: &[S; NV],
     f_ext: Option<&[G::Force<S>; NB]>,
 ) -> Result<()> {
-    // RNEA checks the inputs and leaves the joint transforms, body
-    // velocities and accelerations and the composite forces, in body frames.
-    rnea(model, data, q, v, a, f_ext)?;
-    world_pass(model, data, deriv);
+    check_state(model, q, Some(v))?;
+    check_finite(a, Quantity::Acceleration)?;
+    check_external(f_ext.map(|f| &f[..]))?;
+    world_pass(model, data, deriv, q, v, a, f_ext);
     for row in deriv.dtau_dq.iter_mut().chain(deriv.dtau_dv.iter_mut()) {
         *row = [S::ZERO; NV];
     }
     data.mass_matrix = [[S::ZERO; NV]; NV];
-    backward_pass(model, deriv);
+    backward_pass(model, data, deriv);
     subtree_columns_pass(model, data, deriv);
+    // Rotor inertias act on the joint coordinates alone.
     for (k, armature) in model.armature().iter().enumerate() {
         data.mass_matrix[k][k] += *armature;
+        data.tau[k] += *armature * a[k];
     }
+    check_result(&data.tau, Quantity::Torque)?;
     check_result(deriv.dtau_dq.as_flattened(), Quantity::Derivative)?;
     check_result(deriv.dtau_dv.as_flattened(), Quantity::Derivative)?;
     check_result(data.mass_matrix.as_flattened(), Quantity::MassMatrix)
 }
 
-/// Root to leaves: body poses `ᵒMᵢ`, world velocities and accelerations,
-/// each body's `Yᵢ` and `Ẏᵢ` (the composites' starting values), the
-/// composite forces in the world, and per coordinate `S_c`, `dv_dq`,
-/// `da_dq`, `da_dv`.
+/// Root to leaves, RNEA's forward pass in the world frame: body poses
+/// `ᵒMᵢ`, velocities `vᵢ = v_λ + S q̇ᵢ`, accelerations minus gravity
+/// `aᵢ = a_λ + S q̈ᵢ + vᵢ × S q̇ᵢ`, each body's force `fᵢ = Yᵢ aᵢ + vᵢ ×* Yᵢ vᵢ
+/// − f_extᵢ` (the composites' starting values, with `Yᵢ` and `Ẏᵢ`), and
+/// per coordinate `S_c`, `dv_dq`, `da_dq`, `da_dv`.
+#[allow(clippy::too_many_arguments)]
 fn world_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: DerivativeSpace>(
     model: &Model<S, NB, NQ, NV, G>,
     data: &mut Data<S, NB, NV, G>,
     deriv: &mut DerivativeData<S, NB, NV, G>,
+    q: &[S; NQ],
+    v: &[S; NV],
+    a: &[S; NV],
+    f_ext: Option<&[G::Force<S>; NB]>,
 ) {
     let t = model.topology();
     let minus_g = -*model.gravity();
+    let sin_cos = JointSinCos::at(model, q);
     for i in 0..NB {
-        let (o_m_i, v_parent, a_parent) = match model.parent(i) {
-            Some(p) => (
-                data.o_m_i[p].compose(&data.li_m_i[i]),
-                deriv.o_v[p],
-                deriv.o_a[p],
-            ),
-            None => (
-                data.li_m_i[i],
-                <G::Motion<S> as VectorOps<S>>::ZERO,
-                minus_g,
-            ),
+        let o_m_i = pose_step(model, data, i, q, sin_cos.as_ref());
+        let (v_parent, a_parent) = match model.parent(i) {
+            Some(p) => (deriv.o_v[p], deriv.o_a[p]),
+            None => (<G::Motion<S> as VectorOps<S>>::ZERO, minus_g),
         };
-        data.o_m_i[i] = o_m_i;
-        let v_i = o_m_i.act_motion(&data.v[i]);
-        let y_i = model.inertia(i).act(&o_m_i);
-        deriv.o_v[i] = v_i;
-        deriv.o_a[i] = o_m_i.act_motion(&data.a_gf[i]);
-        deriv.o_yc[i] = y_i;
-        deriv.o_dyc[i] = G::Variation::<S>::of_body(&y_i, &v_i);
-        deriv.o_fc[i] = o_m_i.act_force(&data.f[i]);
         let joint = model.joint(i);
+        let (mut joint_velocity, mut joint_acceleration) = (
+            <G::Motion<S> as VectorOps<S>>::ZERO,
+            <G::Motion<S> as VectorOps<S>>::ZERO,
+        );
         for k in 0..t.nv[i] {
             let c = t.idx_v[i] + k;
             let s = G::act_subspace_column(&o_m_i, joint, k);
-            let dv_dq = v_parent.cross_motion(&s);
             deriv.s[c] = s;
+            joint_velocity += s * v[c];
+            joint_acceleration += s * a[c];
+        }
+        let v_i = v_parent + joint_velocity;
+        let a_i = a_parent + joint_acceleration + v_i.cross_motion(&joint_velocity);
+        let y_i = model.inertia(i).act(&o_m_i);
+        let mut f_i = y_i.net_force(&v_i, &a_i);
+        if let Some(f_ext) = f_ext {
+            f_i -= o_m_i.act_force(&f_ext[i]);
+        }
+        deriv.o_v[i] = v_i;
+        deriv.o_a[i] = a_i;
+        deriv.o_yc[i] = y_i;
+        deriv.o_dyc[i] = G::Variation::<S>::of_body(&y_i, &v_i);
+        deriv.o_fc[i] = f_i;
+        for c in t.idx_v[i]..t.idx_v[i] + t.nv[i] {
+            let s = deriv.s[c];
+            let dv_dq = v_parent.cross_motion(&s);
             deriv.dv_dq[c] = dv_dq;
             deriv.da_dq[c] = a_parent.cross_motion(&s) + v_parent.cross_motion(&dv_dq);
             deriv.da_dv[c] = v_i.cross_motion(&s) + dv_dq;
@@ -143,9 +163,9 @@ fn world_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: D
     }
 }
 
-/// Leaves to root, with body j's composites complete: the force
-/// derivatives of j's own columns, and the entries of j's rows in the
-/// columns of the joints above it.
+/// Leaves to root, with body j's composites complete: `τ` of j's rows, the
+/// force derivatives of j's own columns, and the entries of j's rows in
+/// the columns of the joints above it.
 fn backward_pass<
     S: Scalar,
     const NB: usize,
@@ -154,12 +174,16 @@ fn backward_pass<
     G: DerivativeSpace,
 >(
     model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
     deriv: &mut DerivativeData<S, NB, NV, G>,
 ) {
     let t = model.topology();
     for j in (0..NB).rev() {
-        let (y, dy) = (deriv.o_yc[j], deriv.o_dyc[j]);
+        let (y, dy, f) = (deriv.o_yc[j], deriv.o_dyc[j], deriv.o_fc[j]);
         let columns = t.idx_v[j]..t.idx_v[j] + t.nv[j];
+        for r in columns.clone() {
+            data.tau[r] = deriv.s[r].dot(&f);
+        }
         for c in columns.clone() {
             deriv.df_dq[c] = y.mul_motion(&deriv.da_dq[c]) + dy.mul_motion(&deriv.dv_dq[c]);
             deriv.df_dv[c] = y.mul_motion(&deriv.da_dv[c]) + dy.mul_motion(&deriv.s[c]);
@@ -180,9 +204,11 @@ fn backward_pass<
                 above = model.parent(i);
             }
         }
+        // In the world frame the composites add without transforms.
         if let Some(p) = model.parent(j) {
             deriv.o_yc[p] = deriv.o_yc[p].combine(&y);
             deriv.o_dyc[p].add_assign(&dy);
+            deriv.o_fc[p] += f;
         }
     }
 }
