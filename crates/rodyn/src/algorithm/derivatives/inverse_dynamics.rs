@@ -215,7 +215,8 @@ fn backward_pass<
 
 /// For every column c (of body i), the rows of i and of the joints above
 /// it, which see the subtree's force change `df_dq_c` (and, above i, the
-/// turn `S_c ×* Fᶜᵢ`); and `M`'s entries there, both triangles.
+/// turn `S_c ×* Fᶜᵢ`); and `M`'s entries there (rows above columns), then
+/// its other triangle.
 fn subtree_columns_pass<
     S: Scalar,
     const NB: usize,
@@ -230,24 +231,25 @@ fn subtree_columns_pass<
     let t = model.topology();
     for i in 0..NB {
         for c in t.idx_v[i]..t.idx_v[i] + t.nv[i] {
-            let turn = deriv.s[c].cross_force(&deriv.o_fc[i]);
+            let (df_dq, df_dv, df_da) = (deriv.df_dq[c], deriv.df_dv[c], deriv.df_da[c]);
+            let df_dq_above = df_dq + deriv.s[c].cross_force(&deriv.o_fc[i]);
             let mut row_body = Some(i);
             while let Some(j) = row_body {
+                let df_dq = if j == i { df_dq } else { df_dq_above };
                 for r in t.idx_v[j]..t.idx_v[j] + t.nv[j] {
                     let s_r = &deriv.s[r];
-                    let df_dq = if j == i {
-                        deriv.df_dq[c]
-                    } else {
-                        deriv.df_dq[c] + turn
-                    };
                     deriv.dtau_dq[r][c] = s_r.dot(&df_dq);
-                    deriv.dtau_dv[r][c] = s_r.dot(&deriv.df_dv[c]);
-                    let m = s_r.dot(&deriv.df_da[c]);
-                    data.mass_matrix[r][c] = m;
-                    data.mass_matrix[c][r] = m;
+                    deriv.dtau_dv[r][c] = s_r.dot(&df_dv);
+                    data.mass_matrix[r][c] = s_r.dot(&df_da);
                 }
                 row_body = model.parent(j);
             }
+        }
+    }
+    // M's other triangle, in one sequential sweep.
+    for r in 0..NV {
+        for c in 0..r {
+            data.mass_matrix[r][c] = data.mass_matrix[c][r];
         }
     }
 }
