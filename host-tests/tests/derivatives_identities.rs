@@ -145,12 +145,12 @@ fn check_model<const NB: usize, const NQ: usize, const NV: usize>(
         rnea_derivatives(model, &mut data, &mut deriv, &q, &v, &a, Some(&f_ext)).unwrap();
         let (m, tau_world) = (data.mass_matrix, data.tau);
         // Its RNEA, run in the world frame, against RNEA in body frames.
-        let tau = *rnea(model, &mut data, &q, &v, &a, Some(&f_ext)).unwrap();
-        let scale = tau.iter().fold(1.0f64, |m, x| m.max(x.abs()));
-        for (x, y) in tau_world.iter().zip(&tau) {
+        let tau_body = *rnea(model, &mut data, &q, &v, &a, Some(&f_ext)).unwrap();
+        let scale = tau_body.iter().fold(1.0f64, |m, x| m.max(x.abs()));
+        for (x, y) in tau_world.iter().zip(&tau_body) {
             assert!(
                 (x - y).abs() <= 1e-12 * scale,
-                "{what}: τ {tau_world:?} against {tau:?}"
+                "{what}: τ {tau_world:?} against {tau_body:?}"
             );
         }
         let point = (&q, &v, &a, &f_ext);
