@@ -31,7 +31,7 @@ import json
 import numpy as np
 import pinocchio as pin
 
-from make_fixtures import OUT, REPO, SPECS, floats, load
+from make_fixtures import OUT, REPO, SPECS, floats, load, write_states_fixture
 
 OUT_DERIV = OUT / "derivatives"
 #: Models with more velocity coordinates than these keep fewer states.
@@ -84,15 +84,7 @@ def main() -> None:
             ),
             "states": [state_results(model, data, s, model.nv <= LONG_NV) for s in states],
         }
-        text = "{\n" + ",\n".join(
-            f"{json.dumps(k)}: "
-            + ("[\n  " + ",\n  ".join(json.dumps(x) for x in v) + "\n]" if k == "states" else json.dumps(v))
-            for k, v in fixture.items()
-        ) + "\n}\n"
-        json.loads(text)
-        path = OUT_DERIV / f"{spec.name}.json"
-        path.write_text(text)
-        print(f"wrote {path.relative_to(REPO)} ({len(text) // 1024} KiB, {len(states)} states)")
+        write_states_fixture(OUT_DERIV / f"{spec.name}.json", fixture)
 
 
 if __name__ == "__main__":

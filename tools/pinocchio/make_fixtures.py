@@ -197,6 +197,19 @@ def dump(obj: dict) -> str:
     return "\n".join(lines) + "\n"
 
 
+def write_states_fixture(path: Path, fixture: dict) -> None:
+    """Writes `fixture` as JSON with one state per line under "states" (compact,
+    yet diffs stay readable), checks that it parses, and says what it wrote."""
+    text = "{\n" + ",\n".join(
+        f"{json.dumps(k)}: "
+        + ("[\n  " + ",\n  ".join(json.dumps(x) for x in v) + "\n]" if k == "states" else json.dumps(v))
+        for k, v in fixture.items()
+    ) + "\n}\n"
+    json.loads(text)
+    path.write_text(text)
+    print(f"wrote {path.relative_to(REPO)} ({len(text) // 1024} KiB, {len(fixture['states'])} states)")
+
+
 def main() -> None:
     OUT.mkdir(parents=True, exist_ok=True)
     for spec in SPECS:

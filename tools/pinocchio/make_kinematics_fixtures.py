@@ -36,7 +36,7 @@ import zlib
 import numpy as np
 import pinocchio as pin
 
-from make_fixtures import OUT, REPO, SPECS, floats, load
+from make_fixtures import OUT, REPO, SPECS, floats, load, write_states_fixture
 
 MODELS = ("ur5", "panda", "solo12", "branched_tree")
 OUT_KIN = OUT / "kinematics"
@@ -143,16 +143,7 @@ def main() -> None:
             "frames": frames,
             "states": states,
         }
-        text = "{\n" + ",\n".join(
-            f"{json.dumps(k)}: " + (
-                "[\n  " + ",\n  ".join(json.dumps(x) for x in v) + "\n]" if k == "states" else json.dumps(v)
-            )
-            for k, v in fixture.items()
-        ) + "\n}\n"
-        json.loads(text)
-        path = OUT_KIN / f"{name}.json"
-        path.write_text(text)
-        print(f"wrote {path.relative_to(REPO)} ({len(text) // 1024} KiB, {len(states)} states)")
+        write_states_fixture(OUT_KIN / f"{name}.json", fixture)
 
 
 if __name__ == "__main__":
