@@ -1,13 +1,14 @@
-//! The seed's optimal-control problem on a coarse grid (26 nodes, 1,000
-//! iterations, so that it runs in seconds unoptimised): the final iterate
-//! holds the desired angles and the bounds, its defects are small, its
-//! controls replayed by RK4 follow the desired motion, and the extensors
-//! m2 and m4 stay idle while the arm is lifted and lowered against gravity.
+//! The seed's optimal-control problem on a coarse grid (26 nodes, at most
+//! 1,000 iterations, so that it runs in seconds unoptimised): the solution
+//! holds the desired angles and the bounds, its defects are below 1e-6,
+//! its controls replayed by RK4 follow the desired motion, and the
+//! extensors m2 and m4 stay idle while the arm is lifted and lowered
+//! against gravity.
 //!
-//! IPOPT does not certify this problem's optimality (the muscle model's
-//! kinks keep the dual infeasibility up; see the optimal-control section),
-//! so the defect bound is that of the iterate it stops at, not its
-//! `constr_viol_tol`.
+//! It solves with the finite-difference route, the one IPOPT settles with:
+//! with exact derivatives the muscle model's kinks keep the dual
+//! infeasibility jumping and the iterate where the iteration limit stops
+//! it is feasible only to about 1e-4 (see the optimal-control section).
 
 use rodyn_optimal_control::collocation::Node;
 use rodyn_optimal_control::ipopt::{solve, Options};
@@ -20,7 +21,7 @@ fn coarse_solution_is_feasible_and_tracks() {
         nodes: 26,
         ..Task::default()
     };
-    let mut problem = task.transcribe(Derivatives::Analytic).unwrap();
+    let mut problem = task.transcribe(Derivatives::FiniteDifference).unwrap();
     let options = Options {
         max_iterations: 1000,
         ..Options::default()
@@ -29,7 +30,7 @@ fn coarse_solution_is_feasible_and_tracks() {
     let nodes: Vec<Node<NX, NU>> = problem.unpack(&solution.x);
 
     let defect = problem.max_defect(&solution.x).unwrap();
-    assert!(defect < 1e-4, "largest defect {defect:e}");
+    assert!(defect < 1e-6, "largest defect {defect:e}");
     for node in &nodes {
         let (desired, _) = task.desired(node.t);
         for (q, d) in node.x[..NV].iter().zip(desired) {
