@@ -12,7 +12,8 @@
 use std::collections::BTreeMap;
 
 use rodyn::algorithm::centroidal::{
-    centroidal_map, centroidal_momentum, com_jacobian, com_velocity_acceleration, CentroidalData,
+    centroidal_map, centroidal_map_time_variation, centroidal_momentum, com_jacobian,
+    com_velocity_acceleration, CentroidalData,
 };
 use rodyn::algorithm::frames::{
     frame_classical_acceleration, frame_placement, frame_velocity, ReferenceFrame,
@@ -251,6 +252,15 @@ fn compare<S: Scalar, const NB: usize, const NQ: usize, const NV: usize>(name: &
         );
         centroidal_momentum(&model, &mut data, &mut cd, &s.q, &s.v, &zero).unwrap();
         errors.add("dccrba_dag_v", &force6(&cd.dhg), &flat(&r["dag_v"]));
+        let mut dag = [Force::<S>::ZERO; NV];
+        centroidal_map_time_variation(&model, &mut data, &mut cd, &s.q, &s.v, &mut dag).unwrap();
+        let mut dag_rows = vec![0.0; 6 * NV];
+        for (k, c) in dag.iter().enumerate() {
+            for (row, x) in force6(c).into_iter().enumerate() {
+                dag_rows[row * NV + k] = x;
+            }
+        }
+        errors.add("dccrba_dag", &dag_rows, &flat(&r["dag"]));
     }
     errors
 }

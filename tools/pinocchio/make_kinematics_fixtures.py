@@ -22,7 +22,7 @@ placements (a rotation and an offset from the joint frame, Pinocchio's
 * `com`, `com_velocity`, `com_acceleration` (`centerOfMass(q, v, a)`),
   `com_jacobian` (`jacobianCenterOfMass`, 3 x nv);
 * `ag` (`computeCentroidalMap`, 6 x nv), `ig` (`ccrba`'s `Ig`, 6 x 6), `hg`
-  (`ccrba`'s `hg`), `dag_v` (`dccrba`'s dAg times v), `dhg`
+  (`ccrba`'s `hg`), `dag` (`dccrba`'s dAg, 6 x nv), `dag_v` (dAg times v), `dhg`
   (`computeCentroidalMomentumTimeVariation(q, v, a)`).
 
 Floats are written with Python's `repr`, so they round-trip exactly.
@@ -106,6 +106,7 @@ def state_results(model, data, frame_ids, q, v, a) -> dict:
     out["ig"] = floats(data.Ig.matrix())
     out["hg"] = floats(data.hg.vector)
     dag = pin.dccrba(model, data, q, v)
+    out["dag"] = floats(dag)
     out["dag_v"] = floats(dag @ v)
     pin.computeCentroidalMomentumTimeVariation(model, data, q, v, a)
     out["dhg"] = floats(data.dhg.vector)

@@ -17,13 +17,14 @@
 //! of the model and do not count.
 
 use super::common::poses;
+use super::derivatives::{SpatialVariation, VariationMap};
 use super::frames::FrameSpace;
-use super::kinematics::forward_kinematics_acceleration;
+use super::kinematics::{forward_kinematics_acceleration, forward_kinematics_velocity};
 use crate::data::Data;
 use crate::error::Result;
 use crate::model::Model;
-use crate::space::{BodyInertia, RigidTransform, Space, VectorOps};
-use crate::spatial::Spatial;
+use crate::space::{BodyInertia, MotionVector, RigidTransform, Space, VectorOps};
+use crate::spatial::{Force, Motion, Spatial, Transform, Vec3};
 use crate::Scalar;
 
 /// The centroidal algorithms' workspace. Its own type so that a firmware
@@ -143,6 +144,73 @@ pub fn centroidal_momentum<
     }
     cd.hg = o_m_g.act_inv_force(&h);
     cd.dhg = o_m_g.act_inv_force(&dh);
+    Ok(())
+}
+
+/// [`centroidal_map`] and its time derivative `Ȧ_g` at `(q, v)` into
+/// `dag` (NV columns, rodyn's order: the rate of the momentum about the
+/// centre of mass per unit rate, N m s and N s; Pinocchio's `dccrba`).
+///
+/// Column k of joint i is `A_gₖ = ᴳX* ᵒIᶜᵢ Sₖ`; as the model moves,
+/// `d(Iᶜᵢ Sₖ)/dt = İᶜᵢ Sₖ + Iᶜᵢ (vᵢ × Sₖ)`, the subtree's inertia rate
+/// `İᶜᵢ = Σⱼ (vⱼ ×* Iⱼ − Iⱼ vⱼ×)` being the composite [`SpatialVariation`]
+/// less its momentum term, and G translates with the centre of mass's
+/// velocity ċ, which adds `−(0, ċ) ×* A_gₖ`. Runs
+/// [`forward_kinematics_velocity`]; leaves valid what it and
+/// [`centroidal_map`] do.
+///
+/// # Errors
+/// As [`forward_kinematics_velocity`].
+pub fn centroidal_map_time_variation<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+>(
+    model: &Model<S, NB, NQ, NV, Spatial>,
+    data: &mut Data<S, NB, NV, Spatial>,
+    cd: &mut CentroidalData<S, NB, NV, Spatial>,
+    q: &[S; NQ],
+    v: &[S; NV],
+    dag: &mut [Force<S>; NV],
+) -> Result<()> {
+    forward_kinematics_velocity(model, data, q, v)?;
+    map_pass(model, data, cd);
+    // World velocities, and each subtree's Ẏ and momentum.
+    let o_v: [Motion<S>; NB] = core::array::from_fn(|i| data.o_m_i[i].act_motion(&data.v[i]));
+    let mut variation = [SpatialVariation::<S>::ZERO; NB];
+    let mut momentum = [Force::ZERO; NB];
+    for i in 0..NB {
+        let y = model.inertia(i).act(&data.o_m_i[i]);
+        variation[i] = SpatialVariation::of_body(&y, &o_v[i]);
+        momentum[i] = y.mul_motion(&o_v[i]);
+    }
+    let mut total = Force::ZERO;
+    for i in (0..NB).rev() {
+        match model.parent(i) {
+            Some(p) => {
+                let (child, child_momentum) = (variation[i], momentum[i]);
+                variation[p].add_assign(&child);
+                momentum[p] += child_momentum;
+            }
+            None => total += momentum[i],
+        }
+    }
+    let com_velocity = total.lin * (S::ONE / cd.mass().max(S::from_f64(S::EPSILON)));
+    let g_velocity = Motion::new(Vec3::ZERO, com_velocity);
+    let o_m_g = Transform::from_translation(cd.com());
+    let t = model.topology();
+    for i in 0..NB {
+        let joint = model.joint(i);
+        for k in 0..t.nv[i] {
+            let c = t.idx_v[i] + k;
+            let s = Spatial::act_subspace_column(&data.o_m_i[i], joint, k);
+            // İᶜ S = Ẏᶜ S − S ×* Hᶜ, plus Iᶜ Ṡ with Ṡ = vᵢ × S.
+            let rate = variation[i].mul_motion(&s) - s.cross_force(&momentum[i])
+                + cd.o_ic[i].mul_motion(&o_v[i].cross_motion(&s));
+            dag[c] = o_m_g.act_inv_force(&rate) - g_velocity.cross_force(&cd.ag[c]);
+        }
+    }
     Ok(())
 }
 
