@@ -13,6 +13,11 @@ use rodyn::{Frame, Model};
 
 pub use rodyn_scenarios::{aibo, muscle_robot, panda, pendulum, quadruped};
 
+/// Where each of the simulated Panda's encoders has its zero on its disc
+/// (counts of 2¹⁸): an arbitrary mounting, the same in every example.
+pub const PANDA_ENCODER_OFFSETS: [u32; panda::NV] =
+    [1_000, 70_000, 3_000, 200_000, 5_000, 131_072, 12_345];
+
 /// The Panda's joint torque limits (N m), from its datasheet: the full
 /// scale of the simulated drives.
 pub const PANDA_TORQUE_LIMITS: [f32; panda::NV] = [87.0, 87.0, 87.0, 87.0, 12.0, 12.0, 12.0];

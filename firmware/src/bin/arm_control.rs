@@ -13,12 +13,11 @@
 use cortex_m_rt::entry;
 use rodyn::Scalar;
 use rodyn_firmware::control::{ComputedTorque, CosineTrajectory, Gains};
-use rodyn_firmware::drivers::{AbsoluteEncoder, TorqueDrive};
 use rodyn_firmware::exit::{exit, exit_with, CHECK_FAILED};
 use rodyn_firmware::measure::InstructionCounter;
 use rodyn_firmware::models::panda::MODEL_F32 as PANDA;
-use rodyn_firmware::models::{PANDA_READY, PANDA_TORQUE_LIMITS};
-use rodyn_firmware::simulated::{ArmPlant, Signals, SimulatedEncoderSpi, SimulatedPwm};
+use rodyn_firmware::models::{PANDA_ENCODER_OFFSETS, PANDA_READY, PANDA_TORQUE_LIMITS};
+use rodyn_firmware::simulated::{wire, ArmPlant, Signals};
 
 /// Control period (s): 1 kHz.
 const DT: f32 = 1.0e-3;
@@ -31,8 +30,6 @@ const TICKS: u32 = 3_000;
 /// the 2 ms rate filter's lag and the 2.4 mN m PWM step weigh most, and
 /// below 0.9 mrad elsewhere; the bound leaves a factor of two.
 const MAX_TRACKING_ERROR: f32 = 3.0e-3;
-/// Where each encoder's zero sits on its disc (counts): arbitrary mounting.
-const ENCODER_OFFSETS: [u32; 7] = [1_000, 70_000, 3_000, 200_000, 5_000, 131_072, 12_345];
 
 #[entry]
 fn main() -> ! {
@@ -45,18 +42,7 @@ fn main() -> ! {
     let mut plant = ArmPlant::new(&PANDA, PANDA_READY, PANDA_TORQUE_LIMITS);
     plant.publish(&signals);
 
-    let encoders = core::array::from_fn(|k| {
-        AbsoluteEncoder::new(
-            SimulatedEncoderSpi::new(&signals.angles[k], ENCODER_OFFSETS[k]),
-            ENCODER_OFFSETS[k],
-        )
-    });
-    let drives = core::array::from_fn(|k| {
-        TorqueDrive::new(
-            SimulatedPwm::new(&signals.duties[k]),
-            PANDA_TORQUE_LIMITS[k],
-        )
-    });
+    let (encoders, drives) = wire(&signals, PANDA_ENCODER_OFFSETS, PANDA_TORQUE_LIMITS);
     // ωₙ = 40 rad/s, critically damped; rate filter time constant 2 ms.
     let gains = Gains::from_natural_frequency(40.0, 1.0, 0.606_530_66);
     let mut controller = ComputedTorque::new(&PANDA, encoders, drives, gains, DT);

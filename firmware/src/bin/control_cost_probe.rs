@@ -24,16 +24,15 @@ use rodyn::drive::{aba_derivatives_with_drives, DriveDerivatives};
 use rodyn::spatial::{Mat3, Motion, Transform, Vec3};
 use rodyn::Data;
 use rodyn_firmware::control::{PoseReference, TaskGains, TaskSpaceImpedance};
-use rodyn_firmware::drivers::{AbsoluteEncoder, TorqueDrive};
 use rodyn_firmware::exit::{exit, exit_with, CHECK_FAILED};
 use rodyn_firmware::measure::{probe_scene, InstructionCounter, STATES};
 use rodyn_firmware::models::panda::MODEL_F32 as PANDA;
 use rodyn_firmware::models::pendulum::{MODEL_F32 as PENDULUM, RETURN_SPRING_F32 as SPRING};
 use rodyn_firmware::models::{
-    muscle_robot as robot, PANDA_FLANGE, PANDA_READY, PANDA_TORQUE_LIMITS,
+    muscle_robot as robot, PANDA_ENCODER_OFFSETS, PANDA_FLANGE, PANDA_READY, PANDA_TORQUE_LIMITS,
 };
 use rodyn_firmware::rng::XorShift32;
-use rodyn_firmware::simulated::{Signals, SimulatedEncoderSpi, SimulatedPwm};
+use rodyn_firmware::simulated::{wire, Signals};
 use rodyn_scenarios::pendulum_mpc::{reference, PendulumMpc};
 
 /// The Panda's flange (`models::PANDA_FLANGE`) for task-space control, at
@@ -101,15 +100,7 @@ fn probe_flange(counter: &InstructionCounter) -> bool {
 fn probe_task_space_tick(counter: &InstructionCounter) -> bool {
     const NV: usize = 7;
     let signals = Signals::<NV>::new();
-    let encoders = core::array::from_fn(|k| {
-        AbsoluteEncoder::new(SimulatedEncoderSpi::new(&signals.angles[k], 0), 0)
-    });
-    let drives = core::array::from_fn(|k| {
-        TorqueDrive::new(
-            SimulatedPwm::new(&signals.duties[k]),
-            PANDA_TORQUE_LIMITS[k],
-        )
-    });
+    let (encoders, drives) = wire(&signals, PANDA_ENCODER_OFFSETS, PANDA_TORQUE_LIMITS);
     let mut controller = TaskSpaceImpedance::new(
         &PANDA,
         PANDA_FLANGE,

@@ -21,12 +21,13 @@ use rodyn::algorithm::kinematics::forward_kinematics;
 use rodyn::spatial::{Transform, Vec3};
 use rodyn::{Data, Scalar};
 use rodyn_firmware::control::{CirclePoseTrajectory, TaskGains, TaskSpaceImpedance};
-use rodyn_firmware::drivers::{AbsoluteEncoder, TorqueDrive};
 use rodyn_firmware::exit::{exit, exit_with, CHECK_FAILED};
 use rodyn_firmware::measure::InstructionCounter;
 use rodyn_firmware::models::panda::MODEL_F32 as PANDA;
-use rodyn_firmware::models::{PANDA_FLANGE, PANDA_READY, PANDA_TORQUE_LIMITS};
-use rodyn_firmware::simulated::{ArmPlant, Signals, SimulatedEncoderSpi, SimulatedPwm};
+use rodyn_firmware::models::{
+    PANDA_ENCODER_OFFSETS, PANDA_FLANGE, PANDA_READY, PANDA_TORQUE_LIMITS,
+};
+use rodyn_firmware::simulated::{wire, ArmPlant, Signals};
 
 /// Control period (s): 1 kHz.
 const DT: f32 = 1.0e-3;
@@ -45,9 +46,6 @@ const MAX_POSITION_ERROR: f32 = 0.2;
 /// Largest accepted angle between the flange's axes and the reference's
 /// (mrad), chosen as [`MAX_POSITION_ERROR`].
 const MAX_ORIENTATION_ERROR: f32 = 0.5;
-/// Where each encoder's zero sits on its disc (counts): arbitrary mounting,
-/// the same as `arm_control`'s.
-const ENCODER_OFFSETS: [u32; 7] = [1_000, 70_000, 3_000, 200_000, 5_000, 131_072, 12_345];
 
 /// The flange's pose (world from flange) at `q`.
 fn flange_pose(data: &mut Data<f32, 7, 7>, q: &[f32; 7]) -> Transform<f32> {
@@ -71,18 +69,7 @@ fn main() -> ! {
     let mut plant = ArmPlant::new(&PANDA, PANDA_READY, PANDA_TORQUE_LIMITS);
     plant.publish(&signals);
 
-    let encoders = core::array::from_fn(|k| {
-        AbsoluteEncoder::new(
-            SimulatedEncoderSpi::new(&signals.angles[k], ENCODER_OFFSETS[k]),
-            ENCODER_OFFSETS[k],
-        )
-    });
-    let drives = core::array::from_fn(|k| {
-        TorqueDrive::new(
-            SimulatedPwm::new(&signals.duties[k]),
-            PANDA_TORQUE_LIMITS[k],
-        )
-    });
+    let (encoders, drives) = wire(&signals, PANDA_ENCODER_OFFSETS, PANDA_TORQUE_LIMITS);
     let mut controller = TaskSpaceImpedance::new(
         &PANDA,
         PANDA_FLANGE,

@@ -10,8 +10,10 @@ mod arm_plant;
 mod encoder_spi;
 mod pwm;
 mod signals;
+mod wiring;
 
 pub use arm_plant::ArmPlant;
 pub use encoder_spi::SimulatedEncoderSpi;
 pub use pwm::{SimulatedPwm, PWM_PERIOD};
 pub use signals::Signals;
+pub use wiring::{wire, Wiring};

@@ -23,31 +23,13 @@ case "$SUITE" in
     *) echo "unknown suite '$SUITE': kinematics or derivatives" >&2; exit 2 ;;
 esac
 
-PREFIX="$(python3 -c 'import sysconfig; print(sysconfig.get_paths()["purelib"])')/cmeel.prefix"
-for header in pinocchio/config.hpp eigen3/Eigen/Core urdfdom_headers/urdf_model/model.h; do
-    if [[ ! -e "$PREFIX/include/$header" ]]; then
-        echo "missing $PREFIX/include/$header: pip install pin cmeel-eigen cmeel-urdfdom-headers" >&2
-        exit 1
-    fi
-done
-
-CXXFLAGS=(-std=c++17 -O3 -DNDEBUG -g
-    -I"$PREFIX/include" -I"$PREFIX/include/eigen3"
-    -I"$PREFIX/include/urdfdom" -I"$PREFIX/include/urdfdom_headers"
-    -DPINOCCHIO_WITH_URDFDOM
-    -DPINOCCHIO_URDFDOM_HEADERS_MAJOR_VERSION=3
-    -DPINOCCHIO_URDFDOM_HEADERS_MINOR_VERSION=0
-    -DPINOCCHIO_URDFDOM_HEADERS_PATCH_VERSION=0
-    -DBOOST_MPL_LIMIT_LIST_SIZE=30 -DBOOST_MPL_LIMIT_VECTOR_SIZE=30
-    -DBOOST_MPL_CFG_NO_PREPROCESSED_HEADERS -DBOOST_FUSION_INVOKE_MAX_ARITY=12)
-LDFLAGS=(-L"$PREFIX/lib" -Wl,-rpath,"$PREFIX/lib"
-    -lpinocchio_parsers -lpinocchio_default -lurdfdom_model -lconsole_bridge
-    -ltinyxml2 -lboost_filesystem)
+# PREFIX, CXXFLAGS and LDFLAGS, the same for every Pinocchio program here.
+source "$ROOT/tools/pinocchio/bench/pinocchio_flags.sh"
 
 SRC="$ROOT/tools/pinocchio/bench/bench_$SUITE.cpp"
 HEADER="$ROOT/tools/pinocchio/bench/bench_timing.hpp"
 EXE="$OUT/pinocchio-bench-$SUITE"
-if [[ ! -x "$EXE" || "$SRC" -nt "$EXE" || "$HEADER" -nt "$EXE" || "$0" -nt "$EXE" ]]; then
+if [[ ! -x "$EXE" || "$SRC" -nt "$EXE" || "$HEADER" -nt "$EXE" || "$0" -nt "$EXE" || "$ROOT/tools/pinocchio/bench/pinocchio_flags.sh" -nt "$EXE" ]]; then
     echo "building $EXE (about a minute)" >&2
     g++ "${CXXFLAGS[@]}" "$SRC" -o "$EXE" "${LDFLAGS[@]}"
 fi
