@@ -183,8 +183,10 @@ pub enum Error {
     /// contact Jacobian) with no damping to choose among the forces.
     RedundantConstraints {
         /// The constrained row at which the Delassus matrix's factorisation
-        /// broke down (three rows per point contact).
+        /// broke down.
         row: usize,
+        /// The contact that row belongs to (its index in the slice given).
+        contact: usize,
     },
 }
 
@@ -252,11 +254,10 @@ impl fmt::Display for Error {
             Self::InvalidGain { index } => {
                 write!(f, "gain {index} is negative or not finite")
             }
-            Self::RedundantConstraints { row } => write!(
+            Self::RedundantConstraints { row, contact } => write!(
                 f,
-                "the contacts are redundant at constrained row {row} (contact {}); \
-                 give a damping or drop a contact",
-                row / 3
+                "the contacts are redundant at constrained row {row} (contact {contact}); \
+                 give a damping or drop a contact"
             ),
         }
     }

@@ -1,16 +1,19 @@
-//! Forward dynamics with rigid point contacts: the second seed's
+//! Forward dynamics with rigid contacts: the second seed's
 //!
 //! ```text
 //! M q̈ + C q̇ + G = τ + J_cᵀ λ,    J_c q̈ + J̇_c q̇ = −K_p e − K_d J_c q̇,
 //! ```
 //!
-//! for a set of contact points chosen at run time (a foot in swing is
-//! simply left out of the slice). `λ` stacks the contact forces (N, world
-//! axes at each point: Pinocchio's `LOCAL_WORLD_ALIGNED` 3-D contact), `e`
-//! each point's offset from its anchor (m) and `J_c q̇` its velocity: the
-//! right-hand side is Baumgarte's stabilisation (Baumgarte 1972), which
-//! pulls drifting contacts back to their anchors; with zero gains the
-//! contacts keep their current acceleration-level constraint only.
+//! for a set of contacts chosen at run time (a foot in swing is simply
+//! left out of the slice). A [`Contact`] holds a point (three rows: `λ` a
+//! force in world axes, Pinocchio's `CONTACT_3D` in `LOCAL_WORLD_ALIGNED`)
+//! or a whole frame (six rows: `λ` a wrench in the frame's axes,
+//! `CONTACT_6D` in `LOCAL`). `e` is each contact's error against its
+//! anchor (the point's offset, m, or the frame's twist `−log6(ᶜX_anchor)`)
+//! and `J_c q̇` its velocity: the right-hand side is Baumgarte's
+//! stabilisation (Baumgarte 1972), which pulls drifting contacts back to
+//! their anchors; with zero gains the contacts keep their current
+//! acceleration-level constraint only.
 //!
 //! Method: the KKT system by its Schur complement (Featherstone,
 //! *Rigid Body Dynamics Algorithms*, §8.2, and Pinocchio's
@@ -21,17 +24,19 @@
 //!
 //! Redundant contacts (a rank-deficient `J_c`, such as four coplanar feet
 //! of a robot whose legs cannot hold them apart) make `G` singular: with
-//! `μ = 0` that is [`Error::RedundantConstraints`] naming the row; a
-//! damping `μ > 0` regularises it (Tikhonov: the `λ` of least norm
-//! among the near-solutions, the constraint then met to `O(μ)`).
+//! `μ = 0` that is [`Error::RedundantConstraints`] naming the row and the
+//! contact; a damping `μ > 0` regularises it (Tikhonov: the `λ` of least
+//! norm among the near-solutions, the constraint then met to `O(μ)`).
 //!
 //! Cost: one RNEA, one CRBA and factorisation, one `Lᵀ D L` solve per
-//! constrained row, the joint Jacobians, and a dense `3k × 3k` solve.
+//! constrained row, the joint Jacobians, and a dense `m × m` solve for `m`
+//! rows.
 
 use super::crba::crba;
 use super::dense::{cholesky_in_place, cholesky_solve};
 use super::frames::{
-    frame_classical_acceleration, frame_placement, frame_velocity, ReferenceFrame,
+    frame_acceleration, frame_classical_acceleration, frame_placement, frame_velocity,
+    ReferenceFrame,
 };
 use super::jacobian::{frame_jacobian, joint_jacobians, JacobianData};
 use super::kinematics::forward_kinematics_acceleration;
@@ -42,7 +47,7 @@ use crate::error::{Error, Quantity, Result};
 use crate::frame::Frame;
 use crate::model::{check_finite, check_result, Model};
 use crate::space::{RigidTransform, VectorOps};
-use crate::spatial::{Motion, Spatial, Vec3};
+use crate::spatial::{log6, Motion, Spatial, Transform, Vec3};
 use crate::Scalar;
 
 /// Relative size (of the Delassus matrix's largest diagonal entry, in
@@ -50,15 +55,83 @@ use crate::Scalar;
 /// redundant.
 const PIVOT_TOLERANCE: f64 = 1e3;
 
-/// A point of a body held by the environment: the origin of `frame` kept
-/// at `anchor` (world frame, m).
+/// A contact the environment holds: a point (three constrained rows) or a
+/// whole frame (six).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct PointContact<S: Scalar> {
-    /// The contact point, as a frame on its body (only its origin counts).
-    pub frame: Frame<S, Spatial>,
-    /// Where the point should be, world frame (m): the Baumgarte term's
-    /// reference. Set it where the contact was made.
-    pub anchor: Vec3<S>,
+pub enum Contact<S: Scalar> {
+    /// The origin of `frame` kept at `anchor` (world frame, m). Its force
+    /// `λ` (N) is in world axes at the point: Pinocchio's `CONTACT_3D` in
+    /// `LOCAL_WORLD_ALIGNED`. A foot that may roll about its sole.
+    Point {
+        /// The contact point, as a frame on its body (only its origin counts).
+        frame: Frame<S, Spatial>,
+        /// Where the point should be, world frame (m): the Baumgarte
+        /// term's reference. Set it where the contact was made.
+        anchor: Vec3<S>,
+    },
+    /// `frame` kept at the placement `anchor` (world frame): position and
+    /// orientation. Its wrench `λ` is in the frame's own axes about its
+    /// origin, force (N) then moment (N m): Pinocchio's `CONTACT_6D` in
+    /// `LOCAL`. A flat foot on the ground, a hand on a handle.
+    Frame {
+        /// The held frame.
+        frame: Frame<S, Spatial>,
+        /// Where the frame should be, world frame: the Baumgarte term's
+        /// reference (its error is the twist `log6(ᶜX_anchor)`).
+        anchor: Transform<S>,
+    },
+}
+
+impl<S: Scalar> Contact<S> {
+    /// A point contact (see [`Contact::Point`]).
+    #[must_use]
+    pub const fn point(frame: Frame<S, Spatial>, anchor: Vec3<S>) -> Self {
+        Self::Point { frame, anchor }
+    }
+
+    /// A frame contact (see [`Contact::Frame`]).
+    #[must_use]
+    pub const fn frame(frame: Frame<S, Spatial>, anchor: Transform<S>) -> Self {
+        Self::Frame { frame, anchor }
+    }
+
+    /// Constrained rows: 3 for a point, 6 for a frame.
+    #[must_use]
+    pub const fn rows(&self) -> usize {
+        match self {
+            Self::Point { .. } => 3,
+            Self::Frame { .. } => 6,
+        }
+    }
+
+    /// The held frame.
+    #[must_use]
+    pub const fn held_frame(&self) -> &Frame<S, Spatial> {
+        match self {
+            Self::Point { frame, .. } | Self::Frame { frame, .. } => frame,
+        }
+    }
+
+    fn anchor_is_finite(&self) -> bool {
+        match self {
+            Self::Point { anchor, .. } => anchor.is_finite(),
+            Self::Frame { anchor, .. } => anchor.is_finite(),
+        }
+    }
+
+    /// The reference frame of the rows and of `λ`.
+    const fn reference(&self) -> ReferenceFrame {
+        match self {
+            Self::Point { .. } => ReferenceFrame::LocalWorldAligned,
+            Self::Frame { .. } => ReferenceFrame::Local,
+        }
+    }
+}
+
+/// The rows of all `contacts`: the sum of [`Contact::rows`].
+#[must_use]
+pub fn constrained_rows<S: Scalar>(contacts: &[Contact<S>]) -> usize {
+    contacts.iter().map(Contact::rows).sum()
 }
 
 /// The gains of the constraint solve.
@@ -85,7 +158,7 @@ impl<S: Scalar> Default for ConstraintSettings<S> {
 }
 
 /// The workspace of [`constrained_forward_dynamics`] for up to `NC`
-/// constrained rows (three per point contact). Its own type, so that a
+/// constrained rows (three per point contact, six per frame contact). Its own type, so that a
 /// firmware without contacts pays nothing for them.
 #[derive(Clone, Debug)]
 pub struct ConstraintData<S: Scalar, const NV: usize, const NC: usize> {
@@ -97,11 +170,12 @@ pub struct ConstraintData<S: Scalar, const NV: usize, const NC: usize> {
     pub minv_jt: [[S; NV]; NC],
     /// The Delassus matrix `J_c M⁻¹ J_cᵀ + μ I`, then its Cholesky factor.
     pub delassus: [[S; NC]; NC],
-    /// The contact forces `λ` (N), world axes, three per contact.
+    /// The contact forces `λ`, in the contacts' order ([`Contact`] gives
+    /// each one's rows, axes and units).
     pub lambda: [S; NC],
     /// The joint accelerations `q̈`.
     pub ddq: [S; NV],
-    /// Rows in use: three times the contacts of the last call.
+    /// Rows in use by the contacts of the last call.
     pub rows: usize,
     columns: [Motion<S>; NV],
 }
@@ -130,22 +204,23 @@ impl<S: Scalar, const NV: usize, const NC: usize> Default for ConstraintData<S, 
 }
 
 /// `q̈` and the contact forces `λ` of `model` at `(q, v)` under joint
-/// forces `tau` (N m, N), with the points of `contacts` held (see the
-/// module documentation). Returns `(q̈, λ)`, `λ` three entries per contact
-/// in `contacts`' order.
+/// forces `tau` (N m, N), with `contacts` held (see the module
+/// documentation). Returns `(q̈, λ)`, `λ` in `contacts`' order: three
+/// entries per point contact, six per frame contact ([`Contact`] gives
+/// their axes and units).
 ///
 /// Leaves valid in `data`: what [`crba`], [`ltdl_factor`] and
 /// [`joint_jacobians`] leave, `o_m_i`, `v` and `a` at `(q, v, 0)`; `tau`
 /// holds the bias forces `h`. In `cdata`: every field.
 ///
 /// # Errors
-/// [`Error::TooManyConstraints`] for more than `NC / 3` contacts,
+/// [`Error::TooManyConstraints`] for more than `NC` rows,
 /// [`Error::InvalidGain`] for a negative or non-finite gain (index 0:
 /// `kp`, 1: `kd`, 2: `damping`), [`Error::FrameBodyOutOfRange`] for a
 /// contact on a body the model does not have, [`Error::NonFinite`] for a
-/// non-finite anchor (`Quantity::Contact`, the contact's index) or
-/// input, [`Error::RedundantConstraints`] when the contacts are redundant
-/// and `damping` is zero, and those of the algorithms it runs.
+/// non-finite anchor or contact frame (`Quantity::Contact`, the contact's
+/// index) or input, [`Error::RedundantConstraints`] when the contacts are
+/// redundant and `damping` is zero, and those of the algorithms it runs.
 #[allow(clippy::too_many_arguments)]
 pub fn constrained_forward_dynamics<
     'c,
@@ -161,42 +236,32 @@ pub fn constrained_forward_dynamics<
     q: &[S; NQ],
     v: &[S; NV],
     tau: &[S; NV],
-    contacts: &[PointContact<S>],
+    contacts: &[Contact<S>],
     settings: &ConstraintSettings<S>,
 ) -> Result<(&'c [S; NV], &'c [S])> {
     check_input(contacts, settings, NB, NC)?;
-    let rows = 3 * contacts.len();
     check_finite(tau, Quantity::Torque)?;
 
     // Unconstrained: M x₀ = τ − h; then J_c, M⁻¹ J_cᵀ and the Delassus
     // matrix's factor.
     let h = *nonlinear_effects(model, data, q, v, None)?;
     prepare(model, data, cdata, q, contacts, settings.damping)?;
+    let rows = cdata.rows;
     let mut x0: [S; NV] = core::array::from_fn(|k| tau[k] - h[k]);
     ltdl_solve(model, data, &mut x0)?;
 
-    // The right-hand side: −(J_c x₀ + J̇_c q̇ + K_p e + K_d J_c q̇).
-    let mut rhs = [S::ZERO; NC];
-    for (c, contact) in contacts.iter().enumerate() {
-        let position = frame_placement(data, &contact.frame)?.trans;
-        let error = (position - contact.anchor).to_array();
-        for axis in 0..3 {
-            rhs[3 * c + axis] = -settings.kp * error[axis];
-        }
-    }
+    // The right-hand side: the Baumgarte term less the drift J̇_c q̇ and
+    // J_c x₀.
     forward_kinematics_acceleration(model, data, q, v, &[S::ZERO; NV])?;
-    for (c, contact) in contacts.iter().enumerate() {
-        let drift =
-            frame_classical_acceleration(data, &contact.frame, ReferenceFrame::LocalWorldAligned)?
-                .lin
-                .to_array();
-        let velocity = frame_velocity(data, &contact.frame, ReferenceFrame::LocalWorldAligned)?
-            .lin
-            .to_array();
-        for axis in 0..3 {
-            let r = 3 * c + axis;
-            rhs[r] -= drift[axis] + settings.kd * velocity[axis] + dot(&cdata.jc[r], &x0);
+    let mut rhs = [S::ZERO; NC];
+    let mut row = 0;
+    for contact in contacts {
+        let n = contact.rows();
+        baumgarte_less_drift(data, contact, settings, &mut rhs[row..row + n])?;
+        for (r, value) in rhs[row..row + n].iter_mut().enumerate() {
+            *value -= dot(&cdata.jc[row + r], &x0);
         }
+        row += n;
     }
     cdata.lambda = rhs;
     cholesky_solve(&cdata.delassus, rows, &mut cdata.lambda);
@@ -209,14 +274,52 @@ pub fn constrained_forward_dynamics<
     Ok((&cdata.ddq, &cdata.lambda[..rows]))
 }
 
-/// The velocities just after an impact at configuration `q`: the points
-/// of `contacts` meet the ground with velocity `J_c v⁻` and leave with
-/// `−e J_c v⁻` (`e`, `restitution`, in `[0, 1]`; 0 for a plastic impact
-/// that stops them), by the impulses `Λ` (N s, world axes, three per
-/// contact) of `M (v⁺ − v⁻) = J_cᵀ Λ` (Pinocchio's `impulseDynamics`).
-/// An impact with `e ≤ 1` never adds kinetic energy. Returns `(v⁺, Λ)`;
-/// `damping` regularises redundant contacts as in
-/// [`constrained_forward_dynamics`].
+/// `−K_p e − K_d v_c − a_drift` of one contact, in its rows' order
+/// (linear before angular): `e` the contact's error against its anchor,
+/// `v_c` its velocity and `a_drift` its acceleration at `q̈ = 0`, all in the
+/// contact's reference frame. Reads `data` after
+/// `forward_kinematics_acceleration` at `q̈ = 0`.
+fn baumgarte_less_drift<S: Scalar, const NB: usize, const NV: usize>(
+    data: &Data<S, NB, NV, Spatial>,
+    contact: &Contact<S>,
+    settings: &ConstraintSettings<S>,
+    out: &mut [S],
+) -> Result<()> {
+    let frame = contact.held_frame();
+    let reference = contact.reference();
+    let velocity = frame_velocity(data, frame, reference)?;
+    let placement = frame_placement(data, frame)?;
+    let (error, drift) = match contact {
+        Contact::Point { anchor, .. } => {
+            let error = Motion::new(Vec3::ZERO, placement.trans - *anchor);
+            (error, frame_classical_acceleration(data, frame, reference)?)
+        }
+        // Pinocchio's corrector: e = −log6(ᶜX_anchor), in the frame's axes;
+        // the frame's spatial (not classical) acceleration, as its rows are
+        // the frame's local Jacobian.
+        Contact::Frame { anchor, .. } => {
+            let error = -log6(&placement.inverse().compose(anchor));
+            (error, frame_acceleration(data, frame, reference)?)
+        }
+    };
+    let target =
+        |e: Vec3<S>, v: Vec3<S>, a: Vec3<S>| (-(e * settings.kp) - v * settings.kd - a).to_array();
+    let lin = target(error.lin, velocity.lin, drift.lin);
+    out[..3].copy_from_slice(&lin);
+    if out.len() == 6 {
+        let ang = target(error.ang, velocity.ang, drift.ang);
+        out[3..].copy_from_slice(&ang);
+    }
+    Ok(())
+}
+
+/// The velocities just after an impact at configuration `q`: the contacts
+/// meet the environment with velocity `J_c v⁻` and leave with `−e J_c v⁻`
+/// (`e`, `restitution`, in `[0, 1]`; 0 for a plastic impact that stops
+/// them), by the impulses `Λ` (N s and N m s, axes as [`Contact`]'s `λ`)
+/// of `M (v⁺ − v⁻) = J_cᵀ Λ` (Pinocchio's `impulseDynamics`). An impact
+/// with `e ≤ 1` never adds kinetic energy. Returns `(v⁺, Λ)`; `damping`
+/// regularises redundant contacts as in [`constrained_forward_dynamics`].
 ///
 /// Leaves valid in `data`: what [`crba`], [`ltdl_factor`] and
 /// [`joint_jacobians`] leave. In `cdata`: every field (`ddq` holds `v⁺`,
@@ -239,7 +342,7 @@ pub fn impulse_dynamics<
     cdata: &'c mut ConstraintData<S, NV, NC>,
     q: &[S; NQ],
     v_before: &[S; NV],
-    contacts: &[PointContact<S>],
+    contacts: &[Contact<S>],
     restitution: S,
     damping: S,
 ) -> Result<(&'c [S; NV], &'c [S])> {
@@ -268,13 +371,13 @@ pub fn impulse_dynamics<
 }
 
 /// The checks shared by both solves: capacity, gains, bodies, anchors.
-fn check_input<S: Scalar>(
-    contacts: &[PointContact<S>],
+pub(crate) fn check_input<S: Scalar>(
+    contacts: &[Contact<S>],
     settings: &ConstraintSettings<S>,
     nb: usize,
     capacity: usize,
 ) -> Result<()> {
-    let rows = 3 * contacts.len();
+    let rows = constrained_rows(contacts);
     if rows > capacity {
         return Err(Error::TooManyConstraints { rows, capacity });
     }
@@ -286,10 +389,11 @@ fn check_input<S: Scalar>(
         return Err(Error::InvalidGain { index });
     }
     for (index, c) in contacts.iter().enumerate() {
-        if c.frame.body >= nb {
-            return Err(Error::FrameBodyOutOfRange { body: c.frame.body });
+        let frame = c.held_frame();
+        if frame.body >= nb {
+            return Err(Error::FrameBodyOutOfRange { body: frame.body });
         }
-        if !(c.anchor.is_finite() && c.frame.placement.is_finite()) {
+        if !(c.anchor_is_finite() && frame.placement.is_finite()) {
             return Err(Error::NonFinite {
                 quantity: Quantity::Contact,
                 index,
@@ -299,35 +403,47 @@ fn check_input<S: Scalar>(
     Ok(())
 }
 
-/// CRBA and its factorisation, `J_c` (world axes at each point),
-/// `M⁻¹ J_cᵀ` and the Cholesky factor of `J_c M⁻¹ J_cᵀ + μ I`.
-fn prepare<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, const NC: usize>(
+/// CRBA and its factorisation, `J_c` (each contact's rows in its reference
+/// frame), `M⁻¹ J_cᵀ` and the Cholesky factor of `J_c M⁻¹ J_cᵀ + μ I`.
+pub(crate) fn prepare<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    const NC: usize,
+>(
     model: &Model<S, NB, NQ, NV, Spatial>,
     data: &mut Data<S, NB, NV, Spatial>,
     cdata: &mut ConstraintData<S, NV, NC>,
     q: &[S; NQ],
-    contacts: &[PointContact<S>],
+    contacts: &[Contact<S>],
     damping: S,
 ) -> Result<()> {
-    let rows = 3 * contacts.len();
+    let rows = constrained_rows(contacts);
     cdata.rows = rows;
     crba(model, data, q)?;
     ltdl_factor(model, data)?;
     joint_jacobians(model, data, &mut cdata.jacobians, q)?;
-    for (c, contact) in contacts.iter().enumerate() {
+    let mut row = 0;
+    for contact in contacts {
         frame_jacobian(
             model,
             data,
             &cdata.jacobians,
-            &contact.frame,
-            ReferenceFrame::LocalWorldAligned,
+            contact.held_frame(),
+            contact.reference(),
             &mut cdata.columns,
         )?;
-        for (axis, row) in cdata.jc[3 * c..3 * c + 3].iter_mut().enumerate() {
-            for (entry, column) in row.iter_mut().zip(&cdata.columns) {
-                *entry = column.lin.to_array()[axis];
+        for (r, jc_row) in cdata.jc[row..row + contact.rows()].iter_mut().enumerate() {
+            for (entry, column) in jc_row.iter_mut().zip(&cdata.columns) {
+                *entry = if r < 3 {
+                    column.lin.to_array()[r]
+                } else {
+                    column.ang.to_array()[r - 3]
+                };
             }
         }
+        row += contact.rows();
     }
     for r in 0..rows {
         cdata.minv_jt[r] = cdata.jc[r];
@@ -341,8 +457,24 @@ fn prepare<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, const N
         }
         cdata.delassus[r][r] += damping;
     }
-    cholesky_in_place(&mut cdata.delassus, rows, PIVOT_TOLERANCE)
-        .map_err(|row| Error::RedundantConstraints { row })
+    cholesky_in_place(&mut cdata.delassus, rows, PIVOT_TOLERANCE).map_err(|row| {
+        Error::RedundantConstraints {
+            row,
+            contact: contact_of_row(contacts, row),
+        }
+    })
+}
+
+/// The index of the contact that constrained row `row` belongs to.
+fn contact_of_row<S: Scalar>(contacts: &[Contact<S>], row: usize) -> usize {
+    let mut end = 0;
+    contacts
+        .iter()
+        .position(|c| {
+            end += c.rows();
+            row < end
+        })
+        .unwrap_or(contacts.len())
 }
 
 /// `cdata.ddq = base + M⁻¹ J_cᵀ λ` from the rows of `M⁻¹ J_cᵀ` and `λ`.
@@ -359,6 +491,6 @@ fn add_response<S: Scalar, const NV: usize, const NC: usize>(
     }
 }
 
-fn dot<S: Scalar, const N: usize>(a: &[S; N], b: &[S; N]) -> S {
+pub(crate) fn dot<S: Scalar, const N: usize>(a: &[S; N], b: &[S; N]) -> S {
     a.iter().zip(b).fold(S::ZERO, |acc, (x, y)| acc + *x * *y)
 }
