@@ -371,7 +371,7 @@ pub fn impulse_dynamics<
 }
 
 /// The checks shared by both solves: capacity, gains, bodies, anchors.
-pub(crate) fn check_input<S: Scalar>(
+fn check_input<S: Scalar>(
     contacts: &[Contact<S>],
     settings: &ConstraintSettings<S>,
     nb: usize,
@@ -403,9 +403,30 @@ pub(crate) fn check_input<S: Scalar>(
     Ok(())
 }
 
+/// CRBA and its factorisation, `J_c`, `M⁻¹ J_cᵀ` and the Cholesky factor
+/// of `J_c M⁻¹ J_cᵀ + μ I`.
+fn prepare<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, const NC: usize>(
+    model: &Model<S, NB, NQ, NV, Spatial>,
+    data: &mut Data<S, NB, NV, Spatial>,
+    cdata: &mut ConstraintData<S, NV, NC>,
+    q: &[S; NQ],
+    contacts: &[Contact<S>],
+    damping: S,
+) -> Result<()> {
+    form_delassus(model, data, cdata, q, contacts, damping)?;
+    cholesky_in_place(&mut cdata.delassus, cdata.rows, PIVOT_TOLERANCE).map_err(|row| {
+        Error::RedundantConstraints {
+            row,
+            contact: contact_of_row(contacts, row),
+        }
+    })
+}
+
 /// CRBA and its factorisation, `J_c` (each contact's rows in its reference
-/// frame), `M⁻¹ J_cᵀ` and the Cholesky factor of `J_c M⁻¹ J_cᵀ + μ I`.
-pub(crate) fn prepare<
+/// frame), `M⁻¹ J_cᵀ` and the Delassus matrix `J_c M⁻¹ J_cᵀ + μ I` itself
+/// (not factored: the friction solver of
+/// [`sim::time_stepping`](crate::sim::time_stepping) works on it).
+pub(crate) fn form_delassus<
     S: Scalar,
     const NB: usize,
     const NQ: usize,
@@ -457,12 +478,7 @@ pub(crate) fn prepare<
         }
         cdata.delassus[r][r] += damping;
     }
-    cholesky_in_place(&mut cdata.delassus, rows, PIVOT_TOLERANCE).map_err(|row| {
-        Error::RedundantConstraints {
-            row,
-            contact: contact_of_row(contacts, row),
-        }
-    })
+    Ok(())
 }
 
 /// The index of the contact that constrained row `row` belongs to.
@@ -478,7 +494,7 @@ fn contact_of_row<S: Scalar>(contacts: &[Contact<S>], row: usize) -> usize {
 }
 
 /// `cdata.ddq = base + M⁻¹ J_cᵀ λ` from the rows of `M⁻¹ J_cᵀ` and `λ`.
-fn add_response<S: Scalar, const NV: usize, const NC: usize>(
+pub(crate) fn add_response<S: Scalar, const NV: usize, const NC: usize>(
     cdata: &mut ConstraintData<S, NV, NC>,
     rows: usize,
     base: &[S; NV],

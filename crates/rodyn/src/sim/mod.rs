@@ -23,6 +23,7 @@
 //! | [`Integrator`]               | one step: [`ExplicitEuler`], [`SemiImplicitEuler`], [`Rk4`], [`ImplicitEuler`] |
 //! | [`ConfigurationUpdate`]      | how `q` moves on its manifold: exponential map or embedded with optional renormalisation |
 //! | [`contact::GroundContact`]   | compliant point contact with the plane z = 0                    |
+//! | [`time_stepping::time_step`] | one step with rigid point contacts on the plane z = 0 and Coulomb friction |
 //!
 //! Every step either returns `Ok` with a finite state or returns the error of
 //! the dynamics (or [`Error::NonFinite`](crate::Error::NonFinite)) and leaves
@@ -33,6 +34,7 @@ pub mod integrator;
 pub mod loads;
 pub mod manifold;
 pub mod state;
+pub mod time_stepping;
 
 pub use integrator::{ExplicitEuler, ImplicitEuler, Integrator, Rk4, SemiImplicitEuler};
 pub use loads::{AuxiliaryLoads, Loads, NoLoads};
