@@ -19,9 +19,10 @@ use core::f64::consts::PI;
 use rodyn::algorithm::forward_dynamics::ForwardDynamics;
 use rodyn::drive::PointGeometry;
 use rodyn::sim::contact::{ContactReport, GroundContact, NormalLaw};
+use rodyn::sim::time_stepping::{time_step, TimeSteppingData, TimeSteppingSettings};
 use rodyn::sim::{Integrator, Loads, State};
-use rodyn::spatial::{Force, Spatial, Vec3};
-use rodyn::{Data, Endpoint, Model, Result, Scalar};
+use rodyn::spatial::{Force, Spatial, Transform, Vec3};
+use rodyn::{Data, Endpoint, Frame, Model, Result, Scalar};
 
 pub use aibo::{NB, NQ, NV};
 
@@ -279,13 +280,83 @@ impl<S: Scalar> Loads<S, NB, NQ, NV, Spatial> for QuadrupedLoads<S> {
             f_ext,
             Some(&mut self.reports),
         )?;
-        for (leg, joints) in LEG_JOINTS.into_iter().enumerate() {
-            for (iv, target) in joints.into_iter().zip(self.targets(leg, t)) {
-                tau[iv] += self.kp * (target - q[iv + 1]) - self.kd * v[iv];
-            }
+        for (tau, joint) in tau.iter_mut().zip(self.joint_torques(t, q, v)) {
+            *tau += joint;
         }
         Ok(())
     }
+}
+
+impl<S: Scalar> QuadrupedLoads<S> {
+    /// The PD torques `kp (q* − q) − kd q̇` on the leg joints at time `t`
+    /// (N m; zero on the trunk's six coordinates).
+    #[must_use]
+    pub fn joint_torques(&self, t: S, q: &[S; NQ], v: &[S; NV]) -> [S; NV] {
+        let mut tau = [S::ZERO; NV];
+        for (leg, joints) in LEG_JOINTS.into_iter().enumerate() {
+            for (iv, target) in joints.into_iter().zip(self.targets(leg, t)) {
+                tau[iv] = self.kp * (target - q[iv + 1]) - self.kd * v[iv];
+            }
+        }
+        tau
+    }
+}
+
+/// The feet as frames (their points, no rotation) for rigid contact.
+#[must_use]
+pub fn foot_frames<S: Scalar>() -> [Frame<S, Spatial>; LEGS] {
+    feet::<S>().map(|foot| {
+        // The model file puts every foot on a shank (a test checks).
+        let body = foot.body.unwrap_or(0);
+        Frame::new(body, Transform::from_translation(foot.position))
+    })
+}
+
+/// Rigid ground contact for [`rigid_step`]: the model file's friction
+/// coefficient and [`TimeSteppingSettings::with_friction`]'s defaults.
+#[must_use]
+pub fn rigid_ground<S: Scalar>() -> TimeSteppingSettings<S> {
+    TimeSteppingSettings::with_friction(ground::<S>().friction)
+}
+
+/// The workspace of [`rigid_step`]: three rows per foot.
+pub type RigidContactData<S> = TimeSteppingData<S, NV, { 3 * LEGS }, LEGS>;
+
+/// One step of the quadruped with rigid feet on the ground and Coulomb
+/// friction ([`rodyn::sim::time_stepping`]): the controller's stiffness
+/// torques `kp (q* − q)` at the step's start and its damping `kd`
+/// implicitly, then one time step. Unlike [`step`]'s spring-damper ground
+/// it stays stable at 5 ms steps.
+///
+/// # Errors
+/// As [`time_step`]; the state is unchanged on error.
+#[allow(clippy::too_many_arguments)]
+pub fn rigid_step<S: Scalar>(
+    model: &QuadrupedModel<S>,
+    data: &mut QuadrupedData<S>,
+    contact: &mut RigidContactData<S>,
+    loads: &QuadrupedLoads<S>,
+    ground: &TimeSteppingSettings<S>,
+    state: &mut QuadrupedState<S>,
+    dt: S,
+) -> Result<()> {
+    // The PD torques at v = 0 are the stiffness part; kd goes implicit.
+    let tau = loads.joint_torques(state.t, &state.q, &[S::ZERO; NV]);
+    let mut damping = [S::ZERO; NV];
+    for iv in LEG_JOINTS.into_iter().flatten() {
+        damping[iv] = loads.kd;
+    }
+    time_step(
+        model,
+        data,
+        contact,
+        state,
+        &tau,
+        &damping,
+        &foot_frames(),
+        ground,
+        dt,
+    )
 }
 
 /// One simulation step of the quadruped with contact: the call a firmware
@@ -319,6 +390,13 @@ mod tests {
         let root = aibo::MODEL_F64.placement(aibo::body::TRUNK);
         assert_eq!(root.rot, rodyn::spatial::Mat3::IDENTITY);
         assert!((root.trans.z - 0.2).abs() < 1e-15);
+    }
+
+    #[test]
+    fn every_foot_is_on_a_body() {
+        for foot in feet::<f64>() {
+            assert!(foot.body.is_some_and(|b| b > 0), "{foot:?}");
+        }
     }
 
     #[test]

@@ -413,7 +413,7 @@ fn prepare<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, const N
     contacts: &[Contact<S>],
     damping: S,
 ) -> Result<()> {
-    form_delassus(model, data, cdata, q, contacts, damping)?;
+    form_delassus(model, data, cdata, q, contacts, damping, None)?;
     cholesky_in_place(&mut cdata.delassus, cdata.rows, PIVOT_TOLERANCE).map_err(|row| {
         Error::RedundantConstraints {
             row,
@@ -425,7 +425,9 @@ fn prepare<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, const N
 /// CRBA and its factorisation, `J_c` (each contact's rows in its reference
 /// frame), `M⁻¹ J_cᵀ` and the Delassus matrix `J_c M⁻¹ J_cᵀ + μ I` itself
 /// (not factored: the friction solver of
-/// [`sim::time_stepping`](crate::sim::time_stepping) works on it).
+/// [`sim::time_stepping`](crate::sim::time_stepping) works on it). With
+/// `added_diagonal`, `M` is replaced by `M + diag(added_diagonal)` before
+/// the factorisation (time stepping's implicit joint damping).
 pub(crate) fn form_delassus<
     S: Scalar,
     const NB: usize,
@@ -439,10 +441,16 @@ pub(crate) fn form_delassus<
     q: &[S; NQ],
     contacts: &[Contact<S>],
     damping: S,
+    added_diagonal: Option<&[S; NV]>,
 ) -> Result<()> {
     let rows = constrained_rows(contacts);
     cdata.rows = rows;
     crba(model, data, q)?;
+    if let Some(added) = added_diagonal {
+        for (k, d) in added.iter().enumerate() {
+            data.mass_matrix[k][k] += *d;
+        }
+    }
     ltdl_factor(model, data)?;
     joint_jacobians(model, data, &mut cdata.jacobians, q)?;
     let mut row = 0;

@@ -8,13 +8,18 @@
 //! problem with other solvers):
 //!
 //! ```text
-//! v_free = v + h M⁻¹ (τ − h(q, v))
-//! v⁺     = v_free + M⁻¹ J_cᵀ Λ
+//! M̃ = M + h D
+//! v_free = v + h M̃⁻¹ (τ − b(q, v) − D v)
+//! v⁺     = v_free + M̃⁻¹ J_cᵀ Λ
 //! q⁺     = q ⊕ h v⁺
 //! ```
 //!
-//! where `Λ` stacks the contact impulses (N s, world axes, the normal `z`
-//! last). For each contact `c` with gap `φ_c` (the point's height, m) and
+//! where `b` is the bias force (Coriolis, centrifugal, gravity), `Λ`
+//! stacks the contact impulses (N s, world axes, the normal `z` last) and
+//! `D` is a diagonal joint damping (N m s/rad, N s/m) taken implicitly, at
+//! `v⁺`: the `−D q̇` of a PD controller or of viscous joints, which on
+//! light limbs would need far shorter steps explicitly (MuJoCo treats
+//! joint damping the same way). Pass zeros for none. For each contact `c` with gap `φ_c` (the point's height, m) and
 //! velocity after the step `u_c = J_c v⁺ + (φ_c / h) e_z` (a gap closes
 //! at most by itself in one step):
 //!
@@ -149,17 +154,19 @@ impl<S: Scalar, const NV: usize, const NC: usize, const NP: usize> Default
     }
 }
 
-/// Advances `state` by `dt` (s) under joint forces `tau` (N m, N), with the
-/// origins of `points` held out of the ground plane `z = 0` by rigid
-/// contact with Coulomb friction (see the [module](self)). The points' last
-/// impulses in `sdata` warm-start the solver: keep one `sdata` per
-/// simulation.
+/// Advances `state` by `dt` (s) under joint forces `tau` (N m, N) and the
+/// implicit joint damping `damping` (`D`'s diagonal, N m s/rad, N s/m),
+/// with the origins of `points` held out of the ground plane `z = 0` by
+/// rigid contact with Coulomb friction (see the [module](self)). The
+/// points' last impulses in `sdata` warm-start the solver: keep one
+/// `sdata` per simulation.
 ///
 /// On error the state is unchanged.
 ///
 /// # Errors
 /// [`Error::TooManyConstraints`] when `NC < 3 NP`,
-/// [`Error::InvalidGain`] for bad settings (see [`TimeSteppingSettings`]),
+/// [`Error::InvalidGain`] for bad settings (see [`TimeSteppingSettings`];
+/// index 4 for a negative or non-finite damping entry),
 /// [`Error::FrameBodyOutOfRange`] for a point on a missing body,
 /// [`Error::NonFinite`] for a non-finite time, step, state or torque, and
 /// those of the algorithms it runs.
@@ -177,6 +184,7 @@ pub fn time_step<
     sdata: &mut TimeSteppingData<S, NV, NC, NP>,
     state: &mut State<S, NQ, NV>,
     tau: &[S; NV],
+    damping: &[S; NV],
     points: &[Frame<S, Spatial>; NP],
     settings: &TimeSteppingSettings<S>,
     dt: S,
@@ -188,6 +196,9 @@ pub fn time_step<
         });
     }
     settings.validate()?;
+    if !damping.iter().all(|d| d.is_finite() && d.to_f64() >= 0.0) {
+        return Err(Error::InvalidGain { index: 4 });
+    }
     check_time(state.t, dt)?;
     if dt.to_f64() <= 0.0 {
         return Err(Error::NonFinite {
@@ -220,10 +231,19 @@ pub fn time_step<
     let contacts = &contacts[..active];
     let rows = 3 * active;
 
-    // v_free = v + dt M⁻¹ (τ − h), then J_c, M⁻¹ J_cᵀ and G.
+    // J_c, M̃⁻¹ J_cᵀ and G; v_free = v + dt M̃⁻¹ (τ − b − D v).
     let bias = *nonlinear_effects(model, data, q, v, None)?;
-    form_delassus(model, data, &mut sdata.constraint, q, contacts, S::ZERO)?;
-    let mut v_free: [S; NV] = core::array::from_fn(|k| tau[k] - bias[k]);
+    let added: [S; NV] = core::array::from_fn(|k| dt * damping[k]);
+    form_delassus(
+        model,
+        data,
+        &mut sdata.constraint,
+        q,
+        contacts,
+        S::ZERO,
+        Some(&added),
+    )?;
+    let mut v_free: [S; NV] = core::array::from_fn(|k| tau[k] - bias[k] - damping[k] * v[k]);
     ltdl_solve(model, data, &mut v_free)?;
     for (vf, vk) in v_free.iter_mut().zip(v) {
         *vf = *vk + dt * *vf;
