@@ -19,93 +19,25 @@ use rodyn::prelude::*;
 use rodyn::space::RigidTransform;
 use rodyn::spatial::log6;
 use rodyn::Frame;
-use rodyn_host_tests::fixture::{fixtures_dir, Fixture};
+use rodyn_host_tests::contact_fixture::{
+    array, contact, contacts, numbers, relative, solo12, solo12_contacts, talos, SOLO_NB, SOLO_NQ,
+    SOLO_NV, TALOS_NB, TALOS_NQ, TALOS_NV,
+};
+use rodyn_host_tests::fixture::Fixture;
 use serde_json::Value;
 
-const NB: usize = 13;
-const NQ: usize = 19;
-const NV: usize = 18;
+const NB: usize = SOLO_NB;
+const NQ: usize = SOLO_NQ;
+const NV: usize = SOLO_NV;
 const NC: usize = 12;
-
-/// Talos (talos_reduced): 33 moving bodies, free flyer.
-const TALOS_NB: usize = 33;
-const TALOS_NQ: usize = 39;
-const TALOS_NV: usize = 38;
 const TALOS_NC: usize = 12;
 
 fn model() -> Model<f64, NB, NQ, NV> {
-    Fixture::load_named("solo12")
-        .unwrap()
-        .model::<NB, NQ, NV>()
-        .unwrap()
-}
-
-fn talos() -> (Model<f64, TALOS_NB, TALOS_NQ, TALOS_NV>, Value) {
-    let path = fixtures_dir().join("contacts/talos.json");
-    let model = Fixture::load(&path)
-        .unwrap()
-        .model::<TALOS_NB, TALOS_NQ, TALOS_NV>()
-        .unwrap();
-    let text = std::fs::read_to_string(path).unwrap();
-    (model, serde_json::from_str(&text).unwrap())
+    solo12()
 }
 
 fn solo12_fixture() -> Value {
-    let text = std::fs::read_to_string(fixtures_dir().join("contacts/solo12.json")).unwrap();
-    serde_json::from_str(&text).unwrap()
-}
-
-fn numbers(v: &Value) -> Vec<f64> {
-    match v {
-        Value::Array(a) => a.iter().flat_map(numbers).collect(),
-        Value::Number(n) => vec![n.as_f64().unwrap()],
-        _ => panic!("not numbers: {v}"),
-    }
-}
-
-fn array<const N: usize>(v: &Value) -> [f64; N] {
-    numbers(v).try_into().unwrap()
-}
-
-fn transform(p: &Value) -> Transform<f64> {
-    let r = numbers(&p["rotation"]);
-    let t = numbers(&p["translation"]);
-    Transform::new(
-        Mat3::from_rows([[r[0], r[1], r[2]], [r[3], r[4], r[5]], [r[6], r[7], r[8]]]),
-        Vec3::new(t[0], t[1], t[2]),
-    )
-}
-
-fn contact(c: &Value) -> Contact<f64> {
-    let frame = Frame::new(
-        c["body"].as_u64().unwrap() as usize,
-        transform(&c["placement"]),
-    );
-    match c["kind"].as_str().unwrap() {
-        "point" => {
-            let a = numbers(&c["anchor"]);
-            Contact::point(frame, Vec3::new(a[0], a[1], a[2]))
-        }
-        "frame" => Contact::frame(frame, transform(&c["anchor"])),
-        kind => panic!("unknown contact kind {kind}"),
-    }
-}
-
-fn contacts(case: &Value) -> Vec<Contact<f64>> {
-    case["contacts"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(contact)
-        .collect()
-}
-
-fn relative(x: &[f64], reference: &[f64]) -> f64 {
-    let scale = reference.iter().fold(1.0_f64, |m, r| m.max(r.abs()));
-    x.iter()
-        .zip(reference)
-        .fold(0.0, |m, (a, b)| m.max((a - b).abs()))
-        / scale
+    solo12_contacts()
 }
 
 /// The worst relative differences of q̈ and λ from Pinocchio's over the

@@ -279,7 +279,7 @@ pub fn constrained_forward_dynamics<
 /// `v_c` its velocity and `a_drift` its acceleration at `q̈ = 0`, all in the
 /// contact's reference frame. Reads `data` after
 /// `forward_kinematics_acceleration` at `q̈ = 0`.
-fn baumgarte_less_drift<S: Scalar, const NB: usize, const NV: usize>(
+pub(crate) fn baumgarte_less_drift<S: Scalar, const NB: usize, const NV: usize>(
     data: &Data<S, NB, NV, Spatial>,
     contact: &Contact<S>,
     settings: &ConstraintSettings<S>,
@@ -371,7 +371,7 @@ pub fn impulse_dynamics<
 }
 
 /// The checks shared by both solves: capacity, gains, bodies, anchors.
-fn check_input<S: Scalar>(
+pub(crate) fn check_input<S: Scalar>(
     contacts: &[Contact<S>],
     settings: &ConstraintSettings<S>,
     nb: usize,
@@ -405,7 +405,13 @@ fn check_input<S: Scalar>(
 
 /// CRBA and its factorisation, `J_c`, `M⁻¹ J_cᵀ` and the Cholesky factor
 /// of `J_c M⁻¹ J_cᵀ + μ I`.
-fn prepare<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, const NC: usize>(
+pub(crate) fn prepare<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    const NC: usize,
+>(
     model: &Model<S, NB, NQ, NV, Spatial>,
     data: &mut Data<S, NB, NV, Spatial>,
     cdata: &mut ConstraintData<S, NV, NC>,

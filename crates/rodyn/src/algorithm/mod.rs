@@ -15,6 +15,8 @@
 //! | [`inverse_kinematics`] | damped least-squares steps to a frame pose     |               |
 //! | [`dense`]             | small dense Cholesky factor and solve           |               |
 //! | [`derivatives`]       | `∂τ/∂(q, v)`, `∂q̈/∂(q, v, τ)`                 | Carpentier 2018 |
+//! | [`constrained_dynamics`] | forward dynamics and impacts with rigid point and frame contacts | §8.2 |
+//! | [`contact_inverse_dynamics`] | torques and contact forces for a wanted motion of a floating base | Mistry 2010 |
 //!
 //! The mass matrix of a two-link arm against its closed form (links 1 m,
 //! 1 kg point masses at the tips):
@@ -43,6 +45,7 @@ pub mod aba;
 pub mod centroidal;
 mod common;
 pub mod constrained_dynamics;
+pub mod contact_inverse_dynamics;
 pub mod crba;
 pub mod dense;
 pub mod derivatives;
