@@ -15,6 +15,7 @@
 //! | [`two_link_muscles`] | `models/two_link_muscles.toml`| the seed's two-link robot with four Thelen muscles (planar)       |
 //! | [`gait_planar`]      | `models/gait_planar.toml`     | the seed's planar gait model (8 segments, Winter's table)         |
 //! | [`quadruped`]        | [`aibo`]                      | stance / trot PD controller, ground contact, one call per step     |
+//! | [`quadruped_balance`] | [`quadruped`]                | a trot that holds the trunk's height and attitude by inverse dynamics with contacts |
 //! | [`muscle_robot`]     | [`two_link_muscles`]          | forward dynamics with the muscles, its sensitivity `∂q̈/∂a`, loads with the activations as auxiliary states |
 //! | [`ilqr`]             |                               | iterative LQR with constant work per call, for MPC                |
 //! | [`driven_system`]    |                               | a model with drives as a discrete system, analytic linearisation  |
@@ -45,3 +46,5 @@ pub mod muscle_robot;
 pub mod pendulum_mpc;
 #[warn(missing_docs)]
 pub mod quadruped;
+#[warn(missing_docs)]
+pub mod quadruped_balance;
