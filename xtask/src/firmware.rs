@@ -44,6 +44,10 @@ pub const EXAMPLES: &[Example] = &[
         about: "the Aibo-size quadruped lands, stands and trots, with ground contact, in f32",
     },
     Example {
+        name: "quadruped_rigid",
+        about: "the quadruped trots with rigid feet while inverse dynamics with contacts holds its trunk, in f32 at 1 kHz",
+    },
+    Example {
         name: "cost_probe",
         about: "instructions and stack bytes per call, per model and algorithm",
     },

@@ -326,8 +326,8 @@ impl defmt::Format for Error {
                 defmt::write!(f, "{} constrained rows, capacity {}", rows, capacity)
             }
             Self::InvalidGain { index } => defmt::write!(f, "invalid gain {}", index),
-            Self::RedundantConstraints { row } => {
-                defmt::write!(f, "redundant contacts at row {}", row)
+            Self::RedundantConstraints { row, contact } => {
+                defmt::write!(f, "redundant contacts at row {} (contact {})", row, contact)
             }
         }
     }
