@@ -1341,7 +1341,77 @@ pub fn tables(
             bound.path
         )?;
     }
+    table.push_str(
+        "\nThe library's functions that the optimiser kept out of line, worst case from \
+         their own entry in bytes (without panic paths in parentheses), the deepest of \
+         their instances in each image:\n\n",
+    );
+    table.push_str(&algorithm_table(images));
     Ok(table)
+}
+
+/// The out-of-line functions of the library whose bounds the algorithm
+/// table lists (path prefixes of the demangled names).
+const ALGORITHM_PREFIXES: [&str; 3] = ["rodyn::algorithm::", "rodyn::drive::", "rodyn::sim::"];
+
+/// One row per function of the library that the optimiser kept out of line
+/// (`rodyn::algorithm`, `rodyn::drive`, `rodyn::sim`), one column per image:
+/// its worst case from its own entry, the deepest of its instances (the
+/// rest is inlined into its callers, whose rows are the cost table's).
+pub fn algorithm_table(images: &BTreeMap<&'static str, Analysed>) -> String {
+    let mut rows: BTreeMap<String, BTreeMap<&str, (u64, u64)>> = BTreeMap::new();
+    for example in EXAMPLES {
+        let analysed = &images[example.name];
+        for (k, bound) in analysed.bounds.iter().enumerate() {
+            let name = analysed.graph.name(k);
+            let plain = without_generics(&name);
+            if !ALGORITHM_PREFIXES.iter().any(|p| plain.starts_with(p)) {
+                continue;
+            }
+            let short = plain.trim_start_matches("rodyn::").to_string();
+            let cell = rows
+                .entry(short)
+                .or_default()
+                .entry(example.name)
+                .or_insert((0, 0));
+            cell.0 = cell.0.max(bound.bytes);
+            cell.1 = cell.1.max(analysed.without_panics[k].bytes);
+        }
+    }
+    let mut table = String::from("| function |");
+    for example in EXAMPLES {
+        table.push_str(&format!(" `{}` |", example.name));
+    }
+    table.push_str("\n|---|");
+    table.push_str(&"---:|".repeat(EXAMPLES.len()));
+    table.push('\n');
+    for (name, cells) in rows {
+        table.push_str(&format!("| `{name}` |"));
+        for example in EXAMPLES {
+            match cells.get(example.name) {
+                Some((bytes, without)) => table.push_str(&format!(" {bytes} ({without}) |")),
+                None => table.push_str(" |"),
+            }
+        }
+        table.push('\n');
+    }
+    table
+}
+
+/// A demangled name without its generic arguments (a qualified-self name,
+/// `<A as T>::f`, keeps only `::f`, and no prefix of the table matches it).
+fn without_generics(name: &str) -> String {
+    let mut depth = 0;
+    name.chars()
+        .filter(|&c| {
+            match c {
+                '<' => depth += 1,
+                '>' => depth -= 1,
+                _ => return depth == 0,
+            }
+            false
+        })
+        .collect()
 }
 
 /// The worst case of every image (bytes), for the size table's RAM column.
