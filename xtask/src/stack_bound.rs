@@ -21,7 +21,9 @@
 //!   figure (`-Z emit-stack-sizes`, in a separate build): all agree today.
 //! * **Calls.** `bl` to a function is a call from the full frame; a branch
 //!   (`b`, `b.w`, `beq.w`, `cbz`, …) to another function is a tail call,
-//!   from the depth at that point (zero after the epilogue). Indirect calls
+//!   from the depth at that point (zero after the epilogue); a call into
+//!   the middle of a function fails the check like an unknown move of `sp`
+//!   (none today). Indirect calls
 //!   (`blx rN`, `bx rN`, `ldr pc`, `mov pc`) cannot be followed: they are
 //!   listed per function, with the depth they are made at and the source
 //!   function they were inlined from, never silently dropped. In rodyn they
@@ -395,10 +397,19 @@ fn functions(text: &str, sizes: &HashMap<u64, u64>) -> Vec<Function> {
         let mut calls = Vec::new();
         for (address, target, depth) in reading.calls {
             match containing(target) {
-                Some(callee) => calls.push(Call {
-                    target: callee,
-                    depth,
-                }),
+                Some(callee) => {
+                    if starts[callee] != target {
+                        // Entered past its prologue: its frame from there
+                        // is not what its entry's reading says.
+                        reading.unknown_sp.push(format!(
+                            "{address:#x}: a call into the middle of a function ({target:#x})"
+                        ));
+                    }
+                    calls.push(Call {
+                        target: callee,
+                        depth,
+                    });
+                }
                 // A branch to no function's code: as unknown as an
                 // indirect call.
                 None => reading.indirect.push(IndirectSite { address, depth }),
