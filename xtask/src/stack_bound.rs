@@ -269,9 +269,10 @@ fn immediate(operands: &str) -> Option<u64> {
     }
 }
 
-/// The ARM condition codes, which suffix a mnemonic inside an `IT` block.
-const CONDITIONS: [&str; 15] = [
-    "eq", "ne", "cs", "hs", "cc", "lo", "mi", "pl", "vs", "vc", "hi", "ls", "ge", "lt", "gt",
+/// The ARM condition codes, which suffix a mnemonic inside an `IT` block
+/// (`al`, always, is no condition).
+const CONDITIONS: [&str; 16] = [
+    "eq", "ne", "cs", "hs", "cc", "lo", "mi", "pl", "vs", "vc", "hi", "ls", "ge", "lt", "gt", "le",
 ];
 
 /// Splits a mnemonic into its base and whether it has a condition code
@@ -281,26 +282,22 @@ fn conditional<'a>(mnemonic: &str, bases: &[&'a str]) -> Option<(&'a str, bool)>
         .strip_suffix(".w")
         .or_else(|| mnemonic.strip_suffix(".n"))
         .unwrap_or(mnemonic);
-    bases.iter().find_map(|&base| {
-        let rest = plain.strip_prefix(base)?;
-        if rest.is_empty() {
-            Some((base, false))
-        } else if CONDITIONS.contains(&rest) || rest == "le" || rest == "al" {
-            Some((base, rest != "al"))
-        } else {
-            None
-        }
-    })
+    bases
+        .iter()
+        .find_map(|&base| match plain.strip_prefix(base)? {
+            "" | "al" => Some((base, false)),
+            rest if CONDITIONS.contains(&rest) => Some((base, true)),
+            _ => None,
+        })
 }
 
-/// The target address of a direct branch: `0x1234 <symbol+0x8>`.
+/// The target address of a direct branch: `0x1234 <symbol+0x8>` (after
+/// any register operand, as in `cbz r0, 0x1234 <…>`).
 fn branch_target(operands: &str) -> Option<u64> {
-    let text = operands.split_whitespace().last()?;
-    let text = operands
+    let hex = operands
         .split_whitespace()
-        .find(|w| w.starts_with("0x"))
-        .unwrap_or(text);
-    u64::from_str_radix(text.strip_prefix("0x")?, 16).ok()
+        .find_map(|w| w.strip_prefix("0x"))?;
+    u64::from_str_radix(hex, 16).ok()
 }
 
 /// One instruction of the disassembly.
