@@ -1090,6 +1090,22 @@ pub fn run(args: &[String]) -> Result<()> {
         if let Some((vector, h)) = &image.handler {
             println!("  deepest handler: {vector}: {}", graph.path_text(&h.path));
         }
+        // Every entry, the vectors that share a handler together.
+        let mut handlers: BTreeMap<usize, Vec<&str>> = BTreeMap::new();
+        for (vector, k) in &graph.entries {
+            handlers.entry(*k).or_default().push(vector);
+        }
+        for (k, vectors) in handlers {
+            let listed = match vectors.len() {
+                n if n > 6 => format!("{} and {} more vectors", vectors[..4].join(", "), n - 4),
+                _ => vectors.join(", "),
+            };
+            println!(
+                "  entry {listed} ({}): {} bytes",
+                graph.name(k),
+                bounds[k].bytes
+            );
+        }
         if !image.indirect_sources.is_empty() {
             println!(
                 "  indirect calls (not followed), the deepest at {} bytes, from: {}",
