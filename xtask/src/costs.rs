@@ -10,7 +10,7 @@
 //! floating bases it does not use.
 
 use crate::firmware::{self, Example, EXAMPLES};
-use crate::{setup, shell};
+use crate::{setup, shell, stack_bound};
 use anyhow::{bail, Context, Result};
 use std::collections::BTreeMap;
 use std::fmt::Write;
@@ -20,7 +20,7 @@ use std::process::Command;
 /// The images whose `cost` lines make the cost table, in its order: the
 /// control-level rows (task space, derivatives) have an image of their own
 /// (see `control_cost_probe.rs`).
-const PROBES: [&str; 2] = ["cost_probe", "control_cost_probe"];
+pub const PROBES: [&str; 2] = ["cost_probe", "control_cost_probe"];
 /// The example whose size must not grow.
 const SIZE_GUARDED: &str = "pendulum";
 /// Growth of its flash image accepted without failing (fraction): room for
@@ -143,16 +143,18 @@ pub fn check_sizes() -> Result<()> {
 }
 
 /// One row of the cost probe's output.
-struct Cost {
-    model: String,
-    algorithm: String,
+pub struct Cost {
+    pub model: String,
+    pub algorithm: String,
     min: u64,
     max: u64,
-    stack: String,
+    /// Painted stack bytes: a number, `>16384` (the window overflowed) or
+    /// `-` (not measured).
+    pub stack: String,
 }
 
 /// Reads `cost model=… algorithm=… min=… max=… stack=…` lines.
-fn parse_costs(lines: &[String]) -> Result<Vec<Cost>> {
+pub fn parse_costs(lines: &[String]) -> Result<Vec<Cost>> {
     let mut costs = Vec::new();
     for line in lines.iter().filter(|l| l.starts_with("cost ")) {
         let field = |key: &str| -> Result<&str> {
@@ -189,21 +191,35 @@ pub fn regenerate() -> Result<()> {
         costs.extend(parse_costs(&outcome.lines)?);
     }
 
+    // The static bounds, checked against the painted figures before any
+    // table is written.
+    let images = stack_bound::analyse()?;
+    stack_bound::check_rows(&images, &stack_rows(&costs))?;
+    stack_bound::check_images(&images)?;
+    let image_stack = stack_bound::image_totals(&images)?;
+
     let mut cost_table = String::from(
-        "| model | algorithm | instructions per call (min – max) | stack bytes per call |\n\
-         |---|---|---:|---:|\n",
+        "| model | algorithm | instructions per call (min – max) | stack bytes per call (painted) | worst-case stack bytes (static) |\n\
+         |---|---|---:|---:|---:|\n",
     );
     for c in &costs {
+        let bound = if c.stack == "-" {
+            "-".to_string()
+        } else {
+            stack_bound::row_bound(&images, &c.model, &c.algorithm)?
+                .bytes
+                .to_string()
+        };
         writeln!(
             cost_table,
-            "| {} | {} | {} – {} | {} |",
-            c.model, c.algorithm, c.min, c.max, c.stack
+            "| {} | {} | {} – {} | {} | {} |",
+            c.model, c.algorithm, c.min, c.max, c.stack, bound
         )?;
     }
 
     let mut size_table = String::from(
-        "| example | flash: text + data (bytes) | RAM: data + bss (bytes) | text | data | bss |\n\
-         |---|---:|---:|---:|---:|---:|\n",
+        "| example | flash: text + data (bytes) | RAM: data + bss + worst-case stack (bytes) | text | data | bss | stack (static bound) |\n\
+         |---|---:|---:|---:|---:|---:|---:|\n",
     );
     let mut sizes_file = String::from(
         "# Image sizes (bytes, llvm-size -B) recorded by `cargo xtask costs`.\n\
@@ -211,15 +227,17 @@ pub fn regenerate() -> Result<()> {
     );
     for example in EXAMPLES {
         let s = measure(example)?;
+        let stack = image_stack[example.name];
         writeln!(
             size_table,
-            "| `{}` | {} | {} | {} | {} | {} |",
+            "| `{}` | {} | {} | {} | {} | {} | {} |",
             example.name,
             s.flash(),
-            s.ram(),
+            s.ram() + stack,
             s.text,
             s.data,
-            s.bss
+            s.bss,
+            stack
         )?;
         writeln!(
             sizes_file,
@@ -236,12 +254,30 @@ pub fn regenerate() -> Result<()> {
             .with_context(|| format!("cannot read {}", doc_path.display()))?;
         let text = replace_between(&text, "costs", &cost_table)?;
         let text = replace_between(&text, "sizes", &size_table)?;
+        let text = if doc.starts_with("docs/") {
+            replace_between(
+                &text,
+                "stack",
+                &stack_bound::tables(&images, &stack_rows(&costs))?,
+            )?
+        } else {
+            text
+        };
         std::fs::write(&doc_path, text)?;
         println!("wrote {}", doc_path.display());
     }
     println!("wrote {}", sizes_path().display());
     crate::panic_sites::record()?;
     Ok(())
+}
+
+/// (model, algorithm, painted stack) of each cost line, for
+/// [`stack_bound::check_rows`].
+pub fn stack_rows(costs: &[Cost]) -> Vec<(String, String, String)> {
+    costs
+        .iter()
+        .map(|c| (c.model.clone(), c.algorithm.clone(), c.stack.clone()))
+        .collect()
 }
 
 /// Replaces the text between `<!-- name:begin -->` and `<!-- name:end -->`.

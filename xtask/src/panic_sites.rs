@@ -16,7 +16,7 @@ use std::path::PathBuf;
 use std::process::Command;
 
 /// The symbols a panic enters through (demangled prefixes).
-const PANIC_ENTRIES: [&str; 6] = [
+pub const PANIC_ENTRIES: [&str; 6] = [
     "<core::panicking::",
     "<core::slice::index::",
     "<core::option::unwrap_failed",
