@@ -56,6 +56,10 @@ pub const EXAMPLES: &[Example] = &[
         about: "instructions and stack bytes of the flange's Jacobian, J̇v, an IK step, a task-space tick, the derivatives and an MPC tick",
     },
     Example {
+        name: "contact_cost_probe",
+        about: "instructions and stack bytes of the quadruped's constrained dynamics, impact, rigid-contact step and trunk-control tick",
+    },
+    Example {
         name: "agreement",
         about: "RNEA and ABA on seeded random states, for the host to recompute in f64",
     },

@@ -170,6 +170,36 @@ pub const ROWS: &[(&str, &str, &str, &str)] = &[
         "MPC-tick(iLQR,25)",
         "probe_mpc_tick::{closure_env#1}>",
     ),
+    (
+        "contact_cost_probe",
+        "quadruped-rigid",
+        "constrained-FD(4-feet)",
+        "probe_quadruped_contacts::{closure_env#2}>",
+    ),
+    (
+        "contact_cost_probe",
+        "quadruped-rigid",
+        "impulse(4-feet)",
+        "probe_quadruped_contacts::{closure_env#3}>",
+    ),
+    (
+        "contact_cost_probe",
+        "quadruped-rigid",
+        "rigid-step(4-feet)",
+        "probe_quadruped_contacts::{closure_env#4}>",
+    ),
+    (
+        "contact_cost_probe",
+        "quadruped-rigid",
+        "control-tick(2-feet)",
+        "probe_quadruped_contacts::{closure_env#5}>",
+    ),
+    (
+        "contact_cost_probe",
+        "quadruped-rigid",
+        "control-tick(4-feet)",
+        "probe_quadruped_contacts::{closure_env#6}>",
+    ),
 ];
 
 /// A call from one function to another.

@@ -1,0 +1,141 @@
+//! What rigid contacts cost on a Cortex-M4F: the quadruped's constrained
+//! forward dynamics with four feet held, their plastic impact, one
+//! rigid-contact time step of the plant, and one tick of
+//! `quadruped_rigid`'s trunk controller (inverse dynamics with contacts).
+//!
+//! Measured as `cost_probe` measures (seeded random inputs, instructions
+//! by QEMU `-icount` and SysTick, stack bytes from a painted window), in an
+//! image of its own so that the other probes' rows keep their inlining.
+//! `cargo xtask costs` appends these rows to the cost table.
+#![no_std]
+#![no_main]
+
+use cortex_m_rt::entry;
+use rodyn::algorithm::constrained_dynamics::{
+    constrained_forward_dynamics, impulse_dynamics, ConstraintData, ConstraintSettings, Contact,
+};
+use rodyn::algorithm::frames::frame_placement;
+use rodyn::algorithm::kinematics::forward_kinematics;
+use rodyn::sim::time_stepping::time_step;
+use rodyn::sim::State;
+use rodyn::spatial::Vec3;
+use rodyn::Data;
+use rodyn_firmware::exit::{exit, exit_with, CHECK_FAILED};
+use rodyn_firmware::measure::{probe_scene, InstructionCounter, STATES};
+use rodyn_firmware::models::aibo::MODEL_F32;
+use rodyn_firmware::models::quadruped::{self, RigidContactData, LEGS, NB, NQ, NV};
+use rodyn_firmware::rng::XorShift32;
+use rodyn_scenarios::quadruped_balance::{TrunkController, TrunkControllerData};
+
+/// Model label of the rows.
+const MODEL: &str = "quadruped-rigid";
+
+/// The quadruped with its four feet on the ground: the stance pose with
+/// every joint within ±0.02 rad of it (the feet stay within the contact
+/// margin), rates within ±0.5 rad/s and m/s, a time in the trot's first
+/// 3 s:
+/// * constrained forward dynamics with the four feet held as points
+///   (`constrained_forward_dynamics`, KKT on CRBA and `Lᵀ D L`, Baumgarte
+///   gains);
+/// * the plastic impact of the four feet (`impulse_dynamics`);
+/// * one rigid-contact time step of the plant (`time_step`: 30 sweeps of
+///   projected Gauss–Seidel, friction 0.8, the drives' damping implicit);
+/// * one tick of the trunk controller (`TrunkController::torques`) with
+///   two diagonal feet touching, as in the trot, and with all four, the
+///   most it ever solves.
+fn probe_quadruped_contacts(counter: &InstructionCounter) -> bool {
+    let controller = TrunkController::<f32>::trotting();
+    let stance = controller.gait.initial_state(controller.height);
+    let feet = quadruped::foot_frames::<f32>();
+    let draw = |rng: &mut XorShift32| {
+        let mut q = stance.q;
+        let mut offsets = [0.0f32; NV - 6];
+        rng.fill_symmetric(&mut offsets, 0.02);
+        for (qi, d) in q[7..].iter_mut().zip(offsets) {
+            *qi += d;
+        }
+        let mut v = [0.0f32; NV];
+        rng.fill_symmetric(&mut v, 0.5);
+        let t = rng.uniform(0.0, 3.0);
+        (q, v, t)
+    };
+    // The feet held where they are.
+    let anchored = |data: &mut Data<f32, NB, NV>, q: &[f32; NQ]| {
+        let mut contacts = [Contact::point(feet[0], Vec3::ZERO); LEGS];
+        forward_kinematics(&MODEL_F32, data, q).ok()?;
+        for (contact, foot) in contacts.iter_mut().zip(&feet) {
+            *contact = Contact::point(*foot, frame_placement(data, foot).ok()?.trans);
+        }
+        Some(contacts)
+    };
+    let mut data = Data::new();
+    let mut cdata = ConstraintData::<f32, NV, { 3 * LEGS }>::new();
+    let gains = ConstraintSettings {
+        kp: 25.0,
+        kd: 7.0,
+        damping: 0.0,
+    };
+    let fd = probe_scene(
+        MODEL,
+        "constrained-FD(4-feet)",
+        counter,
+        draw,
+        |(q, v, _)| {
+            anchored(&mut data, q).is_some_and(|contacts| {
+                let tau = [0.0; NV];
+                constrained_forward_dynamics(
+                    &MODEL_F32, &mut data, &mut cdata, q, v, &tau, &contacts, &gains,
+                )
+                .is_ok()
+            })
+        },
+    );
+    let impulse = probe_scene(MODEL, "impulse(4-feet)", counter, draw, |(q, v, _)| {
+        anchored(&mut data, q).is_some_and(|contacts| {
+            impulse_dynamics(&MODEL_F32, &mut data, &mut cdata, q, v, &contacts, 0.0, 0.0).is_ok()
+        })
+    });
+    let ground = quadruped::rigid_ground::<f32>();
+    let damping = controller.joint_damping();
+    let mut contact = RigidContactData::<f32>::new();
+    let step = probe_scene(MODEL, "rigid-step(4-feet)", counter, draw, |(q, v, _)| {
+        let mut state = State::new(*q, *v);
+        let tau = [0.0; NV];
+        time_step(
+            &MODEL_F32,
+            &mut data,
+            &mut contact,
+            &mut state,
+            &tau,
+            &damping,
+            &feet,
+            &ground,
+            1e-3,
+        )
+        .is_ok()
+            && contact.in_contact.iter().all(|c| *c)
+    });
+    let mut control = TrunkControllerData::<f32>::new();
+    let trot = [true, false, false, true];
+    let tick = probe_scene(MODEL, "control-tick(2-feet)", counter, draw, |(q, v, t)| {
+        controller
+            .torques(&MODEL_F32, &mut data, &mut control, *t, q, v, &trot)
+            .is_ok()
+    });
+    let tick_four = probe_scene(MODEL, "control-tick(4-feet)", counter, draw, |(q, v, t)| {
+        controller
+            .torques(&MODEL_F32, &mut data, &mut control, *t, q, v, &[true; LEGS])
+            .is_ok()
+    });
+    fd & impulse & step & tick & tick_four
+}
+
+#[entry]
+fn main() -> ! {
+    let Some(mut peripherals) = cortex_m::Peripherals::take() else {
+        exit(CHECK_FAILED)
+    };
+    let counter = InstructionCounter::start(&mut peripherals.SYST);
+    defmt::println!("contact_cost_probe: f32, {} random states per call", STATES);
+    exit_with(probe_quadruped_contacts(&counter))
+}
