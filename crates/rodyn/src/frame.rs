@@ -26,6 +26,12 @@ impl<S: Scalar, G: Space> Frame<S, G> {
         Self { body, placement }
     }
 
+    /// The frame in scalar type `T` (an f64 frame for an f32 firmware).
+    #[must_use]
+    pub fn cast<T: Scalar>(&self) -> Frame<T, G> {
+        Frame::new(self.body, G::cast_transform(&self.placement))
+    }
+
     /// World frame from the frame (`ᵒMf = ᵒMᵢ ⁱMf`), from the body poses
     /// `o_m_i` that
     /// [`forward_kinematics`](crate::algorithm::kinematics::forward_kinematics)

@@ -95,6 +95,15 @@ impl<S: Scalar> Contact<S> {
         Self::Frame { frame, anchor }
     }
 
+    /// The contact in scalar type `T`.
+    #[must_use]
+    pub fn cast<T: Scalar>(&self) -> Contact<T> {
+        match self {
+            Self::Point { frame, anchor } => Contact::point(frame.cast(), anchor.cast()),
+            Self::Frame { frame, anchor } => Contact::frame(frame.cast(), anchor.cast()),
+        }
+    }
+
     /// Constrained rows: 3 for a point, 6 for a frame.
     #[must_use]
     pub const fn rows(&self) -> usize {
