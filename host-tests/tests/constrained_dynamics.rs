@@ -5,7 +5,8 @@
 //! reference, and bad input.
 
 use rodyn::algorithm::constrained_dynamics::{
-    constrained_forward_dynamics, impulse_dynamics, ConstraintData, ConstraintSettings, Contact,
+    constrained_forward_dynamics, constrained_forward_dynamics_with, impulse_dynamics,
+    ConstraintData, ConstraintMethod, ConstraintSettings, Contact,
 };
 use rodyn::algorithm::energy::kinetic_energy;
 use rodyn::algorithm::forward_dynamics::{Aba, ForwardDynamics};
@@ -43,6 +44,7 @@ fn solo12_fixture() -> Value {
 /// The worst relative differences of q̈ and λ from Pinocchio's over the
 /// states and cases of `states`, and the number of cases.
 fn against_constraint_dynamics<const B: usize, const Q: usize, const V: usize, const C: usize>(
+    method: ConstraintMethod,
     model: &Model<f64, B, Q, V>,
     states: &Value,
 ) -> (f64, f64, usize) {
@@ -61,7 +63,8 @@ fn against_constraint_dynamics<const B: usize, const Q: usize, const V: usize, c
                 kd: case["kd"].as_f64().unwrap(),
                 damping: 0.0,
             };
-            let (ddq, lambda) = constrained_forward_dynamics(
+            let (ddq, lambda) = constrained_forward_dynamics_with(
+                method,
                 model,
                 &mut data,
                 &mut cdata,
@@ -80,28 +83,44 @@ fn against_constraint_dynamics<const B: usize, const Q: usize, const V: usize, c
     (worst_ddq, worst_lambda, cases)
 }
 
+const METHODS: [ConstraintMethod; 2] = [ConstraintMethod::Kkt, ConstraintMethod::ArticulatedBody];
+
 /// q̈ and λ within 1e-9 relative of Pinocchio's on every Solo12 state and
-/// case: points, a frame, a frame with a point, with and without gains.
+/// case (points, a frame, a frame with a point, with and without gains),
+/// by both methods.
 #[test]
 fn matches_pinocchio_constraint_dynamics_solo12() {
-    let (ddq, lambda, cases) =
-        against_constraint_dynamics::<NB, NQ, NV, NC>(&model(), &solo12_fixture()["states"]);
-    eprintln!("Solo12, {cases} cases: q̈ within {ddq:.1e}, λ within {lambda:.1e} of Pinocchio");
-    assert_eq!(cases, 56);
-    assert!(ddq < 1e-9 && lambda < 1e-9, "q̈ {ddq:e}, λ {lambda:e}");
+    for method in METHODS {
+        let (ddq, lambda, cases) = against_constraint_dynamics::<NB, NQ, NV, NC>(
+            method,
+            &model(),
+            &solo12_fixture()["states"],
+        );
+        eprintln!(
+            "Solo12, {method:?}, {cases} cases: q̈ within {ddq:.1e}, λ within {lambda:.1e} of Pinocchio"
+        );
+        assert_eq!(cases, 56);
+        assert!(ddq < 1e-9 && lambda < 1e-9, "q̈ {ddq:e}, λ {lambda:e}");
+    }
 }
 
 /// The same on Talos with its soles held as 6-D frame contacts.
 #[test]
 fn matches_pinocchio_constraint_dynamics_talos() {
     let (model, fixture) = talos();
-    let (ddq, lambda, cases) = against_constraint_dynamics::<TALOS_NB, TALOS_NQ, TALOS_NV, TALOS_NC>(
-        &model,
-        &fixture["contact_states"],
-    );
-    eprintln!("Talos, {cases} cases: q̈ within {ddq:.1e}, λ within {lambda:.1e} of Pinocchio");
-    assert_eq!(cases, 24);
-    assert!(ddq < 1e-9 && lambda < 1e-9, "q̈ {ddq:e}, λ {lambda:e}");
+    for method in METHODS {
+        let (ddq, lambda, cases) = against_constraint_dynamics::<
+            TALOS_NB,
+            TALOS_NQ,
+            TALOS_NV,
+            TALOS_NC,
+        >(method, &model, &fixture["contact_states"]);
+        eprintln!(
+            "Talos, {method:?}, {cases} cases: q̈ within {ddq:.1e}, λ within {lambda:.1e} of Pinocchio"
+        );
+        assert_eq!(cases, 24);
+        assert!(ddq < 1e-9 && lambda < 1e-9, "q̈ {ddq:e}, λ {lambda:e}");
+    }
 }
 
 /// The four feet of one fixture state as point contacts, anchored where
@@ -369,6 +388,22 @@ fn bad_input_and_redundant_contacts() {
         ),
         "{error:?}"
     );
+    let error = constrained_forward_dynamics_with(
+        ConstraintMethod::ArticulatedBody,
+        &model,
+        &mut data,
+        &mut cdata,
+        &q,
+        &v,
+        &tau,
+        &twice,
+        &ConstraintSettings::default(),
+    )
+    .unwrap_err();
+    assert!(
+        matches!(error, Error::RedundantConstraints { contact: 1, .. }),
+        "{error:?}"
+    );
     let damped = ConstraintSettings {
         damping: 1e-6,
         ..ConstraintSettings::default()
@@ -488,8 +523,9 @@ fn impacts_match_pinocchio_and_never_gain_energy() {
     assert_eq!(error, Error::InvalidGain { index: 0 });
 }
 
-/// The f32 solve against Pinocchio's f64 results on every Solo12 and Talos
-/// case: the worst relative differences of q̈ and λ, bounded by what f32
+/// The f32 solves (both methods) against Pinocchio's f64 results on every
+/// Solo12 and Talos case: the worst relative differences of q̈ and λ,
+/// bounded by what f32
 /// rounding gives through CRBA, the factorisation and the Delassus solve
 /// (measured 2.5e-5 and 2.0e-5 on Solo12, 2.0e-5 and 2.1e-5 on Talos;
 /// bound 1e-4).
@@ -515,14 +551,16 @@ fn f32_stays_near_pinocchio() {
                     kd: case["kd"].as_f64().unwrap() as f32,
                     damping: 0.0,
                 };
-                let (ddq, lambda) = constrained_forward_dynamics(
-                    &model, &mut data, &mut cdata, &q, &v, &tau, &contacts, &settings,
-                )
-                .unwrap();
-                let ddq: Vec<f64> = ddq.iter().map(|x| f64::from(*x)).collect();
-                let lambda: Vec<f64> = lambda.iter().map(|x| f64::from(*x)).collect();
-                worst_ddq = worst_ddq.max(relative(&ddq, &numbers(&case["ddq"])));
-                worst_lambda = worst_lambda.max(relative(&lambda, &numbers(&case["lambda"])));
+                for method in METHODS {
+                    let (ddq, lambda) = constrained_forward_dynamics_with(
+                        method, &model, &mut data, &mut cdata, &q, &v, &tau, &contacts, &settings,
+                    )
+                    .unwrap();
+                    let ddq: Vec<f64> = ddq.iter().map(|x| f64::from(*x)).collect();
+                    let lambda: Vec<f64> = lambda.iter().map(|x| f64::from(*x)).collect();
+                    worst_ddq = worst_ddq.max(relative(&ddq, &numbers(&case["ddq"])));
+                    worst_lambda = worst_lambda.max(relative(&lambda, &numbers(&case["lambda"])));
+                }
             }
         }
         (worst_ddq, worst_lambda)

@@ -6,6 +6,10 @@ Regenerate (from the repository root):
     pip install pin example-robot-data
     python3 tools/pinocchio/make_models.py
 
+`make_models.py --print-robot talos_data/robots/talos_reduced.urdf` prints
+where example-robot-data keeps a file (the contact benchmark reads Talos
+from there).
+
 Two kinds of models come out:
 
 * Real robots, reduced from the URDF files that the `example-robot-data`
@@ -362,4 +366,8 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    main()
+    if len(sys.argv) == 3 and sys.argv[1] == "--print-robot":
+        # The path of one example-robot-data file, for the benchmark scripts.
+        print(example_robot_data_dir() / sys.argv[2])
+    else:
+        main()

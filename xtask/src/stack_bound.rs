@@ -179,26 +179,32 @@ pub const ROWS: &[(&str, &str, &str, &str)] = &[
     (
         "contact_cost_probe",
         "quadruped-rigid",
-        "impulse(4-feet)",
+        "constrained-FD-ABM(4-feet)",
         "probe_quadruped_contacts::{closure_env#3}>",
     ),
     (
         "contact_cost_probe",
         "quadruped-rigid",
-        "rigid-step(4-feet)",
+        "impulse(4-feet)",
         "probe_quadruped_contacts::{closure_env#4}>",
     ),
     (
         "contact_cost_probe",
         "quadruped-rigid",
-        "control-tick(2-feet)",
+        "rigid-step(4-feet)",
         "probe_quadruped_contacts::{closure_env#5}>",
     ),
     (
         "contact_cost_probe",
         "quadruped-rigid",
-        "control-tick(4-feet)",
+        "control-tick(2-feet)",
         "probe_quadruped_contacts::{closure_env#6}>",
+    ),
+    (
+        "contact_cost_probe",
+        "quadruped-rigid",
+        "control-tick(4-feet)",
+        "probe_quadruped_contacts::{closure_env#7}>",
     ),
 ];
 

@@ -12,7 +12,8 @@
 
 use cortex_m_rt::entry;
 use rodyn::algorithm::constrained_dynamics::{
-    constrained_forward_dynamics, impulse_dynamics, ConstraintData, ConstraintSettings, Contact,
+    constrained_forward_dynamics, constrained_forward_dynamics_with, impulse_dynamics,
+    ConstraintData, ConstraintMethod, ConstraintSettings, Contact,
 };
 use rodyn::algorithm::frames::frame_placement;
 use rodyn::algorithm::kinematics::forward_kinematics;
@@ -34,9 +35,9 @@ const MODEL: &str = "quadruped-rigid";
 /// every joint within ±0.02 rad of it (the feet stay within the contact
 /// margin), rates within ±0.5 rad/s and m/s, a time in the trot's first
 /// 3 s:
-/// * constrained forward dynamics with the four feet held as points
-///   (`constrained_forward_dynamics`, KKT on CRBA and `Lᵀ D L`, Baumgarte
-///   gains);
+/// * constrained forward dynamics with the four feet held as points, by
+///   the KKT method (CRBA and `Lᵀ D L`) and by the articulated-body method
+///   (ABA and test forces), Baumgarte gains;
 /// * the plastic impact of the four feet (`impulse_dynamics`);
 /// * one rigid-contact time step of the plant (`time_step`: 30 sweeps of
 ///   projected Gauss–Seidel, friction 0.8, the drives' damping implicit);
@@ -90,6 +91,29 @@ fn probe_quadruped_contacts(counter: &InstructionCounter) -> bool {
             })
         },
     );
+    let fd_articulated = probe_scene(
+        MODEL,
+        "constrained-FD-ABM(4-feet)",
+        counter,
+        draw,
+        |(q, v, _)| {
+            anchored(&mut data, q).is_some_and(|contacts| {
+                let tau = [0.0; NV];
+                constrained_forward_dynamics_with(
+                    ConstraintMethod::ArticulatedBody,
+                    &MODEL_F32,
+                    &mut data,
+                    &mut cdata,
+                    q,
+                    v,
+                    &tau,
+                    &contacts,
+                    &gains,
+                )
+                .is_ok()
+            })
+        },
+    );
     let impulse = probe_scene(MODEL, "impulse(4-feet)", counter, draw, |(q, v, _)| {
         anchored(&mut data, q).is_some_and(|contacts| {
             impulse_dynamics(&MODEL_F32, &mut data, &mut cdata, q, v, &contacts, 0.0, 0.0).is_ok()
@@ -127,7 +151,7 @@ fn probe_quadruped_contacts(counter: &InstructionCounter) -> bool {
             .torques(&MODEL_F32, &mut data, &mut control, *t, q, v, &[true; LEGS])
             .is_ok()
     });
-    fd & impulse & step & tick & tick_four
+    fd & fd_articulated & impulse & step & tick & tick_four
 }
 
 #[entry]

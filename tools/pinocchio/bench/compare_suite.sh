@@ -5,7 +5,9 @@
 #   tools/pinocchio/bench/compare_suite.sh SUITE [milliseconds per measurement]
 #
 # SUITE is `kinematics` (joint Jacobians, a frame Jacobian, the centroidal
-# map, CCRBA) or `derivatives` (RNEA and ABA derivatives). Builds
+# map, CCRBA), `derivatives` (RNEA and ABA derivatives) or `contacts`
+# (constrained forward dynamics on Solo12 and Talos; Talos's URDF from
+# example-robot-data). Builds
 # tools/pinocchio/bench/bench_SUITE.cpp with compare.sh's flags (g++ -O3,
 # baseline x86-64) and runs it and rodyn-bench's `SUITE_timing` (release)
 # alternately, twice, printing a markdown table of the medians and the
@@ -16,11 +18,16 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)"
 OUT="$ROOT/target/pinocchio-bench"
 mkdir -p "$OUT"
-SUITE="${1:?usage: compare_suite.sh kinematics|derivatives [ms]}"
+SUITE="${1:?usage: compare_suite.sh kinematics|derivatives|contacts [ms]}"
 MS="${2:-50}"
+EXTRA=()
 case "$SUITE" in
     kinematics | derivatives) ;;
-    *) echo "unknown suite '$SUITE': kinematics or derivatives" >&2; exit 2 ;;
+    contacts)
+        TALOS="$(python3 "$ROOT/tools/pinocchio/make_models.py" --print-robot talos_data/robots/talos_reduced.urdf)"
+        EXTRA=("$TALOS")
+        ;;
+    *) echo "unknown suite '$SUITE': kinematics, derivatives or contacts" >&2; exit 2 ;;
 esac
 
 # PREFIX, CXXFLAGS and LDFLAGS, the same for every Pinocchio program here.
@@ -40,7 +47,7 @@ RODYN="$ROOT/target/release/${SUITE}_timing"
 TMP="$(mktemp -d)"
 for round in 1 2; do
     "$RODYN" --ms "$MS" >>"$TMP/rodyn"
-    "$EXE" "$MS" >>"$TMP/pinocchio"
+    "$EXE" "$MS" "${EXTRA[@]}" >>"$TMP/pinocchio"
 done
 python3 - "$TMP/rodyn" "$TMP/pinocchio" <<'PY'
 import statistics, sys
@@ -54,7 +61,9 @@ rodyn, pin = read(sys.argv[1]), read(sys.argv[2])
 print("| model | algorithm | rodyn (ns) | Pinocchio (ns) | rodyn / Pinocchio |")
 print("|---|---|---:|---:|---:|")
 for key in rodyn:
-    r, p = rodyn[key], pin[key]
+    # rodyn's variants of an algorithm (`name_variant`) share Pinocchio's line.
+    r = rodyn[key]
+    p = pin.get(key) or pin[(key[0], key[1].rsplit("_", 1)[0])]
     print(f"| {key[0]} | {key[1]} | {r:.0f} | {p:.0f} | {r / p:.2f}x |")
 PY
 rm -r "$TMP"

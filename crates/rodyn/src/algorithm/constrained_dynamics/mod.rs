@@ -15,12 +15,19 @@
 //! their anchors; with zero gains the contacts keep their current
 //! acceleration-level constraint only.
 //!
-//! Method: the KKT system by its Schur complement (Featherstone,
-//! *Rigid Body Dynamics Algorithms*, §8.2, and Pinocchio's
-//! `constraintDynamics` solve the same system): CRBA and the branch-aware
-//! `Lᵀ D L` give `M⁻¹`, the Delassus matrix `G = J_c M⁻¹ J_cᵀ` is formed,
-//! `(G + μ I) λ = −(J_c M⁻¹ (τ − h) + J̇_c q̇ + K_p e + K_d J_c q̇)` is solved
-//! by a small Cholesky factorisation, and `q̈ = M⁻¹ (τ − h + J_cᵀ λ)`.
+//! Two methods solve it behind one interface ([`ConstraintMethod`], as
+//! [`forward_dynamics`](super::forward_dynamics) offers ABA and CRBA):
+//!
+//! - [`ConstraintMethod::Kkt`], the default: the KKT system by its Schur
+//!   complement (Featherstone, *Rigid Body Dynamics Algorithms*, §8.2;
+//!   Pinocchio's `constraintDynamics` solves the same system): CRBA and
+//!   the branch-aware `Lᵀ D L` give `M⁻¹`, the Delassus matrix `G = J_c M⁻¹
+//!   J_cᵀ` is formed, `(G + μ I) λ = −(J_c M⁻¹ (τ − h) + J̇_c q̇ + K_p e + K_d
+//!   J_c q̇)` is solved by a small Cholesky factorisation, and `q̈ = M⁻¹ (τ −
+//!   h + J_cᵀ λ)`.
+//! - [`ConstraintMethod::ArticulatedBody`]: ABA, then `G` from unit test
+//!   forces propagated through ABA's articulated inertias (see
+//!   `articulated.rs`), never forming `M`.
 //!
 //! Redundant contacts (a rank-deficient `J_c`, such as four coplanar feet
 //! of a robot whose legs cannot hold them apart) make `G` singular: with
@@ -28,9 +35,12 @@
 //! contact; a damping `μ > 0` regularises it (Tikhonov: the `λ` of least
 //! norm among the near-solutions, the constraint then met to `O(μ)`).
 //!
-//! Cost: one RNEA, one CRBA and factorisation, one `Lᵀ D L` solve per
-//! constrained row, the joint Jacobians, and a dense `m × m` solve for `m`
-//! rows.
+//! Cost of the KKT method: one RNEA, one CRBA and factorisation, one `Lᵀ D
+//! L` solve per constrained row, the joint Jacobians, and a dense `m × m`
+//! solve for `m` rows; of the articulated-body method: one ABA, one
+//! kinematics pass, two sweeps per row and the same dense solve.
+
+mod articulated;
 
 use super::crba::crba;
 use super::dense::{cholesky_in_place, cholesky_solve};
@@ -143,6 +153,17 @@ pub fn constrained_rows<S: Scalar>(contacts: &[Contact<S>]) -> usize {
     contacts.iter().map(Contact::rows).sum()
 }
 
+/// How [`constrained_forward_dynamics_with`] solves the system (see the
+/// [module](self)): the two give the same numbers to rounding.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum ConstraintMethod {
+    /// The KKT system's Schur complement on CRBA and `Lᵀ D L`.
+    #[default]
+    Kkt,
+    /// ABA and test forces through its articulated inertias.
+    ArticulatedBody,
+}
+
 /// The gains of the constraint solve.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ConstraintSettings<S> {
@@ -214,9 +235,9 @@ impl<S: Scalar, const NV: usize, const NC: usize> Default for ConstraintData<S, 
 
 /// `q̈` and the contact forces `λ` of `model` at `(q, v)` under joint
 /// forces `tau` (N m, N), with `contacts` held (see the module
-/// documentation). Returns `(q̈, λ)`, `λ` in `contacts`' order: three
-/// entries per point contact, six per frame contact ([`Contact`] gives
-/// their axes and units).
+/// documentation), by the KKT method. Returns `(q̈, λ)`, `λ` in
+/// `contacts`' order: three entries per point contact, six per frame
+/// contact ([`Contact`] gives their axes and units).
 ///
 /// Leaves valid in `data`: what [`crba`], [`ltdl_factor`] and
 /// [`joint_jacobians`] leave, `o_m_i`, `v` and `a` at `(q, v, 0)`; `tau`
@@ -230,6 +251,34 @@ impl<S: Scalar, const NV: usize, const NC: usize> Default for ConstraintData<S, 
 /// non-finite anchor or contact frame (`Quantity::Contact`, the contact's
 /// index) or input, [`Error::RedundantConstraints`] when the contacts are
 /// redundant and `damping` is zero, and those of the algorithms it runs.
+///
+/// # Example
+///
+/// A 1 kg ball on a free flyer, held at its centre: the contact carries
+/// its weight and it does not move (it could spin: no torque turns it).
+///
+/// ```
+/// use rodyn::algorithm::constrained_dynamics::{
+///     constrained_forward_dynamics, Contact, ConstraintData, ConstraintSettings,
+/// };
+/// use rodyn::joint::FreeFlyer;
+/// use rodyn::prelude::*;
+/// use rodyn::Frame;
+/// const BALL: Model<f64, 1, 7, 6> = Model::new(
+///     [None], [Joint::FreeFlyer(FreeFlyer)], [Transform::IDENTITY],
+///     [Inertia::new(1.0, Vec3::ZERO, Sym3::diagonal(0.004, 0.004, 0.004))],
+///     Motion::new(Vec3::ZERO, Vec3::new(0.0, 0.0, -9.81)),
+/// );
+/// let q = [0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0];
+/// let held = [Contact::point(Frame::new(0, Transform::IDENTITY), Vec3::new(0.0, 0.0, 1.0))];
+/// let (mut data, mut cdata) = (Data::new(), ConstraintData::<f64, 6, 3>::new());
+/// let (ddq, lambda) = constrained_forward_dynamics(
+///     &BALL, &mut data, &mut cdata, &q, &[0.0; 6], &[0.0; 6], &held,
+///     &ConstraintSettings::default(),
+/// )?;
+/// assert!((lambda[2] - 9.81).abs() < 1e-12 && ddq.iter().all(|a| a.abs() < 1e-12));
+/// # Ok::<(), rodyn::Error>(())
+/// ```
 #[allow(clippy::too_many_arguments)]
 pub fn constrained_forward_dynamics<
     'c,
@@ -248,9 +297,78 @@ pub fn constrained_forward_dynamics<
     contacts: &[Contact<S>],
     settings: &ConstraintSettings<S>,
 ) -> Result<(&'c [S; NV], &'c [S])> {
+    constrained_forward_dynamics_with(
+        ConstraintMethod::Kkt,
+        model,
+        data,
+        cdata,
+        q,
+        v,
+        tau,
+        contacts,
+        settings,
+    )
+}
+
+/// [`constrained_forward_dynamics`] by the chosen `method`. With
+/// [`ConstraintMethod::ArticulatedBody`] it leaves in `data` what ABA and
+/// `forward_kinematics_acceleration` at the unconstrained `q̈₀` leave, and
+/// `cdata.jc` and `cdata.jacobians` are not written.
+///
+/// # Errors
+/// As [`constrained_forward_dynamics`]; the articulated-body method
+/// reports a singular articulated inertia where the KKT method reports a
+/// mass matrix that is not positive definite.
+#[allow(clippy::too_many_arguments)]
+pub fn constrained_forward_dynamics_with<
+    'c,
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    const NC: usize,
+>(
+    method: ConstraintMethod,
+    model: &Model<S, NB, NQ, NV, Spatial>,
+    data: &mut Data<S, NB, NV, Spatial>,
+    cdata: &'c mut ConstraintData<S, NV, NC>,
+    q: &[S; NQ],
+    v: &[S; NV],
+    tau: &[S; NV],
+    contacts: &[Contact<S>],
+    settings: &ConstraintSettings<S>,
+) -> Result<(&'c [S; NV], &'c [S])> {
     check_input(contacts, settings, NB, NC)?;
     check_finite(tau, Quantity::Torque)?;
+    match method {
+        ConstraintMethod::Kkt => kkt_solve(model, data, cdata, q, v, tau, contacts, settings)?,
+        ConstraintMethod::ArticulatedBody => {
+            let ddq0 =
+                articulated::form_delassus(model, data, cdata, q, v, tau, contacts, settings)?;
+            factor_delassus(cdata, contacts, settings.damping)?;
+            let rows = cdata.rows;
+            cholesky_solve(&cdata.delassus, rows, &mut cdata.lambda);
+            articulated::accelerations(cdata, &ddq0);
+        }
+    }
+    let rows = cdata.rows;
+    check_result(&cdata.lambda[..rows], Quantity::Contact)?;
+    check_result(&cdata.ddq, Quantity::Acceleration)?;
+    Ok((&cdata.ddq, &cdata.lambda[..rows]))
+}
 
+/// The KKT method into `cdata.ddq` and `cdata.lambda`.
+#[allow(clippy::too_many_arguments)]
+fn kkt_solve<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, const NC: usize>(
+    model: &Model<S, NB, NQ, NV, Spatial>,
+    data: &mut Data<S, NB, NV, Spatial>,
+    cdata: &mut ConstraintData<S, NV, NC>,
+    q: &[S; NQ],
+    v: &[S; NV],
+    tau: &[S; NV],
+    contacts: &[Contact<S>],
+    settings: &ConstraintSettings<S>,
+) -> Result<()> {
     // Unconstrained: M x₀ = τ − h; then J_c, M⁻¹ J_cᵀ and the Delassus
     // matrix's factor.
     let h = *nonlinear_effects(model, data, q, v, None)?;
@@ -277,10 +395,8 @@ pub fn constrained_forward_dynamics<
 
     // q̈ = x₀ + M⁻¹ J_cᵀ λ.
     add_response(cdata, rows, &x0);
-    check_result(&cdata.lambda[..rows], Quantity::Contact)?;
-    check_result(&cdata.ddq, Quantity::Acceleration)?;
     data.tau = h;
-    Ok((&cdata.ddq, &cdata.lambda[..rows]))
+    Ok(())
 }
 
 /// `−K_p e − K_d v_c − a_drift` of one contact, in its rows' order
@@ -429,6 +545,18 @@ pub(crate) fn prepare<
     damping: S,
 ) -> Result<()> {
     form_delassus(model, data, cdata, q, contacts, damping, None)?;
+    factor_delassus(cdata, contacts, S::ZERO)
+}
+
+/// Adds `damping` to the Delassus matrix's diagonal and factors it.
+fn factor_delassus<S: Scalar, const NV: usize, const NC: usize>(
+    cdata: &mut ConstraintData<S, NV, NC>,
+    contacts: &[Contact<S>],
+    damping: S,
+) -> Result<()> {
+    for r in 0..cdata.rows {
+        cdata.delassus[r][r] += damping;
+    }
     cholesky_in_place(&mut cdata.delassus, cdata.rows, PIVOT_TOLERANCE).map_err(|row| {
         Error::RedundantConstraints {
             row,
