@@ -406,21 +406,14 @@ fn ground_contact_refuses_nan_and_missing_bodies() {
 
 /// `Model::normalize` turns a quaternion whose squared norm overflows
 /// (1e200) or underflows (subnormal) into the unit quaternion it stands
-/// for, not into zeros; a zero quaternion is left for the configuration
-/// check, which names the joint.
+/// for, not into zeros; a zero or NaN quaternion is an error naming the
+/// joint, and `q` is left as it was.
 #[test]
 fn normalize_survives_huge_and_subnormal_quaternions() {
-    use rodyn::joint::{ConfigurationError, Joint};
-    const BALL: Model<f64, 1, 7, 6> = Model::new(
-        [None],
-        [Joint::FreeFlyer(rodyn::joint::FreeFlyer)],
-        [Transform::IDENTITY],
-        [Inertia::point_mass(1.0, Vec3::ZERO)],
-        Motion::new(Vec3::ZERO, Vec3::new(0.0, 0.0, -9.81)),
-    );
+    use rodyn::joint::ConfigurationError;
     for scale in [1e200, 1e-310, 1.0] {
         let mut q = [0.1, 0.2, 0.3, 0.0, 0.6 * scale, 0.0, 0.8 * scale];
-        BALL.normalize(&mut q);
+        BALL.normalize(&mut q).unwrap();
         // A subnormal input holds only about 13 significant digits.
         assert!(
             (q[4] - 0.6).abs() < 1e-12 && (q[6] - 0.8).abs() < 1e-12,
@@ -431,18 +424,81 @@ fn normalize_survives_huge_and_subnormal_quaternions() {
         assert_eq!(q[..3], [0.1, 0.2, 0.3]);
     }
     let mut zero = [0.0; 7];
-    BALL.normalize(&mut zero);
-    let mut data = Data::new();
-    let error =
-        rodyn::algorithm::kinematics::forward_kinematics(&BALL, &mut data, &zero).unwrap_err();
+    assert_eq!(
+        BALL.normalize(&mut zero),
+        Err(Error::InvalidConfiguration {
+            joint: 0,
+            reason: ConfigurationError::QuaternionNotUnit { norm: 0.0 }
+        })
+    );
+    assert_eq!(zero, [0.0; 7]);
+    let mut nan = [0.0, 0.0, 0.0, 0.0, 0.0, f64::NAN, 1.0];
+    assert_eq!(
+        BALL.normalize(&mut nan),
+        Err(Error::InvalidConfiguration {
+            joint: 0,
+            reason: ConfigurationError::NonFinite
+        })
+    );
+}
+
+/// One free-floating 1 kg ball.
+const BALL: Model<f64, 1, 7, 6> = Model::new(
+    [None],
+    [rodyn::joint::Joint::FreeFlyer(rodyn::joint::FreeFlyer)],
+    [Transform::IDENTITY],
+    [Inertia::point_mass(1.0, Vec3::ZERO)],
+    Motion::new(Vec3::ZERO, Vec3::new(0.0, 0.0, -9.81)),
+);
+
+/// `Model::integrate` names a non-finite input, reports finite inputs
+/// that overflow, and refuses a zero quaternion it cannot move.
+#[test]
+fn integrate_names_bad_inputs_and_overflow() {
+    use rodyn::joint::ConfigurationError;
+    let q0 = BALL.neutral_configuration();
+    let v = [1.0, 0.0, 0.0, 0.0, 0.0, 1.0];
+    assert!(BALL.integrate(&q0, &v, 1e-3).is_ok());
+    let mut nan_q = q0;
+    nan_q[1] = f64::NAN;
+    let mut nan_v = v;
+    nan_v[4] = f64::NAN;
+    for (result, quantity, index) in [
+        (BALL.integrate(&nan_q, &v, 1e-3), Quantity::Configuration, 1),
+        (BALL.integrate(&q0, &nan_v, 1e-3), Quantity::Velocity, 4),
+        (BALL.integrate(&q0, &v, f64::NAN), Quantity::Time, 0),
+        (BALL.integrate(&q0, &v, f64::INFINITY), Quantity::Time, 0),
+    ] {
+        assert_eq!(result, Err(Error::NonFinite { quantity, index }));
+    }
+    // Finite, but ω × ρ overflows.
+    let error = BALL.integrate(&q0, &[1e200; 6], 1.0).unwrap_err();
     assert!(
         matches!(
             error,
-            Error::InvalidConfiguration {
-                joint: 0,
-                reason: ConfigurationError::QuaternionNotUnit { .. }
+            Error::NonFiniteResult {
+                quantity: Quantity::Configuration,
+                ..
             }
         ),
         "{error:?}"
+    );
+    // A revolute angle that overflows.
+    let model = panda::MODEL_F64;
+    assert_eq!(
+        model.integrate(&Q, &[1e308; NV], 10.0),
+        Err(Error::NonFiniteResult {
+            quantity: Quantity::Configuration,
+            index: 0
+        })
+    );
+    let mut zero = q0;
+    zero[6] = 0.0;
+    assert_eq!(
+        BALL.integrate(&zero, &v, 1e-3),
+        Err(Error::InvalidConfiguration {
+            joint: 0,
+            reason: ConfigurationError::QuaternionNotUnit { norm: 0.0 }
+        })
     );
 }

@@ -129,7 +129,7 @@ fn path_gradient_and_hessian_match_dual_numbers() {
             let qd = q.map(Dual::constant);
             let mut dq = [Dual::constant(0.0); NV];
             dq[c] = Dual::variable(0.0);
-            let qd = dual_model.integrate(&qd, &dq, Dual::constant(1.0));
+            let qd = dual_model.integrate(&qd, &dq, Dual::constant(1.0)).unwrap();
             let vd = v.map(Dual::constant);
             joint_jacobians_time_variation(&dual_model, &mut dual_data, &mut dual_jac, &qd, &vd)
                 .unwrap();
@@ -211,7 +211,7 @@ fn forward<S: Scalar>(
 ) -> [S; NV] {
     let mut data = Box::new(Data::<S, NB, NV>::new());
     let mut forces = DriveForces::new();
-    let q = model.integrate(q, dq, S::ONE);
+    let q = model.integrate(q, dq, S::ONE).unwrap();
     *forward_dynamics_with_drives::<Aba, _, _, _, NB, NQ, NV>(
         model,
         &mut data,
