@@ -502,3 +502,71 @@ fn integrate_names_bad_inputs_and_overflow() {
         })
     );
 }
+
+/// The Thelen muscle's own API: a NaN length is no longer a short path
+/// with a finite 22.65 N, and a 10 m path is no longer 4e236 N.
+#[test]
+fn muscle_state_names_bad_inputs_and_refuses_absurd_lengths() {
+    use rodyn::drive::muscle::MAX_NORMALIZED_FIBER_LENGTH;
+    let muscle = robot::MUSCLES_F64[2];
+    let input = muscle.input;
+    let p = muscle.params;
+    let optimal = p.tendon_slack_length + p.optimal_fiber_length;
+    assert!(muscle.state(optimal, 0.1, 0.5).is_ok());
+    let nan = |quantity| Error::NonFinite {
+        quantity,
+        index: input,
+    };
+    for (result, expected) in [
+        (muscle.state(f64::NAN, 0.0, 0.5), nan(Quantity::PathLength)),
+        (
+            muscle.state(optimal, f64::NAN, 0.5),
+            nan(Quantity::PathVelocity),
+        ),
+        (
+            muscle.state(optimal, f64::INFINITY, 0.5),
+            nan(Quantity::PathVelocity),
+        ),
+        (
+            muscle.state(optimal, 0.0, f64::NAN),
+            nan(Quantity::DriveInput),
+        ),
+    ] {
+        assert_eq!(result, Err(expected));
+    }
+    let too_long = Error::OutOfRange {
+        quantity: Quantity::PathLength,
+        index: input,
+    };
+    // Just inside and just past the range, a 10 m path and one whose
+    // square overflows.
+    let longest = p.tendon_slack_length + MAX_NORMALIZED_FIBER_LENGTH * p.optimal_fiber_length;
+    let inside = muscle.state(longest - 1e-9, 0.0, 1.0).unwrap();
+    assert!(inside.tension.is_finite() && inside.tension < 20.0 * p.max_isometric_force);
+    for length in [longest + 1e-9, 10.0, 1e200, f64::MAX] {
+        assert_eq!(muscle.state(length, 0.0, 0.5), Err(too_long), "{length}");
+        assert_eq!(
+            muscle.tension_partials(length, 0.0, 0.5),
+            Err(too_long),
+            "{length}"
+        );
+    }
+    assert_eq!(
+        muscle.tension_partials(f64::NAN, 0.0, 0.5),
+        Err(nan(Quantity::PathLength))
+    );
+    // A huge but finite velocity stays on the bounded force-velocity curve.
+    let fast = muscle.state(optimal, 1e300, 1.0).unwrap();
+    assert!(fast.tension.is_finite(), "{fast:?}");
+    // Run-time parameters that break the force law: a non-finite tension
+    // is an error on the direct API too.
+    let mut broken = muscle;
+    broken.params.max_contraction_velocity = 0.0;
+    assert_eq!(
+        broken.state(optimal, 0.1, 0.5),
+        Err(Error::NonFiniteResult {
+            quantity: Quantity::ExternalForce,
+            index: input
+        })
+    );
+}

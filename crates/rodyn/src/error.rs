@@ -33,6 +33,11 @@ pub enum Quantity {
     /// A derivative of the dynamics (a result; `index` is `row · NV +
     /// column` of its matrix).
     Derivative,
+    /// The length of a muscle's path (`index` is the muscle's input).
+    PathLength,
+    /// The lengthening velocity of a muscle's path (`index` is the
+    /// muscle's input).
+    PathVelocity,
 }
 
 /// What is wrong with a model parameter.
@@ -186,6 +191,16 @@ pub enum Error {
         /// broke down (three rows per point contact).
         row: usize,
     },
+    /// A finite input outside the range the model describes, such as a
+    /// path that stretches a muscle fibre past
+    /// [`MAX_NORMALIZED_FIBER_LENGTH`](crate::drive::muscle::MAX_NORMALIZED_FIBER_LENGTH)
+    /// optimal lengths, where the force law would give an absurd force.
+    OutOfRange {
+        /// Which input.
+        quantity: Quantity,
+        /// Its index (for a muscle, the muscle's input).
+        index: usize,
+    },
 }
 
 impl fmt::Display for Error {
@@ -258,6 +273,10 @@ impl fmt::Display for Error {
                  give a damping or drop a contact",
                 row / 3
             ),
+            Self::OutOfRange { quantity, index } => write!(
+                f,
+                "{quantity:?} at index {index} is outside the range the model describes"
+            ),
         }
     }
 }
@@ -327,6 +346,9 @@ impl defmt::Format for Error {
             Self::InvalidGain { index } => defmt::write!(f, "invalid gain {}", index),
             Self::RedundantConstraints { row } => {
                 defmt::write!(f, "redundant contacts at row {}", row)
+            }
+            Self::OutOfRange { quantity, index } => {
+                defmt::write!(f, "{} at index {} out of range", quantity, index)
             }
         }
     }

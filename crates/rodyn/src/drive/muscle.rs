@@ -49,6 +49,14 @@
 //!   the negative force of the hyperbola, and the lengthening branch is
 //!   bounded by `F̃_len`;
 //! * activation is clamped to `[0, 1]` where it enters the force.
+//!
+//! **Range.** The curves were fitted near the optimal length; past it the
+//! passive force grows as `exp(kᴾᴱ l̃/ε₀ᴹ)` (15 `F₀ᴹ` at `l̃ = 2` with
+//! Thelen's shape, 4e236 N for a 10 m path). A fibre longer than
+//! [`MAX_NORMALIZED_FIBER_LENGTH`] `l₀ᴹ` is reported
+//! ([`Error::OutOfRange`] naming the path length) instead of such a
+//! force, as are a non-finite length, velocity or activation and a
+//! tension that comes out non-finite.
 
 use crate::drive::derivatives::{add_tension_derivatives, DriveDerivativeState, DriveDerivatives};
 use crate::drive::geometry::PointGeometry;
@@ -61,6 +69,11 @@ use crate::Scalar;
 pub const MIN_PENNATION_COSINE: f64 = 0.1;
 /// Shortest fibre, as a fraction of the optimal fibre length.
 pub const MIN_FIBER_LENGTH_FRACTION: f64 = 0.01;
+/// Longest fibre the force law is evaluated at, in optimal fibre lengths
+/// (`l̃`): beyond it the passive force is an extrapolation growing
+/// exponentially (15 `F₀ᴹ` at 2 with Thelen's shape), so a longer fibre is
+/// an error rather than a force.
+pub const MAX_NORMALIZED_FIBER_LENGTH: f64 = 2.0;
 
 /// The parameters of a Thelen (2003) muscle; see the [module](crate::drive::muscle) table.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -369,11 +382,18 @@ impl<S: Scalar, G: PointGeometry, const K: usize> ThelenMuscle<S, G, K> {
     /// lengthening at `L̇`: the tension of [`state`](Self::state),
     /// differentiated through the pennation, the force-length curves and
     /// the force-velocity curve (one-sided at its kinks).
-    #[must_use]
-    pub fn tension_partials(&self, length: S, lengthening_velocity: S, activation: S) -> (S, S, S) {
+    ///
+    /// # Errors
+    /// As [`state`](Self::state).
+    pub fn tension_partials(
+        &self,
+        length: S,
+        lengthening_velocity: S,
+        activation: S,
+    ) -> Result<(S, S, S)> {
         let p = &self.params;
         let l_opt = p.optimal_fiber_length;
-        let g = self.fiber_geometry(length, lengthening_velocity);
+        let g = self.checked_geometry(length, lengthening_velocity, activation)?;
         let a = activation.max(S::ZERO).min(S::ONE);
         let scale = self.velocity_scale(a);
         let (l_norm, v_norm) = (g.fiber_length / l_opt, g.fiber_velocity / scale);
@@ -395,13 +415,77 @@ impl<S: Scalar, G: PointGeometry, const K: usize> ThelenMuscle<S, G, K> {
         let dforce_dl = a * (df_l * f_v * dl_norm + f_l * df_v * dv_norm) + df_pe * dl_norm;
         let tension_dl = f0 * (g.dcos_dl * fiber_force + g.cos_pennation * dforce_dl);
         let tension_dv = f0 * g.cos_pennation * a * f_l * df_v * g.dvelocity_dv / scale;
-        (tension, tension_dl, tension_dv)
+        self.check_tension(&[tension, tension_dl, tension_dv])?;
+        Ok((tension, tension_dl, tension_dv))
+    }
+
+    /// [`fiber_geometry`](Self::fiber_geometry) for finite inputs, and a
+    /// fibre within [`MAX_NORMALIZED_FIBER_LENGTH`]. A NaN length would
+    /// otherwise read as a path too short (the fibre held at its shortest,
+    /// a finite force) and a NaN activation as zero.
+    fn checked_geometry(
+        &self,
+        length: S,
+        lengthening_velocity: S,
+        activation: S,
+    ) -> Result<FiberGeometry<S>> {
+        let named = |quantity, ok: bool| {
+            if ok {
+                Ok(())
+            } else {
+                Err(Error::NonFinite {
+                    quantity,
+                    index: self.input,
+                })
+            }
+        };
+        named(Quantity::PathLength, length.is_finite())?;
+        named(Quantity::PathVelocity, lengthening_velocity.is_finite())?;
+        check_activation(activation, self.input)?;
+        let g = self.fiber_geometry(length, lengthening_velocity);
+        let l_opt = self.params.optimal_fiber_length;
+        // Only for a valid l₀ᴹ: a zero or NaN one is a parameter problem,
+        // which the non-finite tension reports.
+        if l_opt > S::ZERO && g.fiber_length > S::from_f64(MAX_NORMALIZED_FIBER_LENGTH) * l_opt {
+            return Err(Error::OutOfRange {
+                quantity: Quantity::PathLength,
+                index: self.input,
+            });
+        }
+        Ok(g)
+    }
+
+    /// Finite tensions (and slopes), or the error naming the muscle's input.
+    fn check_tension(&self, values: &[S]) -> Result<()> {
+        if values.iter().all(|x| x.is_finite()) {
+            Ok(())
+        } else {
+            Err(Error::NonFiniteResult {
+                quantity: Quantity::ExternalForce,
+                index: self.input,
+            })
+        }
     }
 
     /// Fibre state and tension for a path of length `L` (m) lengthening at
-    /// `L̇` (m/s), at activation `a`.
-    #[must_use]
-    pub fn state(&self, length: S, lengthening_velocity: S, activation: S) -> MuscleState<S> {
+    /// `L̇` (m/s), at activation `a` (clamped to `[0, 1]`).
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`] naming a non-finite `L`
+    /// ([`Quantity::PathLength`]), `L̇` ([`Quantity::PathVelocity`]) or `a`
+    /// ([`Quantity::DriveInput`]); [`Error::OutOfRange`] with
+    /// [`Quantity::PathLength`] for a fibre longer than
+    /// [`MAX_NORMALIZED_FIBER_LENGTH`] optimal lengths;
+    /// [`Error::NonFiniteResult`] with [`Quantity::ExternalForce`] for a
+    /// tension that comes out non-finite (parameters that break the force
+    /// law, see [`ThelenParameters::validate`]). Each names the muscle by
+    /// its input index.
+    pub fn state(
+        &self,
+        length: S,
+        lengthening_velocity: S,
+        activation: S,
+    ) -> Result<MuscleState<S>> {
         let p = &self.params;
         let l_opt = p.optimal_fiber_length;
         let FiberGeometry {
@@ -409,7 +493,7 @@ impl<S: Scalar, G: PointGeometry, const K: usize> ThelenMuscle<S, G, K> {
             cos_pennation,
             fiber_velocity,
             ..
-        } = self.fiber_geometry(length, lengthening_velocity);
+        } = self.checked_geometry(length, lengthening_velocity, activation)?;
         let clamped = activation.max(S::ZERO).min(S::ONE);
         let a_in_range = activation > S::ZERO && activation < S::ONE;
         let velocity_scale = self.velocity_scale(clamped);
@@ -427,7 +511,8 @@ impl<S: Scalar, G: PointGeometry, const K: usize> ThelenMuscle<S, G, K> {
         } else {
             S::ZERO
         };
-        MuscleState {
+        self.check_tension(&[tension, tension_per_activation])?;
+        Ok(MuscleState {
             fiber_length,
             fiber_velocity,
             cos_pennation,
@@ -437,12 +522,14 @@ impl<S: Scalar, G: PointGeometry, const K: usize> ThelenMuscle<S, G, K> {
             force_velocity: f_v,
             tension,
             tension_per_activation,
-        }
+        })
     }
 
     /// The fibre state on a path whose kinematics are known.
-    #[must_use]
-    pub fn state_on(&self, kin: &PathKinematics<S, G, K>, activation: S) -> MuscleState<S> {
+    ///
+    /// # Errors
+    /// As [`state`](Self::state).
+    pub fn state_on(&self, kin: &PathKinematics<S, G, K>, activation: S) -> Result<MuscleState<S>> {
         self.state(kin.length, kin.lengthening_velocity, activation)
     }
 
@@ -479,19 +566,12 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
         out: &mut DriveForces<S, G, NB, NV>,
     ) -> Result<()> {
         let activation = read_input(w, self.input)?;
-        check_activation(activation, self.input)?;
         // Parameters are not validated here (a per-call cost of about 40 %
         // of the muscle robot's forward dynamics on the Cortex-M4): one
-        // that breaks the force law makes the tension non-finite, which is
-        // reported; `ThelenParameters::validate` names the field.
+        // that breaks the force law makes the tension non-finite, which
+        // `state` reports; `ThelenParameters::validate` names the field.
         let kin = self.path.kinematics(state.data)?;
-        let tension = self.state_on(&kin, activation).tension;
-        if !tension.is_finite() {
-            return Err(Error::NonFiniteResult {
-                quantity: Quantity::ExternalForce,
-                index: self.input,
-            });
-        }
+        let tension = self.state_on(&kin, activation)?.tension;
         self.path
             .add_tension(&kin, tension, state.data, &mut out.f_ext)
     }
@@ -506,9 +586,8 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
         if input != self.input {
             return Ok(());
         }
-        check_activation(activation, self.input)?;
         let kin = self.path.kinematics(state.data)?;
-        let slope = self.state_on(&kin, activation).tension_per_activation;
+        let slope = self.state_on(&kin, activation)?.tension_per_activation;
         self.path
             .add_tension(&kin, slope, state.data, &mut out.f_ext)
     }
@@ -519,15 +598,8 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
         out: &mut DriveDerivatives<S, NV>,
     ) -> Result<()> {
         let activation = read_input(w, self.input)?;
-        check_activation(activation, self.input)?;
         let path = self.path.length_derivatives(state)?;
-        let tension = self.tension_partials(path.length, path.lengthening_velocity, activation);
-        if !(tension.0.is_finite() && tension.1.is_finite() && tension.2.is_finite()) {
-            return Err(Error::NonFiniteResult {
-                quantity: Quantity::ExternalForce,
-                index: self.input,
-            });
-        }
+        let tension = self.tension_partials(path.length, path.lengthening_velocity, activation)?;
         add_tension_derivatives(&path, state.v, tension, out);
         Ok(())
     }
