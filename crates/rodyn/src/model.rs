@@ -618,8 +618,16 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
     /// [`ConfigurationError::QuaternionNotUnit`]: crate::error::ConfigurationError::QuaternionNotUnit
     pub fn normalize(&self, q: &mut [S; NQ]) -> Result<()> {
         let mut out = *q;
-        self.normalize_unvalidated(&mut out);
-        self.check_configuration(&out)?;
+        // Joint by joint rather than through `check_configuration`, which
+        // every algorithm inlines: sharing it changed their code on the MCU.
+        for i in 0..NB {
+            let iq = self.topology.idx_q[i];
+            let joint_q = &mut out[iq..iq + self.topology.nq[i]];
+            self.joints[i].normalize(joint_q);
+            self.joints[i]
+                .check_configuration(joint_q)
+                .map_err(|reason| Error::InvalidConfiguration { joint: i, reason })?;
+        }
         *q = out;
         Ok(())
     }

@@ -342,7 +342,19 @@ impl<S: Scalar, G: PointGeometry, const K: usize> ThelenMuscle<S, G, K> {
             .max(S::ZERO)
             .sqrt();
         let projection = length - p.tendon_slack_length;
-        if projection > min_projection {
+        // Tested this way round so that a NaN length (an overflowed path)
+        // gives a NaN force, not the shortest fibre's finite one.
+        if projection <= min_projection {
+            FiberGeometry {
+                fiber_length: min_length,
+                cos_pennation: min_projection / min_length,
+                fiber_velocity: S::ZERO,
+                dlength_dl: S::ZERO,
+                dcos_dl: S::ZERO,
+                dvelocity_dl: S::ZERO,
+                dvelocity_dv: S::ZERO,
+            }
+        } else {
             let l = (projection * projection + height * height).sqrt();
             let cos = projection / l;
             // d cos/dL = h² / l³.
@@ -355,16 +367,6 @@ impl<S: Scalar, G: PointGeometry, const K: usize> ThelenMuscle<S, G, K> {
                 dcos_dl: dcos,
                 dvelocity_dl: lengthening_velocity * dcos,
                 dvelocity_dv: cos,
-            }
-        } else {
-            FiberGeometry {
-                fiber_length: min_length,
-                cos_pennation: min_projection / min_length,
-                fiber_velocity: S::ZERO,
-                dlength_dl: S::ZERO,
-                dcos_dl: S::ZERO,
-                dvelocity_dl: S::ZERO,
-                dvelocity_dv: S::ZERO,
             }
         }
     }
@@ -391,9 +393,24 @@ impl<S: Scalar, G: PointGeometry, const K: usize> ThelenMuscle<S, G, K> {
         lengthening_velocity: S,
         activation: S,
     ) -> Result<(S, S, S)> {
+        self.check_inputs(length, lengthening_velocity, activation)?;
+        let (partials, fiber_length) =
+            self.tension_partials_unvalidated(length, lengthening_velocity, activation);
+        self.check_output(fiber_length, &[partials.0, partials.1, partials.2])?;
+        Ok(partials)
+    }
+
+    /// [`tension_partials`](Self::tension_partials) without the checks,
+    /// with the fibre length for [`check_output`](Self::check_output).
+    fn tension_partials_unvalidated(
+        &self,
+        length: S,
+        lengthening_velocity: S,
+        activation: S,
+    ) -> ((S, S, S), S) {
         let p = &self.params;
         let l_opt = p.optimal_fiber_length;
-        let g = self.checked_geometry(length, lengthening_velocity, activation)?;
+        let g = self.fiber_geometry(length, lengthening_velocity);
         let a = activation.max(S::ZERO).min(S::ONE);
         let scale = self.velocity_scale(a);
         let (l_norm, v_norm) = (g.fiber_length / l_opt, g.fiber_velocity / scale);
@@ -415,20 +432,13 @@ impl<S: Scalar, G: PointGeometry, const K: usize> ThelenMuscle<S, G, K> {
         let dforce_dl = a * (df_l * f_v * dl_norm + f_l * df_v * dv_norm) + df_pe * dl_norm;
         let tension_dl = f0 * (g.dcos_dl * fiber_force + g.cos_pennation * dforce_dl);
         let tension_dv = f0 * g.cos_pennation * a * f_l * df_v * g.dvelocity_dv / scale;
-        self.check_tension(&[tension, tension_dl, tension_dv])?;
-        Ok((tension, tension_dl, tension_dv))
+        ((tension, tension_dl, tension_dv), g.fiber_length)
     }
 
-    /// [`fiber_geometry`](Self::fiber_geometry) for finite inputs, and a
-    /// fibre within [`MAX_NORMALIZED_FIBER_LENGTH`]. A NaN length would
-    /// otherwise read as a path too short (the fibre held at its shortest,
-    /// a finite force) and a NaN activation as zero.
-    fn checked_geometry(
-        &self,
-        length: S,
-        lengthening_velocity: S,
-        activation: S,
-    ) -> Result<FiberGeometry<S>> {
+    /// Finite inputs: a NaN length would otherwise read as a path too
+    /// short (the fibre held at its shortest, a finite force) and a NaN
+    /// activation as zero.
+    fn check_inputs(&self, length: S, lengthening_velocity: S, activation: S) -> Result<()> {
         let named = |quantity, ok: bool| {
             if ok {
                 Ok(())
@@ -441,22 +451,23 @@ impl<S: Scalar, G: PointGeometry, const K: usize> ThelenMuscle<S, G, K> {
         };
         named(Quantity::PathLength, length.is_finite())?;
         named(Quantity::PathVelocity, lengthening_velocity.is_finite())?;
-        check_activation(activation, self.input)?;
-        let g = self.fiber_geometry(length, lengthening_velocity);
+        check_activation(activation, self.input)
+    }
+
+    /// A fibre within [`MAX_NORMALIZED_FIBER_LENGTH`] and finite tensions
+    /// (or slopes); the errors name the muscle's input. Checked after the
+    /// force law, so that the hot path (`add_forces`) pays a few
+    /// comparisons and no second pass.
+    fn check_output(&self, fiber_length: S, values: &[S]) -> Result<()> {
         let l_opt = self.params.optimal_fiber_length;
         // Only for a valid l₀ᴹ: a zero or NaN one is a parameter problem,
         // which the non-finite tension reports.
-        if l_opt > S::ZERO && g.fiber_length > S::from_f64(MAX_NORMALIZED_FIBER_LENGTH) * l_opt {
+        if l_opt > S::ZERO && fiber_length > S::from_f64(MAX_NORMALIZED_FIBER_LENGTH) * l_opt {
             return Err(Error::OutOfRange {
                 quantity: Quantity::PathLength,
                 index: self.input,
             });
         }
-        Ok(g)
-    }
-
-    /// Finite tensions (and slopes), or the error naming the muscle's input.
-    fn check_tension(&self, values: &[S]) -> Result<()> {
         if values.iter().all(|x| x.is_finite()) {
             Ok(())
         } else {
@@ -486,6 +497,22 @@ impl<S: Scalar, G: PointGeometry, const K: usize> ThelenMuscle<S, G, K> {
         lengthening_velocity: S,
         activation: S,
     ) -> Result<MuscleState<S>> {
+        self.check_inputs(length, lengthening_velocity, activation)?;
+        let state = self.state_unvalidated(length, lengthening_velocity, activation);
+        self.check_output(
+            state.fiber_length,
+            &[state.tension, state.tension_per_activation],
+        )?;
+        Ok(state)
+    }
+
+    /// [`state`](Self::state) without the checks.
+    fn state_unvalidated(
+        &self,
+        length: S,
+        lengthening_velocity: S,
+        activation: S,
+    ) -> MuscleState<S> {
         let p = &self.params;
         let l_opt = p.optimal_fiber_length;
         let FiberGeometry {
@@ -493,7 +520,7 @@ impl<S: Scalar, G: PointGeometry, const K: usize> ThelenMuscle<S, G, K> {
             cos_pennation,
             fiber_velocity,
             ..
-        } = self.checked_geometry(length, lengthening_velocity, activation)?;
+        } = self.fiber_geometry(length, lengthening_velocity);
         let clamped = activation.max(S::ZERO).min(S::ONE);
         let a_in_range = activation > S::ZERO && activation < S::ONE;
         let velocity_scale = self.velocity_scale(clamped);
@@ -511,8 +538,7 @@ impl<S: Scalar, G: PointGeometry, const K: usize> ThelenMuscle<S, G, K> {
         } else {
             S::ZERO
         };
-        self.check_tension(&[tension, tension_per_activation])?;
-        Ok(MuscleState {
+        MuscleState {
             fiber_length,
             fiber_velocity,
             cos_pennation,
@@ -522,7 +548,7 @@ impl<S: Scalar, G: PointGeometry, const K: usize> ThelenMuscle<S, G, K> {
             force_velocity: f_v,
             tension,
             tension_per_activation,
-        })
+        }
     }
 
     /// The fibre state on a path whose kinematics are known.
@@ -566,12 +592,17 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
         out: &mut DriveForces<S, G, NB, NV>,
     ) -> Result<()> {
         let activation = read_input(w, self.input)?;
+        check_activation(activation, self.input)?;
         // Parameters are not validated here (a per-call cost of about 40 %
         // of the muscle robot's forward dynamics on the Cortex-M4): one
-        // that breaks the force law makes the tension non-finite, which
-        // `state` reports; `ThelenParameters::validate` names the field.
+        // that breaks the force law makes the tension non-finite, which is
+        // reported; `ThelenParameters::validate` names the field. The path
+        // comes from a finite state: only an overflow makes it non-finite,
+        // and then the tension too.
         let kin = self.path.kinematics(state.data)?;
-        let tension = self.state_on(&kin, activation)?.tension;
+        let muscle = self.state_unvalidated(kin.length, kin.lengthening_velocity, activation);
+        self.check_output(muscle.fiber_length, &[muscle.tension])?;
+        let tension = muscle.tension;
         self.path
             .add_tension(&kin, tension, state.data, &mut out.f_ext)
     }
@@ -586,8 +617,11 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
         if input != self.input {
             return Ok(());
         }
+        check_activation(activation, self.input)?;
         let kin = self.path.kinematics(state.data)?;
-        let slope = self.state_on(&kin, activation)?.tension_per_activation;
+        let muscle = self.state_unvalidated(kin.length, kin.lengthening_velocity, activation);
+        self.check_output(muscle.fiber_length, &[muscle.tension_per_activation])?;
+        let slope = muscle.tension_per_activation;
         self.path
             .add_tension(&kin, slope, state.data, &mut out.f_ext)
     }
@@ -598,8 +632,11 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
         out: &mut DriveDerivatives<S, NV>,
     ) -> Result<()> {
         let activation = read_input(w, self.input)?;
+        check_activation(activation, self.input)?;
         let path = self.path.length_derivatives(state)?;
-        let tension = self.tension_partials(path.length, path.lengthening_velocity, activation)?;
+        let (tension, fiber_length) =
+            self.tension_partials_unvalidated(path.length, path.lengthening_velocity, activation);
+        self.check_output(fiber_length, &[tension.0, tension.1, tension.2])?;
         add_tension_derivatives(&path, state.v, tension, out);
         Ok(())
     }
