@@ -98,6 +98,21 @@ fn huge_f32_velocities_and_torques_are_errors() {
         "aba f32",
         Aba::forward_dynamics(&model, &mut data, &q, &v, &zero, None).copied(),
     );
+    assert_err(
+        "crba fd f32",
+        Crba::forward_dynamics(&model, &mut data, &q, &v, &zero, None).copied(),
+    );
+    assert_err(
+        "nle f32",
+        nonlinear_effects(&model, &mut data, &q, &v, None).copied(),
+    );
+    assert_eq!(
+        kinetic_energy(&model, &mut data, &q, &v),
+        Err(Error::NonFiniteResult {
+            quantity: Quantity::Energy,
+            index: 0
+        })
+    );
     let tau = [1e37_f32; NV];
     assert_err(
         "aba f32 torque",
@@ -155,6 +170,13 @@ fn setters_name_what_is_wrong() {
         model.set_inertia(2, huge_off),
         Err(invalid(ModelProblem::InvalidInertia))
     );
+    // A mass of 1e300 kg: m² overflows in ABA's U Uᵀ; the setter names
+    // the body instead of ABA reporting a singular joint 0.
+    let heavy = Inertia::new(1e300, base.com, base.rot_inertia);
+    assert_eq!(
+        model.set_inertia(2, heavy),
+        Err(invalid(ModelProblem::Overflow))
+    );
     assert_eq!(
         *model.inertia(2),
         base,
@@ -186,6 +208,46 @@ fn setters_name_what_is_wrong() {
         rnea(&model, &mut data, &Q, &[1.0; NV], &[0.0; NV], None).copied(),
     );
     assert!(matches!(error, Error::NonFiniteResult { .. }), "{error:?}");
+    let v = [1.0; NV];
+    let zero = [0.0; NV];
+    for (what, result) in [
+        (
+            "kinetic energy far",
+            kinetic_energy(&model, &mut data, &Q, &v).map(|e| vec![e]),
+        ),
+        (
+            "crba fd far",
+            Crba::forward_dynamics(&model, &mut data, &Q, &v, &zero, None).map(|a| a.to_vec()),
+        ),
+        (
+            "nle far",
+            nonlinear_effects(&model, &mut data, &Q, &v, None).map(|t| t.to_vec()),
+        ),
+        (
+            "crba far",
+            crba(&model, &mut data, &Q).map(|m| m.iter().flatten().copied().collect()),
+        ),
+    ] {
+        let error = assert_err(what, result);
+        assert!(
+            matches!(error, Error::NonFiniteResult { .. }),
+            "{what}: {error:?}"
+        );
+    }
+    // ABA's articulated inertia overflows. An error, but still named as a
+    // singular joint with a NaN pivot: naming it a non-finite result in
+    // `check_pivot` or `aba` cost a firmware image a panic call site.
+    let error = assert_err(
+        "aba far",
+        Aba::forward_dynamics(&model, &mut data, &Q, &v, &zero, None).copied(),
+    );
+    assert!(
+        matches!(
+            error,
+            Error::NonFiniteResult { .. } | Error::SingularArticulatedInertia { .. }
+        ),
+        "{error:?}"
+    );
     // The potential energy stays finite there (m g z of about 1e301 J):
     // whatever is returned is finite or an error.
     match potential_energy(&model, &mut data, &Q) {
@@ -331,9 +393,43 @@ fn ground_contact_refuses_nan_and_missing_bodies() {
         friction: 0.8,
         slip_scale: 0.01,
     };
-    // A NaN height is not "no contact".
-    let force = good.force_at(&Vec3::new(0.0, 0.0, f64::NAN), &Vec3::ZERO);
-    assert!(!force.z.is_finite(), "NaN height gave {force:?}");
+    // A NaN height is not "no contact"; a NaN slip velocity is named too.
+    assert_eq!(
+        good.force_at(&Vec3::new(0.0, 0.0, f64::NAN), &Vec3::ZERO),
+        Err(Error::NonFinite {
+            quantity: Quantity::ContactPoint,
+            index: 2
+        })
+    );
+    assert_eq!(
+        good.force_at(&Vec3::new(0.0, 0.0, -0.01), &Vec3::new(f64::NAN, 0.0, 0.0)),
+        Err(Error::NonFinite {
+            quantity: Quantity::ContactPoint,
+            index: 3
+        })
+    );
+    let nan_stiffness = GroundContact {
+        normal: NormalLaw::LinearSpringDamper {
+            stiffness: f64::NAN,
+            damping: 50.0,
+        },
+        ..good
+    };
+    assert_eq!(
+        nan_stiffness.force_at(&Vec3::new(0.0, 0.0, -0.01), &Vec3::ZERO),
+        Err(Error::NonFinite {
+            quantity: Quantity::Contact,
+            index: 0
+        })
+    );
+    // Finite, but k δ overflows.
+    assert_eq!(
+        good.force_at(&Vec3::new(0.0, 0.0, -1e305), &Vec3::ZERO),
+        Err(Error::NonFiniteResult {
+            quantity: Quantity::Contact,
+            index: 0
+        })
+    );
 
     let on_body = |body| [Endpoint::on_body(body, Vec3::new(0.0, 0.0, -2.0))];
     let v = [0.0; NV];
@@ -567,6 +663,90 @@ fn muscle_state_names_bad_inputs_and_refuses_absurd_lengths() {
         Err(Error::NonFiniteResult {
             quantity: Quantity::ExternalForce,
             index: input
+        })
+    );
+}
+
+/// Gravity: a NaN is refused by the setter; a finite but huge one is
+/// reported by the algorithms as an overflow.
+#[test]
+fn gravity_setter_and_huge_gravity() {
+    let mut model = panda::MODEL_F64;
+    let mut data = Data::new();
+    let nan = Motion::new(Vec3::ZERO, Vec3::new(0.0, 0.0, f64::NAN));
+    assert_eq!(
+        model.set_gravity(nan),
+        Err(Error::NonFinite {
+            quantity: Quantity::ModelParameter,
+            index: 0
+        })
+    );
+    model
+        .set_gravity(Motion::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1e308)))
+        .unwrap();
+    let (v, zero) = ([1.0; NV], [0.0; NV]);
+    for (what, result) in [
+        (
+            "rnea",
+            rnea(&model, &mut data, &Q, &v, &zero, None).map(|t| t.to_vec()),
+        ),
+        (
+            "aba",
+            Aba::forward_dynamics(&model, &mut data, &Q, &v, &zero, None).map(|a| a.to_vec()),
+        ),
+        (
+            "crba fd",
+            Crba::forward_dynamics(&model, &mut data, &Q, &v, &zero, None).map(|a| a.to_vec()),
+        ),
+        (
+            "potential energy",
+            potential_energy(&model, &mut data, &Q).map(|e| vec![e]),
+        ),
+    ] {
+        let error = assert_err(what, no_panic(what, || result));
+        assert!(
+            matches!(error, Error::NonFiniteResult { .. }),
+            "{what}: {error:?}"
+        );
+    }
+}
+
+/// Ground contact: a NaN joint velocity and a NaN damping are named.
+#[test]
+fn ground_contact_names_nan_velocity_and_damping() {
+    let model = panda::MODEL_F64;
+    let mut data = Data::new();
+    let mut f_ext = [Force::ZERO; panda::NB];
+    let good = GroundContact {
+        normal: NormalLaw::LinearSpringDamper {
+            stiffness: 1e4,
+            damping: 50.0,
+        },
+        friction: 0.8,
+        slip_scale: 0.01,
+    };
+    let points = [Endpoint::on_body(6, Vec3::new(0.0, 0.0, -2.0))];
+    let mut v = [0.0; NV];
+    v[2] = f64::NAN;
+    assert_eq!(
+        good.add_forces(&model, &mut data, &Q, &v, &points, &mut f_ext, None),
+        Err(Error::NonFinite {
+            quantity: Quantity::Velocity,
+            index: 2
+        })
+    );
+    let nan_damping = GroundContact {
+        normal: NormalLaw::LinearSpringDamper {
+            stiffness: 1e4,
+            damping: f64::NAN,
+        },
+        ..good
+    };
+    assert_eq!(
+        nan_damping.add_forces(&model, &mut data, &Q, &[0.0; NV], &points, &mut f_ext, None),
+        Err(Error::NonFinite {
+            quantity: Quantity::Contact,
+            index: 1
         })
     );
 }

@@ -38,6 +38,10 @@ pub enum Quantity {
     /// The lengthening velocity of a muscle's path (`index` is the
     /// muscle's input).
     PathVelocity,
+    /// A point given to
+    /// [`GroundContact::force_at`](crate::sim::contact::GroundContact::force_at):
+    /// its position (`index` 0–2) or velocity (3–5).
+    ContactPoint,
 }
 
 /// What is wrong with a model parameter.
@@ -58,8 +62,8 @@ pub enum ModelProblem {
     /// A placement whose rotation is orthonormal but a reflection
     /// (determinant −1), which no rigid motion is.
     Reflection,
-    /// Finite numbers whose products (such as `m |c|²`) overflow the
-    /// scalar type, so the algorithms could not use them.
+    /// Finite numbers whose products (such as `m |c|²` or `m²`) overflow
+    /// the scalar type, so the algorithms could not use them.
     Overflow,
 }
 
