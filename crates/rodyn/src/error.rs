@@ -4,7 +4,6 @@ use core::fmt;
 
 /// Which input or result a non-finite value was found in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum Quantity {
     /// Joint configuration `q`.
     Configuration,
@@ -290,6 +289,34 @@ extern crate std;
 
 #[cfg(feature = "std")]
 impl std::error::Error for Error {}
+
+/// Written out rather than derived: the derived `format` was inlined at
+/// each error that prints a quantity, each copy with its own table (64
+/// bytes of flash apiece in the pendulum image); out of line there is one.
+#[cfg(feature = "defmt")]
+impl defmt::Format for Quantity {
+    #[inline(never)]
+    fn format(&self, f: defmt::Formatter<'_>) {
+        match self {
+            Self::Configuration => defmt::write!(f, "Configuration"),
+            Self::Velocity => defmt::write!(f, "Velocity"),
+            Self::Acceleration => defmt::write!(f, "Acceleration"),
+            Self::Torque => defmt::write!(f, "Torque"),
+            Self::ExternalForce => defmt::write!(f, "ExternalForce"),
+            Self::ModelParameter => defmt::write!(f, "ModelParameter"),
+            Self::AuxiliaryState => defmt::write!(f, "AuxiliaryState"),
+            Self::Energy => defmt::write!(f, "Energy"),
+            Self::MassMatrix => defmt::write!(f, "MassMatrix"),
+            Self::Time => defmt::write!(f, "Time"),
+            Self::Contact => defmt::write!(f, "Contact"),
+            Self::DriveInput => defmt::write!(f, "DriveInput"),
+            Self::Derivative => defmt::write!(f, "Derivative"),
+            Self::PathLength => defmt::write!(f, "PathLength"),
+            Self::PathVelocity => defmt::write!(f, "PathVelocity"),
+            Self::ContactPoint => defmt::write!(f, "ContactPoint"),
+        }
+    }
+}
 
 #[cfg(feature = "defmt")]
 impl defmt::Format for Error {
