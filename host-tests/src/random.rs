@@ -161,7 +161,9 @@ pub fn random_configuration<const NB: usize, const NQ: usize, const NV: usize>(
     rng: &mut Rng,
 ) -> [f64; NQ] {
     let mut q: [f64; NQ] = rng.vector(2.0);
-    model.normalize(&mut q);
+    model
+        .normalize(&mut q)
+        .expect("a random quaternion is not zero");
     q
 }
 

@@ -98,6 +98,21 @@ fn huge_f32_velocities_and_torques_are_errors() {
         "aba f32",
         Aba::forward_dynamics(&model, &mut data, &q, &v, &zero, None).copied(),
     );
+    assert_err(
+        "crba fd f32",
+        Crba::forward_dynamics(&model, &mut data, &q, &v, &zero, None).copied(),
+    );
+    assert_err(
+        "nle f32",
+        nonlinear_effects(&model, &mut data, &q, &v, None).copied(),
+    );
+    assert_eq!(
+        kinetic_energy(&model, &mut data, &q, &v),
+        Err(Error::NonFiniteResult {
+            quantity: Quantity::Energy,
+            index: 0
+        })
+    );
     let tau = [1e37_f32; NV];
     assert_err(
         "aba f32 torque",
@@ -155,6 +170,13 @@ fn setters_name_what_is_wrong() {
         model.set_inertia(2, huge_off),
         Err(invalid(ModelProblem::InvalidInertia))
     );
+    // A mass of 1e300 kg: m² overflows in ABA's U Uᵀ; the setter names
+    // the body instead of ABA reporting a singular joint 0.
+    let heavy = Inertia::new(1e300, base.com, base.rot_inertia);
+    assert_eq!(
+        model.set_inertia(2, heavy),
+        Err(invalid(ModelProblem::Overflow))
+    );
     assert_eq!(
         *model.inertia(2),
         base,
@@ -186,6 +208,46 @@ fn setters_name_what_is_wrong() {
         rnea(&model, &mut data, &Q, &[1.0; NV], &[0.0; NV], None).copied(),
     );
     assert!(matches!(error, Error::NonFiniteResult { .. }), "{error:?}");
+    let v = [1.0; NV];
+    let zero = [0.0; NV];
+    for (what, result) in [
+        (
+            "kinetic energy far",
+            kinetic_energy(&model, &mut data, &Q, &v).map(|e| vec![e]),
+        ),
+        (
+            "crba fd far",
+            Crba::forward_dynamics(&model, &mut data, &Q, &v, &zero, None).map(|a| a.to_vec()),
+        ),
+        (
+            "nle far",
+            nonlinear_effects(&model, &mut data, &Q, &v, None).map(|t| t.to_vec()),
+        ),
+        (
+            "crba far",
+            crba(&model, &mut data, &Q).map(|m| m.iter().flatten().copied().collect()),
+        ),
+    ] {
+        let error = assert_err(what, result);
+        assert!(
+            matches!(error, Error::NonFiniteResult { .. }),
+            "{what}: {error:?}"
+        );
+    }
+    // ABA's articulated inertia overflows. An error, but still named as a
+    // singular joint with a NaN pivot: naming it a non-finite result in
+    // `check_pivot` or `aba` cost a firmware image a panic call site.
+    let error = assert_err(
+        "aba far",
+        Aba::forward_dynamics(&model, &mut data, &Q, &v, &zero, None).copied(),
+    );
+    assert!(
+        matches!(
+            error,
+            Error::NonFiniteResult { .. } | Error::SingularArticulatedInertia { .. }
+        ),
+        "{error:?}"
+    );
     // The potential energy stays finite there (m g z of about 1e301 J):
     // whatever is returned is finite or an error.
     match potential_energy(&model, &mut data, &Q) {
@@ -331,9 +393,43 @@ fn ground_contact_refuses_nan_and_missing_bodies() {
         friction: 0.8,
         slip_scale: 0.01,
     };
-    // A NaN height is not "no contact".
-    let force = good.force_at(&Vec3::new(0.0, 0.0, f64::NAN), &Vec3::ZERO);
-    assert!(!force.z.is_finite(), "NaN height gave {force:?}");
+    // A NaN height is not "no contact"; a NaN slip velocity is named too.
+    assert_eq!(
+        good.force_at(&Vec3::new(0.0, 0.0, f64::NAN), &Vec3::ZERO),
+        Err(Error::NonFinite {
+            quantity: Quantity::ContactPoint,
+            index: 2
+        })
+    );
+    assert_eq!(
+        good.force_at(&Vec3::new(0.0, 0.0, -0.01), &Vec3::new(f64::NAN, 0.0, 0.0)),
+        Err(Error::NonFinite {
+            quantity: Quantity::ContactPoint,
+            index: 3
+        })
+    );
+    let nan_stiffness = GroundContact {
+        normal: NormalLaw::LinearSpringDamper {
+            stiffness: f64::NAN,
+            damping: 50.0,
+        },
+        ..good
+    };
+    assert_eq!(
+        nan_stiffness.force_at(&Vec3::new(0.0, 0.0, -0.01), &Vec3::ZERO),
+        Err(Error::NonFinite {
+            quantity: Quantity::Contact,
+            index: 0
+        })
+    );
+    // Finite, but k δ overflows.
+    assert_eq!(
+        good.force_at(&Vec3::new(0.0, 0.0, -1e305), &Vec3::ZERO),
+        Err(Error::NonFiniteResult {
+            quantity: Quantity::Contact,
+            index: 0
+        })
+    );
 
     let on_body = |body| [Endpoint::on_body(body, Vec3::new(0.0, 0.0, -2.0))];
     let v = [0.0; NV];
@@ -406,21 +502,14 @@ fn ground_contact_refuses_nan_and_missing_bodies() {
 
 /// `Model::normalize` turns a quaternion whose squared norm overflows
 /// (1e200) or underflows (subnormal) into the unit quaternion it stands
-/// for, not into zeros; a zero quaternion is left for the configuration
-/// check, which names the joint.
+/// for, not into zeros; a zero or NaN quaternion is an error naming the
+/// joint, and `q` is left as it was.
 #[test]
 fn normalize_survives_huge_and_subnormal_quaternions() {
-    use rodyn::joint::{ConfigurationError, Joint};
-    const BALL: Model<f64, 1, 7, 6> = Model::new(
-        [None],
-        [Joint::FreeFlyer(rodyn::joint::FreeFlyer)],
-        [Transform::IDENTITY],
-        [Inertia::point_mass(1.0, Vec3::ZERO)],
-        Motion::new(Vec3::ZERO, Vec3::new(0.0, 0.0, -9.81)),
-    );
+    use rodyn::joint::ConfigurationError;
     for scale in [1e200, 1e-310, 1.0] {
         let mut q = [0.1, 0.2, 0.3, 0.0, 0.6 * scale, 0.0, 0.8 * scale];
-        BALL.normalize(&mut q);
+        BALL.normalize(&mut q).unwrap();
         // A subnormal input holds only about 13 significant digits.
         assert!(
             (q[4] - 0.6).abs() < 1e-12 && (q[6] - 0.8).abs() < 1e-12,
@@ -431,18 +520,233 @@ fn normalize_survives_huge_and_subnormal_quaternions() {
         assert_eq!(q[..3], [0.1, 0.2, 0.3]);
     }
     let mut zero = [0.0; 7];
-    BALL.normalize(&mut zero);
-    let mut data = Data::new();
-    let error =
-        rodyn::algorithm::kinematics::forward_kinematics(&BALL, &mut data, &zero).unwrap_err();
+    assert_eq!(
+        BALL.normalize(&mut zero),
+        Err(Error::InvalidConfiguration {
+            joint: 0,
+            reason: ConfigurationError::QuaternionNotUnit { norm: 0.0 }
+        })
+    );
+    assert_eq!(zero, [0.0; 7]);
+    let mut nan = [0.0, 0.0, 0.0, 0.0, 0.0, f64::NAN, 1.0];
+    assert_eq!(
+        BALL.normalize(&mut nan),
+        Err(Error::InvalidConfiguration {
+            joint: 0,
+            reason: ConfigurationError::NonFinite
+        })
+    );
+}
+
+/// One free-floating 1 kg ball.
+const BALL: Model<f64, 1, 7, 6> = Model::new(
+    [None],
+    [rodyn::joint::Joint::FreeFlyer(rodyn::joint::FreeFlyer)],
+    [Transform::IDENTITY],
+    [Inertia::point_mass(1.0, Vec3::ZERO)],
+    Motion::new(Vec3::ZERO, Vec3::new(0.0, 0.0, -9.81)),
+);
+
+/// `Model::integrate` names a non-finite input, reports finite inputs
+/// that overflow, and refuses a zero quaternion it cannot move.
+#[test]
+fn integrate_names_bad_inputs_and_overflow() {
+    use rodyn::joint::ConfigurationError;
+    let q0 = BALL.neutral_configuration();
+    let v = [1.0, 0.0, 0.0, 0.0, 0.0, 1.0];
+    assert!(BALL.integrate(&q0, &v, 1e-3).is_ok());
+    let mut nan_q = q0;
+    nan_q[1] = f64::NAN;
+    let mut nan_v = v;
+    nan_v[4] = f64::NAN;
+    for (result, quantity, index) in [
+        (BALL.integrate(&nan_q, &v, 1e-3), Quantity::Configuration, 1),
+        (BALL.integrate(&q0, &nan_v, 1e-3), Quantity::Velocity, 4),
+        (BALL.integrate(&q0, &v, f64::NAN), Quantity::Time, 0),
+        (BALL.integrate(&q0, &v, f64::INFINITY), Quantity::Time, 0),
+    ] {
+        assert_eq!(result, Err(Error::NonFinite { quantity, index }));
+    }
+    // Finite, but ω × ρ overflows.
+    let error = BALL.integrate(&q0, &[1e200; 6], 1.0).unwrap_err();
     assert!(
         matches!(
             error,
-            Error::InvalidConfiguration {
-                joint: 0,
-                reason: ConfigurationError::QuaternionNotUnit { .. }
+            Error::NonFiniteResult {
+                quantity: Quantity::Configuration,
+                ..
             }
         ),
         "{error:?}"
+    );
+    // A revolute angle that overflows.
+    let model = panda::MODEL_F64;
+    assert_eq!(
+        model.integrate(&Q, &[1e308; NV], 10.0),
+        Err(Error::NonFiniteResult {
+            quantity: Quantity::Configuration,
+            index: 0
+        })
+    );
+    let mut zero = q0;
+    zero[6] = 0.0;
+    assert_eq!(
+        BALL.integrate(&zero, &v, 1e-3),
+        Err(Error::InvalidConfiguration {
+            joint: 0,
+            reason: ConfigurationError::QuaternionNotUnit { norm: 0.0 }
+        })
+    );
+}
+
+/// The Thelen muscle's own API: a NaN length is no longer a short path
+/// with a finite 22.65 N, and a 10 m path is no longer 4e236 N.
+#[test]
+fn muscle_state_names_bad_inputs_and_refuses_absurd_lengths() {
+    use rodyn::drive::muscle::MAX_NORMALIZED_FIBER_LENGTH;
+    let muscle = robot::MUSCLES_F64[2];
+    let input = muscle.input;
+    let p = muscle.params;
+    let optimal = p.tendon_slack_length + p.optimal_fiber_length;
+    assert!(muscle.state(optimal, 0.1, 0.5).is_ok());
+    let nan = |quantity| Error::NonFinite {
+        quantity,
+        index: input,
+    };
+    for (result, expected) in [
+        (muscle.state(f64::NAN, 0.0, 0.5), nan(Quantity::PathLength)),
+        (
+            muscle.state(optimal, f64::NAN, 0.5),
+            nan(Quantity::PathVelocity),
+        ),
+        (
+            muscle.state(optimal, f64::INFINITY, 0.5),
+            nan(Quantity::PathVelocity),
+        ),
+        (
+            muscle.state(optimal, 0.0, f64::NAN),
+            nan(Quantity::DriveInput),
+        ),
+    ] {
+        assert_eq!(result, Err(expected));
+    }
+    let too_long = Error::OutOfRange {
+        quantity: Quantity::PathLength,
+        index: input,
+    };
+    // Just inside and just past the range, a 10 m path and one whose
+    // square overflows.
+    let longest = p.tendon_slack_length + MAX_NORMALIZED_FIBER_LENGTH * p.optimal_fiber_length;
+    let inside = muscle.state(longest - 1e-9, 0.0, 1.0).unwrap();
+    assert!(inside.tension.is_finite() && inside.tension < 20.0 * p.max_isometric_force);
+    for length in [longest + 1e-9, 10.0, 1e200, f64::MAX] {
+        assert_eq!(muscle.state(length, 0.0, 0.5), Err(too_long), "{length}");
+        assert_eq!(
+            muscle.tension_partials(length, 0.0, 0.5),
+            Err(too_long),
+            "{length}"
+        );
+    }
+    assert_eq!(
+        muscle.tension_partials(f64::NAN, 0.0, 0.5),
+        Err(nan(Quantity::PathLength))
+    );
+    // A huge but finite velocity stays on the bounded force-velocity curve.
+    let fast = muscle.state(optimal, 1e300, 1.0).unwrap();
+    assert!(fast.tension.is_finite(), "{fast:?}");
+    // Run-time parameters that break the force law: a non-finite tension
+    // is an error on the direct API too.
+    let mut broken = muscle;
+    broken.params.max_contraction_velocity = 0.0;
+    assert_eq!(
+        broken.state(optimal, 0.1, 0.5),
+        Err(Error::NonFiniteResult {
+            quantity: Quantity::ExternalForce,
+            index: input
+        })
+    );
+}
+
+/// Gravity: a NaN is refused by the setter; a finite but huge one is
+/// reported by the algorithms as an overflow.
+#[test]
+fn gravity_setter_and_huge_gravity() {
+    let mut model = panda::MODEL_F64;
+    let mut data = Data::new();
+    let nan = Motion::new(Vec3::ZERO, Vec3::new(0.0, 0.0, f64::NAN));
+    assert_eq!(
+        model.set_gravity(nan),
+        Err(Error::NonFinite {
+            quantity: Quantity::ModelParameter,
+            index: 0
+        })
+    );
+    model
+        .set_gravity(Motion::new(Vec3::ZERO, Vec3::new(0.0, 0.0, 1e308)))
+        .unwrap();
+    let (v, zero) = ([1.0; NV], [0.0; NV]);
+    for (what, result) in [
+        (
+            "rnea",
+            rnea(&model, &mut data, &Q, &v, &zero, None).map(|t| t.to_vec()),
+        ),
+        (
+            "aba",
+            Aba::forward_dynamics(&model, &mut data, &Q, &v, &zero, None).map(|a| a.to_vec()),
+        ),
+        (
+            "crba fd",
+            Crba::forward_dynamics(&model, &mut data, &Q, &v, &zero, None).map(|a| a.to_vec()),
+        ),
+        (
+            "potential energy",
+            potential_energy(&model, &mut data, &Q).map(|e| vec![e]),
+        ),
+    ] {
+        let error = assert_err(what, no_panic(what, || result));
+        assert!(
+            matches!(error, Error::NonFiniteResult { .. }),
+            "{what}: {error:?}"
+        );
+    }
+}
+
+/// Ground contact: a NaN joint velocity and a NaN damping are named.
+#[test]
+fn ground_contact_names_nan_velocity_and_damping() {
+    let model = panda::MODEL_F64;
+    let mut data = Data::new();
+    let mut f_ext = [Force::ZERO; panda::NB];
+    let good = GroundContact {
+        normal: NormalLaw::LinearSpringDamper {
+            stiffness: 1e4,
+            damping: 50.0,
+        },
+        friction: 0.8,
+        slip_scale: 0.01,
+    };
+    let points = [Endpoint::on_body(6, Vec3::new(0.0, 0.0, -2.0))];
+    let mut v = [0.0; NV];
+    v[2] = f64::NAN;
+    assert_eq!(
+        good.add_forces(&model, &mut data, &Q, &v, &points, &mut f_ext, None),
+        Err(Error::NonFinite {
+            quantity: Quantity::Velocity,
+            index: 2
+        })
+    );
+    let nan_damping = GroundContact {
+        normal: NormalLaw::LinearSpringDamper {
+            stiffness: 1e4,
+            damping: f64::NAN,
+        },
+        ..good
+    };
+    assert_eq!(
+        nan_damping.add_forces(&model, &mut data, &Q, &[0.0; NV], &points, &mut f_ext, None),
+        Err(Error::NonFinite {
+            quantity: Quantity::Contact,
+            index: 1
+        })
     );
 }

@@ -51,7 +51,7 @@ fn evaluate<S: Scalar, const NB: usize, const NQ: usize, const NV: usize>(
     (dq, dv, du): ([S; NV], [S; NV], [S; NV]),
 ) -> [S; NV] {
     let mut data = Box::new(Data::<S, NB, NV>::new());
-    let q = model.integrate(q, &dq, S::ONE);
+    let q = model.integrate(q, &dq, S::ONE).unwrap();
     let v: [S; NV] = core::array::from_fn(|k| v[k] + dv[k]);
     let u: [S; NV] = core::array::from_fn(|k| u[k] + du[k]);
     match dynamics {

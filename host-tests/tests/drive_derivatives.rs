@@ -129,7 +129,7 @@ fn path_gradient_and_hessian_match_dual_numbers() {
             let qd = q.map(Dual::constant);
             let mut dq = [Dual::constant(0.0); NV];
             dq[c] = Dual::variable(0.0);
-            let qd = dual_model.integrate(&qd, &dq, Dual::constant(1.0));
+            let qd = dual_model.integrate(&qd, &dq, Dual::constant(1.0)).unwrap();
             let vd = v.map(Dual::constant);
             joint_jacobians_time_variation(&dual_model, &mut dual_data, &mut dual_jac, &qd, &vd)
                 .unwrap();
@@ -184,9 +184,11 @@ fn muscle_tension_partials_match_dual_numbers() {
     for length in [0.04, 0.11, 0.13, 0.16, 0.2] {
         for velocity in [-0.6, -0.1, 0.0, 0.05, 0.4] {
             for activation in [0.0, 0.3, 1.0] {
-                let (t, t_l, t_v) = muscle.tension_partials(length, velocity, activation);
+                let (t, t_l, t_v) = muscle
+                    .tension_partials(length, velocity, activation)
+                    .unwrap();
                 let a = Dual::constant(activation);
-                let tension = |l: Dual, v: Dual| dual.state(l, v, a).tension;
+                let tension = |l: Dual, v: Dual| dual.state(l, v, a).unwrap().tension;
                 let along_l = tension(Dual::variable(length), Dual::constant(velocity));
                 let along_v = tension(Dual::constant(length), Dual::variable(velocity));
                 let what = format!("L {length}, L̇ {velocity}, a {activation}");
@@ -211,7 +213,7 @@ fn forward<S: Scalar>(
 ) -> [S; NV] {
     let mut data = Box::new(Data::<S, NB, NV>::new());
     let mut forces = DriveForces::new();
-    let q = model.integrate(q, dq, S::ONE);
+    let q = model.integrate(q, dq, S::ONE).unwrap();
     *forward_dynamics_with_drives::<Aba, _, _, _, NB, NQ, NV>(
         model,
         &mut data,

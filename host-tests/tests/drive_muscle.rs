@@ -63,7 +63,7 @@ fn force_velocity_slope_matches_central_differences_on_both_branches() {
 fn isometric_tension_at_optimal_length_is_activation_times_max_force() {
     let m = muscle(P);
     // Path 0.3 m = tendon slack 0.2 m + optimal fibre 0.1 m.
-    let s = m.state(0.3, 0.0, 0.7);
+    let s = m.state(0.3, 0.0, 0.7).unwrap();
     approx::assert_relative_eq!(s.fiber_length, 0.1, max_relative = 1e-14);
     approx::assert_relative_eq!(s.tension, 700.0, max_relative = 1e-14);
     approx::assert_relative_eq!(s.tension_per_activation, 1000.0, max_relative = 1e-14);
@@ -79,12 +79,14 @@ fn tension_derivative_by_activation_matches_central_differences() {
         (0.27, 0.3, 0.2),
         (0.33, 2.0, 0.9),
     ] {
-        let s = m.state(l, ldot, a);
-        let fd = (m.state(l, ldot, a + h).tension - m.state(l, ldot, a - h).tension) / (2.0 * h);
+        let s = m.state(l, ldot, a).unwrap();
+        let fd = (m.state(l, ldot, a + h).unwrap().tension
+            - m.state(l, ldot, a - h).unwrap().tension)
+            / (2.0 * h);
         approx::assert_relative_eq!(s.tension_per_activation, fd, max_relative = 1e-6);
         // Not affine in a: the velocity normalisation depends on it while
         // the fibre moves, so the slope changes with a.
-        let half = m.state(l, ldot, 0.5 * a).tension_per_activation;
+        let half = m.state(l, ldot, 0.5 * a).unwrap().tension_per_activation;
         assert!(
             (s.tension_per_activation - half).abs() > 1e-3 * s.tension_per_activation.abs(),
             "{s:?}"
@@ -99,7 +101,7 @@ fn pennation_follows_the_constant_thickness_geometry() {
         1000.0, 0.1, 0.2, alpha0,
     ));
     // At optimal fibre length the fibre's projection is l₀ cos α₀.
-    let s = m.state(0.2 + 0.1 * alpha0.cos(), 0.5, 0.5);
+    let s = m.state(0.2 + 0.1 * alpha0.cos(), 0.5, 0.5).unwrap();
     approx::assert_relative_eq!(s.fiber_length, 0.1, max_relative = 1e-14);
     approx::assert_relative_eq!(s.cos_pennation, alpha0.cos(), max_relative = 1e-14);
     approx::assert_relative_eq!(s.fiber_velocity, 0.5 * alpha0.cos(), max_relative = 1e-14);
@@ -111,19 +113,19 @@ fn singular_regions_are_guarded() {
     // with zero velocity and a finite, non-negative tension.
     let m = muscle(P);
     for l in [0.2, 0.15, 0.0, -1.0] {
-        let s = m.state(l, -5.0, 1.0);
+        let s = m.state(l, -5.0, 1.0).unwrap();
         assert!(s.tension.is_finite() && s.tension >= 0.0, "{s:?}");
         approx::assert_relative_eq!(s.fiber_length, 0.001, max_relative = 1e-12);
         assert_eq!(s.fiber_velocity, 0.0);
     }
     // Pennation near 90°: cos α never drops below 0.1.
     let pennate = muscle(ThelenParameters::<f64>::thelen_2003(1000.0, 0.1, 0.2, 1.2));
-    let s = pennate.state(0.2, -0.3, 1.0);
+    let s = pennate.state(0.2, -0.3, 1.0).unwrap();
     assert!(s.cos_pennation >= 0.1 - 1e-15, "{s:?}");
     assert!(s.tension.is_finite());
     // Shortening faster than the maximum contraction velocity: no active
     // force, only the passive one (zero here), never a negative tension.
-    let s = m.state(0.3, -50.0, 1.0);
+    let s = m.state(0.3, -50.0, 1.0).unwrap();
     assert_eq!(s.force_velocity, 0.0);
     assert_eq!(s.tension, 0.0);
 }

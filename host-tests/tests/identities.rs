@@ -87,7 +87,7 @@ fn check_power_balance<const NB: usize, const NQ: usize, const NV: usize>(
     let eps = 1e-5;
     let mut energy = |t: f64| {
         let dq: [f64; NV] = core::array::from_fn(|k| v[k] * t + 0.5 * ddq[k] * t * t);
-        let q_t = model.integrate(q, &dq, 1.0);
+        let q_t = model.integrate(q, &dq, 1.0).unwrap();
         let v_t: [f64; NV] = core::array::from_fn(|k| v[k] + ddq[k] * t);
         kinetic_energy(model, data, &q_t, &v_t).unwrap()
             + potential_energy(model, data, &q_t).unwrap()

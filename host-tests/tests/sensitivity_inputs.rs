@@ -167,7 +167,9 @@ fn floating_drives() -> FloatingDrives {
                 Endpoint::on_body(0, Vec3::new(0.0, 0.1, 0.15)),
                 Endpoint::on_body(2, Vec3::new(0.03, 0.2, 0.0)),
             ]),
-            ThelenParameters::<f64>::thelen_2003(500.0, 0.3, 0.25, 0.2),
+            // A slack length that keeps the fibre within the force law's
+            // range (two optimal lengths) over the random states.
+            ThelenParameters::<f64>::thelen_2003(500.0, 0.3, 0.3, 0.2),
             2,
         ),
     )

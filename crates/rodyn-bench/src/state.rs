@@ -59,7 +59,7 @@ impl SplitMix64 {
 /// accelerations uniform in [-1, 1], torques from RNEA.
 ///
 /// # Panics
-/// When RNEA fails on the model: benchmark models are valid.
+/// When `integrate` or RNEA fails on the model: benchmark models are valid.
 #[must_use]
 pub fn random_states<const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     model: &Model<f64, NB, NQ, NV, G>,
@@ -73,7 +73,9 @@ pub fn random_states<const NB: usize, const NQ: usize, const NV: usize, G: Space
         .map(|_| {
             // Joint angles spread over about ±π.
             let displacement: [f64; NV] = core::array::from_fn(|_| 3.0 * rng.symmetric());
-            let q = model.integrate(&neutral, &displacement, 1.0);
+            let q = model
+                .integrate(&neutral, &displacement, 1.0)
+                .expect("a benchmark model's displaced neutral configuration");
             let v = core::array::from_fn(|_| rng.symmetric());
             let a = core::array::from_fn(|_| rng.symmetric());
             let tau = *rnea(model, &mut data, &q, &v, &a, None).expect("rnea on a benchmark state");

@@ -37,7 +37,7 @@ pub fn stick_figure_gif<const NB: usize, const NQ: usize, const NV: usize>(
         next_t = t + frame_interval;
         // Widened f32 quaternions are unit only to f32 precision.
         let mut q: [f64; NQ] = q.as_slice().try_into()?;
-        model.normalize(&mut q);
+        model.normalize(&mut q)?;
         forward_kinematics(model, &mut data, &q)?;
         let mut segments = Vec::new();
         for i in 0..NB {

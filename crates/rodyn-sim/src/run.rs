@@ -225,7 +225,7 @@ pub fn foot_forces(trajectory: &Trajectory) -> Result<Vec<Curve>, Box<dyn std::e
         // An f32 run's quaternion, widened to f64, is unit only to f32
         // precision: project it before the f64 checks see it.
         let mut q: [f64; quadruped::NQ] = q.as_slice().try_into()?;
-        model.normalize(&mut q);
+        model.normalize(&mut q)?;
         let v: [f64; quadruped::NV] = v.as_slice().try_into()?;
         let mut f_ext = [Force::ZERO; quadruped::NB];
         loads.ground.add_forces(

@@ -4,7 +4,6 @@ use core::fmt;
 
 /// Which input or result a non-finite value was found in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum Quantity {
     /// Joint configuration `q`.
     Configuration,
@@ -33,6 +32,15 @@ pub enum Quantity {
     /// A derivative of the dynamics (a result; `index` is `row · NV +
     /// column` of its matrix).
     Derivative,
+    /// The length of a muscle's path (`index` is the muscle's input).
+    PathLength,
+    /// The lengthening velocity of a muscle's path (`index` is the
+    /// muscle's input).
+    PathVelocity,
+    /// A point given to
+    /// [`GroundContact::force_at`](crate::sim::contact::GroundContact::force_at):
+    /// its position (`index` 0–2) or velocity (3–5).
+    ContactPoint,
 }
 
 /// What is wrong with a model parameter.
@@ -53,8 +61,8 @@ pub enum ModelProblem {
     /// A placement whose rotation is orthonormal but a reflection
     /// (determinant −1), which no rigid motion is.
     Reflection,
-    /// Finite numbers whose products (such as `m |c|²`) overflow the
-    /// scalar type, so the algorithms could not use them.
+    /// Finite numbers whose products (such as `m |c|²` or `m²`) overflow
+    /// the scalar type, so the algorithms could not use them.
     Overflow,
 }
 
@@ -188,6 +196,16 @@ pub enum Error {
         /// The contact that row belongs to (its index in the slice given).
         contact: usize,
     },
+    /// A finite input outside the range the model describes, such as a
+    /// path that stretches a muscle fibre past
+    /// [`MAX_NORMALIZED_FIBER_LENGTH`](crate::drive::muscle::MAX_NORMALIZED_FIBER_LENGTH)
+    /// optimal lengths, where the force law would give an absurd force.
+    OutOfRange {
+        /// Which input.
+        quantity: Quantity,
+        /// Its index (for a muscle, the muscle's input).
+        index: usize,
+    },
 }
 
 impl fmt::Display for Error {
@@ -259,6 +277,10 @@ impl fmt::Display for Error {
                 "the contacts are redundant at constrained row {row} (contact {contact}); \
                  give a damping or drop a contact"
             ),
+            Self::OutOfRange { quantity, index } => write!(
+                f,
+                "{quantity:?} at index {index} is outside the range the model describes"
+            ),
         }
     }
 }
@@ -268,6 +290,34 @@ extern crate std;
 
 #[cfg(feature = "std")]
 impl std::error::Error for Error {}
+
+/// Written out rather than derived: the derived `format` was inlined at
+/// each error that prints a quantity, each copy with its own table (64
+/// bytes of flash apiece in the pendulum image); out of line there is one.
+#[cfg(feature = "defmt")]
+impl defmt::Format for Quantity {
+    #[inline(never)]
+    fn format(&self, f: defmt::Formatter<'_>) {
+        match self {
+            Self::Configuration => defmt::write!(f, "Configuration"),
+            Self::Velocity => defmt::write!(f, "Velocity"),
+            Self::Acceleration => defmt::write!(f, "Acceleration"),
+            Self::Torque => defmt::write!(f, "Torque"),
+            Self::ExternalForce => defmt::write!(f, "ExternalForce"),
+            Self::ModelParameter => defmt::write!(f, "ModelParameter"),
+            Self::AuxiliaryState => defmt::write!(f, "AuxiliaryState"),
+            Self::Energy => defmt::write!(f, "Energy"),
+            Self::MassMatrix => defmt::write!(f, "MassMatrix"),
+            Self::Time => defmt::write!(f, "Time"),
+            Self::Contact => defmt::write!(f, "Contact"),
+            Self::DriveInput => defmt::write!(f, "DriveInput"),
+            Self::Derivative => defmt::write!(f, "Derivative"),
+            Self::PathLength => defmt::write!(f, "PathLength"),
+            Self::PathVelocity => defmt::write!(f, "PathVelocity"),
+            Self::ContactPoint => defmt::write!(f, "ContactPoint"),
+        }
+    }
+}
 
 #[cfg(feature = "defmt")]
 impl defmt::Format for Error {
@@ -328,6 +378,9 @@ impl defmt::Format for Error {
             Self::InvalidGain { index } => defmt::write!(f, "invalid gain {}", index),
             Self::RedundantConstraints { row, contact } => {
                 defmt::write!(f, "redundant contacts at row {} (contact {})", row, contact)
+            }
+            Self::OutOfRange { quantity, index } => {
+                defmt::write!(f, "{} at index {} out of range", quantity, index)
             }
         }
     }

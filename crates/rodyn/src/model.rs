@@ -547,6 +547,15 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
 
     /// `q ⊕ v dt` for every joint (quaternions through the exponential map).
     ///
+    /// # Errors
+    /// [`Error::NonFinite`] naming a non-finite entry of `q`
+    /// ([`Quantity::Configuration`]), `v` ([`Quantity::Velocity`]) or `dt`
+    /// ([`Quantity::Time`]); [`Error::NonFiniteResult`] with
+    /// [`Quantity::Configuration`] when finite inputs overflow (a velocity
+    /// of 1e308 over a second); [`Error::InvalidConfiguration`] naming the
+    /// joint whose result is not on its manifold (a zero quaternion in `q`
+    /// stays zero).
+    ///
     /// # Example
     ///
     /// ```
@@ -558,16 +567,33 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
     /// );
     /// let q0 = BALL.neutral_configuration();
     /// // Half a turn about z in one second, moving along x.
-    /// let q1 = BALL.integrate(&q0, &[1.0, 0.0, 0.0, 0.0, 0.0, core::f64::consts::PI], 1.0);
+    /// let q1 = BALL.integrate(&q0, &[1.0, 0.0, 0.0, 0.0, 0.0, core::f64::consts::PI], 1.0)?;
     /// // The quaternion stays of unit length: (0, 0, sin(π/2), cos(π/2)).
     /// assert!((q1[5] - 1.0).abs() < 1e-12 && q1[6].abs() < 1e-12);
     /// // Pinocchio's SE(3) exponential: the body runs a half circle of radius 1/π.
     /// assert!(q1[0].abs() < 1e-12 && (q1[1] - 2.0 / core::f64::consts::PI).abs() < 1e-12);
-    /// BALL.check_configuration(&q1)?;
+    /// // A NaN step is named, not passed on.
+    /// assert!(BALL.integrate(&q0, &[0.0; 6], f64::NAN).is_err());
     /// # Ok::<(), rodyn::Error>(())
     /// ```
-    #[must_use]
-    pub fn integrate(&self, q: &[S; NQ], v: &[S; NV], dt: S) -> [S; NQ] {
+    pub fn integrate(&self, q: &[S; NQ], v: &[S; NV], dt: S) -> Result<[S; NQ]> {
+        let out = self.integrate_unvalidated(q, v, dt);
+        // One check of the result on the way out; the inputs are only
+        // looked at to name the cause when it fails.
+        let Err(error) = self.check_configuration(&out) else {
+            return Ok(out);
+        };
+        check_finite(q, Quantity::Configuration)?;
+        check_finite(v, Quantity::Velocity)?;
+        check_finite(&[dt], Quantity::Time)?;
+        check_result(&out, Quantity::Configuration)?;
+        Err(error)
+    }
+
+    /// [`integrate`](Self::integrate) without the checks, for the
+    /// integrators, which check the whole next state once before they
+    /// commit it.
+    pub(crate) fn integrate_unvalidated(&self, q: &[S; NQ], v: &[S; NV], dt: S) -> [S; NQ] {
         let mut out = *q;
         for i in 0..NB {
             let (iq, iv) = (self.topology.idx_q[i], self.topology.idx_v[i]);
@@ -577,8 +603,39 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
         out
     }
 
-    /// Renormalises every quaternion in `q` in place.
-    pub fn normalize(&self, q: &mut [S; NQ]) {
+    /// Renormalises every quaternion in `q` in place. A quaternion is
+    /// divided by its largest entry first, so one of norm 1e200 or a
+    /// subnormal one normalises correctly; a zero or non-finite one has no
+    /// direction to keep and is an error, never a silent zero.
+    ///
+    /// # Errors
+    /// [`Error::InvalidConfiguration`] naming the first joint whose
+    /// coordinates are not finite ([`ConfigurationError::NonFinite`]) or
+    /// whose quaternion is zero ([`ConfigurationError::QuaternionNotUnit`]
+    /// with norm 0); `q` is then left as it was.
+    ///
+    /// [`ConfigurationError::NonFinite`]: crate::error::ConfigurationError::NonFinite
+    /// [`ConfigurationError::QuaternionNotUnit`]: crate::error::ConfigurationError::QuaternionNotUnit
+    pub fn normalize(&self, q: &mut [S; NQ]) -> Result<()> {
+        let mut out = *q;
+        // Joint by joint rather than through `check_configuration`, which
+        // every algorithm inlines: sharing it changed their code on the MCU.
+        for i in 0..NB {
+            let iq = self.topology.idx_q[i];
+            let joint_q = &mut out[iq..iq + self.topology.nq[i]];
+            self.joints[i].normalize(joint_q);
+            self.joints[i]
+                .check_configuration(joint_q)
+                .map_err(|reason| Error::InvalidConfiguration { joint: i, reason })?;
+        }
+        *q = out;
+        Ok(())
+    }
+
+    /// [`normalize`](Self::normalize) without the check, for the
+    /// integrators: a zero quaternion stays zero and the next dynamics
+    /// call names its joint.
+    pub(crate) fn normalize_unvalidated(&self, q: &mut [S; NQ]) {
         for i in 0..NB {
             let iq = self.topology.idx_q[i];
             self.joints[i].normalize(&mut q[iq..iq + self.topology.nq[i]]);

@@ -34,7 +34,10 @@ fn report<const NB: usize, const NQ: usize, const NV: usize>(
     for k in 0..STATES {
         let mut q = [0.0f32; NQ];
         rng.fill_symmetric(&mut q, core::f32::consts::PI);
-        model.normalize(&mut q);
+        if let Err(e) = model.normalize(&mut q) {
+            defmt::error!("{=str} {}: normalize: {}", name, k, e);
+            return false;
+        }
         let (mut v, mut a, mut u) = ([0.0f32; NV], [0.0f32; NV], [0.0f32; NV]);
         rng.fill_symmetric(&mut v, 2.0);
         rng.fill_symmetric(&mut a, 5.0);

@@ -61,7 +61,10 @@ fn probe<const NB: usize, const NQ: usize, const NV: usize, G: Space>(
         for _ in 0..STATES {
             let mut q = [0.0f32; NQ];
             rng.fill_symmetric(&mut q, core::f32::consts::PI);
-            model.normalize(&mut q);
+            if let Err(e) = model.normalize(&mut q) {
+                defmt::error!("{=str}: normalize: {}", name, e);
+                return false;
+            }
             let mut v = [0.0f32; NV];
             rng.fill_symmetric(&mut v, 2.0);
             let mut u = [0.0f32; NV];

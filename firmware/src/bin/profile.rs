@@ -54,7 +54,10 @@ fn profile<const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     let mut rng = XorShift32::new(0x5EED_0001);
     let mut q = [0.0f32; NQ];
     rng.fill_symmetric(&mut q, core::f32::consts::PI);
-    model.normalize(&mut q);
+    if let Err(e) = model.normalize(&mut q) {
+        defmt::error!("{=str}: normalize: {}", name, e);
+        return;
+    }
     let mut v = [0.0f32; NV];
     rng.fill_symmetric(&mut v, 2.0);
     let mut u = [0.0f32; NV];

@@ -142,7 +142,9 @@ fn aibo_contacts_are_ground_contacts_at_the_feet() {
         aibo::endpoint::HR_FOOT
     );
     let ground = aibo::CONTACTS_F32[aibo::contact::FL_FOOT_CONTACT];
-    let force = ground.force_at(&Vec3::new(0.0, 0.0, -1.0e-3), &Vec3::ZERO);
+    let force = ground
+        .force_at(&Vec3::new(0.0, 0.0, -1.0e-3), &Vec3::ZERO)
+        .unwrap();
     assert!((force.z - 5.0).abs() < 1e-5, "{}", force.z);
     assert_eq!((force.x, force.y), (0.0, 0.0));
 }

@@ -145,7 +145,8 @@ impl<S: Scalar, const NV: usize> Default for IkData<S, NV> {
 /// # Errors
 /// As [`joint_jacobians`];
 /// [`Error::FrameBodyOutOfRange`]; [`Error::NotConverged`] (with zero
-/// iterations) when the step is not finite.
+/// iterations) when the step is not finite; those of [`Model::integrate`]
+/// when the moved `q` is not (`q` is then left as it was).
 pub fn step<S: Scalar, const NB: usize, const NQ: usize, const NV: usize>(
     model: &Model<S, NB, NQ, NV, Spatial>,
     data: &mut Data<S, NB, NV, Spatial>,
@@ -191,7 +192,7 @@ pub fn step<S: Scalar, const NB: usize, const NQ: usize, const NV: usize>(
             residual: f64::INFINITY,
         });
     }
-    *q = model.integrate(q, &dq, S::ONE);
+    *q = model.integrate(q, &dq, S::ONE)?;
     Ok(e)
 }
 

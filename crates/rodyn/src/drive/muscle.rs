@@ -49,6 +49,14 @@
 //!   the negative force of the hyperbola, and the lengthening branch is
 //!   bounded by `F̃_len`;
 //! * activation is clamped to `[0, 1]` where it enters the force.
+//!
+//! **Range.** The curves were fitted near the optimal length; past it the
+//! passive force grows as `exp(kᴾᴱ l̃/ε₀ᴹ)` (15 `F₀ᴹ` at `l̃ = 2` with
+//! Thelen's shape, 4e236 N for a 10 m path). A fibre longer than
+//! [`MAX_NORMALIZED_FIBER_LENGTH`] `l₀ᴹ` is reported
+//! ([`Error::OutOfRange`] naming the path length) instead of such a
+//! force, as are a non-finite length, velocity or activation and a
+//! tension that comes out non-finite.
 
 use crate::drive::derivatives::{add_tension_derivatives, DriveDerivativeState, DriveDerivatives};
 use crate::drive::geometry::PointGeometry;
@@ -61,6 +69,11 @@ use crate::Scalar;
 pub const MIN_PENNATION_COSINE: f64 = 0.1;
 /// Shortest fibre, as a fraction of the optimal fibre length.
 pub const MIN_FIBER_LENGTH_FRACTION: f64 = 0.01;
+/// Longest fibre the force law is evaluated at, in optimal fibre lengths
+/// (`l̃`): beyond it the passive force is an extrapolation growing
+/// exponentially (15 `F₀ᴹ` at 2 with Thelen's shape), so a longer fibre is
+/// an error rather than a force.
+pub const MAX_NORMALIZED_FIBER_LENGTH: f64 = 2.0;
 
 /// The parameters of a Thelen (2003) muscle; see the [module](crate::drive::muscle) table.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -329,7 +342,19 @@ impl<S: Scalar, G: PointGeometry, const K: usize> ThelenMuscle<S, G, K> {
             .max(S::ZERO)
             .sqrt();
         let projection = length - p.tendon_slack_length;
-        if projection > min_projection {
+        // Tested this way round so that a NaN length (an overflowed path)
+        // gives a NaN force, not the shortest fibre's finite one.
+        if projection <= min_projection {
+            FiberGeometry {
+                fiber_length: min_length,
+                cos_pennation: min_projection / min_length,
+                fiber_velocity: S::ZERO,
+                dlength_dl: S::ZERO,
+                dcos_dl: S::ZERO,
+                dvelocity_dl: S::ZERO,
+                dvelocity_dv: S::ZERO,
+            }
+        } else {
             let l = (projection * projection + height * height).sqrt();
             let cos = projection / l;
             // d cos/dL = h² / l³.
@@ -342,16 +367,6 @@ impl<S: Scalar, G: PointGeometry, const K: usize> ThelenMuscle<S, G, K> {
                 dcos_dl: dcos,
                 dvelocity_dl: lengthening_velocity * dcos,
                 dvelocity_dv: cos,
-            }
-        } else {
-            FiberGeometry {
-                fiber_length: min_length,
-                cos_pennation: min_projection / min_length,
-                fiber_velocity: S::ZERO,
-                dlength_dl: S::ZERO,
-                dcos_dl: S::ZERO,
-                dvelocity_dl: S::ZERO,
-                dvelocity_dv: S::ZERO,
             }
         }
     }
@@ -369,8 +384,30 @@ impl<S: Scalar, G: PointGeometry, const K: usize> ThelenMuscle<S, G, K> {
     /// lengthening at `L̇`: the tension of [`state`](Self::state),
     /// differentiated through the pennation, the force-length curves and
     /// the force-velocity curve (one-sided at its kinks).
-    #[must_use]
-    pub fn tension_partials(&self, length: S, lengthening_velocity: S, activation: S) -> (S, S, S) {
+    ///
+    /// # Errors
+    /// As [`state`](Self::state).
+    pub fn tension_partials(
+        &self,
+        length: S,
+        lengthening_velocity: S,
+        activation: S,
+    ) -> Result<(S, S, S)> {
+        self.check_inputs(length, lengthening_velocity, activation)?;
+        let (partials, fiber_length) =
+            self.tension_partials_unvalidated(length, lengthening_velocity, activation);
+        self.check_output(fiber_length, &[partials.0, partials.1, partials.2])?;
+        Ok(partials)
+    }
+
+    /// [`tension_partials`](Self::tension_partials) without the checks,
+    /// with the fibre length for [`check_output`](Self::check_output).
+    fn tension_partials_unvalidated(
+        &self,
+        length: S,
+        lengthening_velocity: S,
+        activation: S,
+    ) -> ((S, S, S), S) {
         let p = &self.params;
         let l_opt = p.optimal_fiber_length;
         let g = self.fiber_geometry(length, lengthening_velocity);
@@ -395,13 +432,87 @@ impl<S: Scalar, G: PointGeometry, const K: usize> ThelenMuscle<S, G, K> {
         let dforce_dl = a * (df_l * f_v * dl_norm + f_l * df_v * dv_norm) + df_pe * dl_norm;
         let tension_dl = f0 * (g.dcos_dl * fiber_force + g.cos_pennation * dforce_dl);
         let tension_dv = f0 * g.cos_pennation * a * f_l * df_v * g.dvelocity_dv / scale;
-        (tension, tension_dl, tension_dv)
+        ((tension, tension_dl, tension_dv), g.fiber_length)
+    }
+
+    /// Finite inputs: a NaN length would otherwise read as a path too
+    /// short (the fibre held at its shortest, a finite force) and a NaN
+    /// activation as zero.
+    fn check_inputs(&self, length: S, lengthening_velocity: S, activation: S) -> Result<()> {
+        let named = |quantity, ok: bool| {
+            if ok {
+                Ok(())
+            } else {
+                Err(Error::NonFinite {
+                    quantity,
+                    index: self.input,
+                })
+            }
+        };
+        named(Quantity::PathLength, length.is_finite())?;
+        named(Quantity::PathVelocity, lengthening_velocity.is_finite())?;
+        check_activation(activation, self.input)
+    }
+
+    /// A fibre within [`MAX_NORMALIZED_FIBER_LENGTH`] and finite tensions
+    /// (or slopes); the errors name the muscle's input. Checked after the
+    /// force law, so that the hot path (`add_forces`) pays a few
+    /// comparisons and no second pass.
+    fn check_output(&self, fiber_length: S, values: &[S]) -> Result<()> {
+        let l_opt = self.params.optimal_fiber_length;
+        // Only for a valid l₀ᴹ: a zero or NaN one is a parameter problem,
+        // which the non-finite tension reports.
+        if l_opt > S::ZERO && fiber_length > S::from_f64(MAX_NORMALIZED_FIBER_LENGTH) * l_opt {
+            return Err(Error::OutOfRange {
+                quantity: Quantity::PathLength,
+                index: self.input,
+            });
+        }
+        if values.iter().all(|x| x.is_finite()) {
+            Ok(())
+        } else {
+            Err(Error::NonFiniteResult {
+                quantity: Quantity::ExternalForce,
+                index: self.input,
+            })
+        }
     }
 
     /// Fibre state and tension for a path of length `L` (m) lengthening at
-    /// `L̇` (m/s), at activation `a`.
-    #[must_use]
-    pub fn state(&self, length: S, lengthening_velocity: S, activation: S) -> MuscleState<S> {
+    /// `L̇` (m/s), at activation `a` (clamped to `[0, 1]`).
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`] naming a non-finite `L`
+    /// ([`Quantity::PathLength`]), `L̇` ([`Quantity::PathVelocity`]) or `a`
+    /// ([`Quantity::DriveInput`]); [`Error::OutOfRange`] with
+    /// [`Quantity::PathLength`] for a fibre longer than
+    /// [`MAX_NORMALIZED_FIBER_LENGTH`] optimal lengths;
+    /// [`Error::NonFiniteResult`] with [`Quantity::ExternalForce`] for a
+    /// tension that comes out non-finite (parameters that break the force
+    /// law, see [`ThelenParameters::validate`]). Each names the muscle by
+    /// its input index.
+    pub fn state(
+        &self,
+        length: S,
+        lengthening_velocity: S,
+        activation: S,
+    ) -> Result<MuscleState<S>> {
+        self.check_inputs(length, lengthening_velocity, activation)?;
+        let state = self.state_unvalidated(length, lengthening_velocity, activation);
+        self.check_output(
+            state.fiber_length,
+            &[state.tension, state.tension_per_activation],
+        )?;
+        Ok(state)
+    }
+
+    /// [`state`](Self::state) without the checks.
+    fn state_unvalidated(
+        &self,
+        length: S,
+        lengthening_velocity: S,
+        activation: S,
+    ) -> MuscleState<S> {
         let p = &self.params;
         let l_opt = p.optimal_fiber_length;
         let FiberGeometry {
@@ -441,8 +552,10 @@ impl<S: Scalar, G: PointGeometry, const K: usize> ThelenMuscle<S, G, K> {
     }
 
     /// The fibre state on a path whose kinematics are known.
-    #[must_use]
-    pub fn state_on(&self, kin: &PathKinematics<S, G, K>, activation: S) -> MuscleState<S> {
+    ///
+    /// # Errors
+    /// As [`state`](Self::state).
+    pub fn state_on(&self, kin: &PathKinematics<S, G, K>, activation: S) -> Result<MuscleState<S>> {
         self.state(kin.length, kin.lengthening_velocity, activation)
     }
 
@@ -483,15 +596,13 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
         // Parameters are not validated here (a per-call cost of about 40 %
         // of the muscle robot's forward dynamics on the Cortex-M4): one
         // that breaks the force law makes the tension non-finite, which is
-        // reported; `ThelenParameters::validate` names the field.
+        // reported; `ThelenParameters::validate` names the field. The path
+        // comes from a finite state: only an overflow makes it non-finite,
+        // and then the tension too.
         let kin = self.path.kinematics(state.data)?;
-        let tension = self.state_on(&kin, activation).tension;
-        if !tension.is_finite() {
-            return Err(Error::NonFiniteResult {
-                quantity: Quantity::ExternalForce,
-                index: self.input,
-            });
-        }
+        let muscle = self.state_unvalidated(kin.length, kin.lengthening_velocity, activation);
+        self.check_output(muscle.fiber_length, &[muscle.tension])?;
+        let tension = muscle.tension;
         self.path
             .add_tension(&kin, tension, state.data, &mut out.f_ext)
     }
@@ -508,7 +619,9 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
         }
         check_activation(activation, self.input)?;
         let kin = self.path.kinematics(state.data)?;
-        let slope = self.state_on(&kin, activation).tension_per_activation;
+        let muscle = self.state_unvalidated(kin.length, kin.lengthening_velocity, activation);
+        self.check_output(muscle.fiber_length, &[muscle.tension_per_activation])?;
+        let slope = muscle.tension_per_activation;
         self.path
             .add_tension(&kin, slope, state.data, &mut out.f_ext)
     }
@@ -521,13 +634,9 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
         let activation = read_input(w, self.input)?;
         check_activation(activation, self.input)?;
         let path = self.path.length_derivatives(state)?;
-        let tension = self.tension_partials(path.length, path.lengthening_velocity, activation);
-        if !(tension.0.is_finite() && tension.1.is_finite() && tension.2.is_finite()) {
-            return Err(Error::NonFiniteResult {
-                quantity: Quantity::ExternalForce,
-                index: self.input,
-            });
-        }
+        let (tension, fiber_length) =
+            self.tension_partials_unvalidated(path.length, path.lengthening_velocity, activation);
+        self.check_output(fiber_length, &[tension.0, tension.1, tension.2])?;
         add_tension_derivatives(&path, state.v, tension, out);
         Ok(())
     }

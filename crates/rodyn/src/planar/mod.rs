@@ -68,7 +68,11 @@ impl Space for Planar {
             Err(ModelProblem::NonFiniteParameter)
         } else if !ok(i.mass) {
             Err(ModelProblem::InvalidMass)
-        } else if !(i.mass * i.com.norm_squared() + i.izz).is_finite() {
+        } else if !(i.mass * i.com.norm_squared() + i.izz).is_finite()
+            || !(i.mass * i.mass).is_finite()
+            || !((i.mass * i.com.norm_squared() + i.izz).squared()).is_finite()
+        {
+            // Also the products of two entries ABA forms (U Uᵀ).
             Err(ModelProblem::Overflow)
         } else if !ok(i.izz) {
             Err(ModelProblem::InvalidInertia)

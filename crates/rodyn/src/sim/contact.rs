@@ -106,9 +106,42 @@ impl<S: Scalar> GroundContact<S> {
     }
 
     /// The force (world frame, N) on a point at world position `p` moving
-    /// at world velocity `p_dot`; non-finite for a non-finite input.
-    #[must_use]
-    pub fn force_at(&self, p: &Vec3<S>, p_dot: &Vec3<S>) -> Vec3<S> {
+    /// at world velocity `p_dot`.
+    ///
+    /// # Errors
+    /// Those of [`validate`](Self::validate); [`Error::NonFinite`] with
+    /// [`Quantity::ContactPoint`] naming a non-finite entry of `p` (index
+    /// 0–2) or `p_dot` (3–5), so that a NaN height is not read as "no
+    /// contact"; [`Error::NonFiniteResult`] with [`Quantity::Contact`] for
+    /// a force that overflows.
+    pub fn force_at(&self, p: &Vec3<S>, p_dot: &Vec3<S>) -> Result<Vec3<S>> {
+        self.validate()?;
+        let (p_arr, p_dot_arr) = (p.to_array(), p_dot.to_array());
+        if let Some(index) = p_arr
+            .iter()
+            .chain(p_dot_arr.iter())
+            .position(|x| !x.is_finite())
+        {
+            return Err(Error::NonFinite {
+                quantity: Quantity::ContactPoint,
+                index,
+            });
+        }
+        let force = self.force_unvalidated(p, p_dot);
+        if force.is_finite() {
+            Ok(force)
+        } else {
+            Err(Error::NonFiniteResult {
+                quantity: Quantity::Contact,
+                index: 0,
+            })
+        }
+    }
+
+    /// [`force_at`](Self::force_at) without its checks, for
+    /// [`add_forces`](Self::add_forces), which validates once per call and
+    /// checks each force; non-finite for a non-finite input.
+    fn force_unvalidated(&self, p: &Vec3<S>, p_dot: &Vec3<S>) -> Vec3<S> {
         let depth = -p.z;
         // Out of contact only when the depth says so: a NaN height gives a
         // NaN force, which `add_forces` reports, rather than "no contact".
@@ -186,7 +219,7 @@ impl<S: Scalar> GroundContact<S> {
             // Velocity of the material point: body twist at p, then rotated.
             let p_dot_local = twist.lin + twist.ang.cross(&p_local);
             let p_dot_world = pose.rot.mul_vec(&p_dot_local);
-            let force_world = self.force_at(&p_world, &p_dot_world);
+            let force_world = self.force_unvalidated(&p_world, &p_dot_world);
             if !force_world.is_finite() {
                 return Err(Error::NonFiniteResult {
                     quantity: Quantity::Contact,

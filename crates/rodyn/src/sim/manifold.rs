@@ -126,11 +126,11 @@ pub(crate) fn displace<
     dt: S,
 ) -> [S; NQ] {
     match update {
-        ConfigurationUpdate::ExponentialMap => model.integrate(q, v, dt),
+        ConfigurationUpdate::ExponentialMap => model.integrate_unvalidated(q, v, dt),
         ConfigurationUpdate::Embedded { renormalize } => {
             let mut out = add_scaled(q, &configuration_rate(model, q, v), dt);
             if renormalize {
-                model.normalize(&mut out);
+                model.normalize_unvalidated(&mut out);
             }
             out
         }
@@ -154,7 +154,7 @@ pub(crate) fn for_dynamics<
 ) -> [S; NQ] {
     let mut out = *q;
     if let ConfigurationUpdate::Embedded { renormalize: true } = update {
-        model.normalize(&mut out);
+        model.normalize_unvalidated(&mut out);
     }
     out
 }

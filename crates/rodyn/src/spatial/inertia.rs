@@ -122,7 +122,8 @@ impl<S: Scalar> BodyInertia<S> for Inertia<S> {
 
 impl<S: Scalar> Inertia<S> {
     /// Checks that the inertia is physical: finite, non-negative mass,
-    /// products that do not overflow (`m |c|²`, the trace), a rotational
+    /// products that do not overflow (`m |c|²`, the trace, `m²` and the
+    /// squared trace about the origin, which ABA forms), a rotational
     /// inertia that is positive semi-definite and satisfies the triangle
     /// inequality of its diagonal (with a relative slack of 1e-9 for
     /// rounding). Used by [`Model::validate`](crate::Model::validate) and
@@ -154,11 +155,16 @@ impl<S: Scalar> Inertia<S> {
             return Err(ModelProblem::InvalidMass);
         }
         // The algorithms form m c, m |c|² (the inertia about the body's
-        // origin) and traces; finite parameters whose sums or products
-        // overflow are refused.
+        // origin) and traces, and ABA products of two such entries (U Uᵀ):
+        // finite parameters whose sums or products overflow are refused
+        // (a 1e300 kg body here, not later as a singular joint).
         let r = &self.rot_inertia;
         let trace = r.xx + r.yy + r.zz;
+        let origin = self.rot_inertia_at_origin();
+        let trace_at_origin = origin.xx + origin.yy + origin.zz;
         if !(self.mass * self.com.norm_squared()).is_finite()
+            || !(self.mass * self.mass).is_finite()
+            || !(trace_at_origin * trace_at_origin).is_finite()
             || !trace.is_finite()
             || !self.rot_inertia_at_origin().is_finite()
         {

@@ -109,7 +109,7 @@ impl Integrator for Rk4 {
                 q_k = if embedded {
                     add_scaled(&q, &r_k, next_offset)
                 } else {
-                    model.integrate(&q, &v_k, next_offset)
+                    model.integrate_unvalidated(&q, &v_k, next_offset)
                 };
                 v_k = add_scaled(&v, &a_k, next_offset);
                 z_k = add_scaled(&z, &zr_k, next_offset);
@@ -119,12 +119,12 @@ impl Integrator for Rk4 {
         let q_next = match self.update {
             ConfigurationUpdate::ExponentialMap => {
                 let mean_v: [S; NV] = core::array::from_fn(|k| sum_v[k] / S::from_f64(6.0));
-                model.integrate(&q, &mean_v, dt)
+                model.integrate_unvalidated(&q, &mean_v, dt)
             }
             ConfigurationUpdate::Embedded { renormalize } => {
                 let mut out = add_scaled(&q, &sum_r, sixth);
                 if renormalize {
-                    model.normalize(&mut out);
+                    model.normalize_unvalidated(&mut out);
                 }
                 out
             }
