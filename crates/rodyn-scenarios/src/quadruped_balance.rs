@@ -1,4 +1,4 @@
-//! A trotting controller for the [`quadruped`] that holds the trunk's
+//! A trotting controller for the [`quadruped`](crate::quadruped) that holds the trunk's
 //! height and attitude with inverse dynamics with contacts
 //! ([`rodyn::algorithm::contact_inverse_dynamics`]).
 //!

@@ -278,8 +278,8 @@ pub fn time_step<
         sdata.impulses[p] = Vec3::new(l[0], l[1], l[2]);
     }
     let v_next = cdata.ddq;
-    let mut q_next = model.integrate(q, &v_next, dt);
-    model.normalize(&mut q_next);
+    let mut q_next = model.integrate(q, &v_next, dt)?;
+    model.normalize(&mut q_next)?;
     let next = State::new(q_next, v_next);
     next.check_finite()?;
     let t = state.t + dt;
