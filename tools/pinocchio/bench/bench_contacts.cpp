@@ -4,6 +4,9 @@
 // as CONTACT_3D (LOCAL_WORLD_ALIGNED), Talos (talos_reduced.urdf, path in
 // argv[2]) with both soles as CONTACT_6D (LOCAL); no Baumgarte gains, one
 // proximal iteration with mu = 0: the exact KKT solve, as rodyn's.
+// constraintDynamics is marked deprecated in 4.1 ("the API will change"):
+// it is still the call that solves the same system as rodyn's.
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
 #include <pinocchio/algorithm/constrained-dynamics.hpp>
 #include <pinocchio/algorithm/joint-configuration.hpp>
 #include <pinocchio/parsers/urdf.hpp>
@@ -41,7 +44,7 @@ namespace
     PINOCCHIO_STD_VECTOR_WITH_EIGEN_ALLOCATOR(RigidConstraintData) datas;
     for (const auto & c : constraints)
       datas.push_back(RigidConstraintData(c));
-    initConstraintDynamics(model, data, constraints);
+    initConstraintDynamics(model, data, constraints, datas);
     ProximalSettings settings(1e-12, 0.0, 1);
     std::srand(0xC0C7);
     std::vector<Eigen::VectorXd> qs, vs, taus;

@@ -197,7 +197,7 @@ pub fn contact_inverse_dynamics<
         cdata.lambda[r] -= dot(&cdata.jc[r], ddq_wanted);
     }
     cholesky_solve(&cdata.delassus, rows, &mut cdata.lambda);
-    add_response(cdata, rows, ddq_wanted);
+    add_response(model, data, cdata, ddq_wanted);
     iddata.ddq = cdata.ddq;
 
     // 2. τ_full = M q̈ + h.

@@ -377,9 +377,30 @@ pub fn ltdl_solve<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, 
     b: &mut [S; NV],
 ) -> Result<()> {
     check_finite(b, Quantity::Acceleration)?;
+    solve_transposed(model, data, b);
+    // D z = y.
+    for (k, bk) in b.iter_mut().enumerate() {
+        *bk /= data.ltdl[k][k];
+    }
+    solve_lower(model, data, b);
+    check_result(b, Quantity::Acceleration)
+}
+
+/// `Lᵀ y = b` in place, leaves to root: `b[k] -= Σ L[s][k] b[s]` over the
+/// `s` below `k` (the first sweep of [`ltdl_solve`]).
+pub(crate) fn solve_transposed<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &Data<S, NB, NV, G>,
+    b: &mut [S; NV],
+) {
     let topology = model.topology();
     let h = &data.ltdl;
-    // Lᵀ y = b, leaves to root: b[k] -= Σ L[s][k] b[s] over the s below k.
     for k in (0..NV).rev() {
         let (b_to_k, b_below) = b.split_at_mut(k + 1);
         let end = topology.last_supported_v[k] + 1;
@@ -392,12 +413,23 @@ pub fn ltdl_solve<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, 
             _ => b_to_k[k] -= dot(l, b_below),
         }
     }
-    // D z = y.
-    for (k, bk) in b.iter_mut().enumerate() {
-        *bk /= h[k][k];
-    }
-    // L x = z, root to leaves: once b[k] is final, b[s] -= L[s][k] b[k]
-    // over the s below k.
+}
+
+/// `L x = z` in place, root to leaves: once `b[k]` is final, `b[s] -=
+/// L[s][k] b[k]` over the `s` below `k` (the last sweep of [`ltdl_solve`]).
+pub(crate) fn solve_lower<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &Data<S, NB, NV, G>,
+    b: &mut [S; NV],
+) {
+    let topology = model.topology();
+    let h = &data.ltdl;
     for k in 0..NV {
         let (b_to_k, b_below) = b.split_at_mut(k + 1);
         let end = topology.last_supported_v[k] + 1;
@@ -411,7 +443,44 @@ pub fn ltdl_solve<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, 
             (b_below, l) => sub_scaled(b_below, b_to_k[k], l),
         }
     }
-    check_result(b, Quantity::Acceleration)
+}
+
+/// `Lᵀ y = b` for a `b` that is zero outside the coordinates of `body` and
+/// its ancestors (a contact's Jacobian row): `y` is zero there too, and
+/// only that path is swept: `y[k] = b[k] − Σ L[s][k] y[s]` over the path's
+/// coordinates `s` below `k`. Reads only entries of `L` the sparsity keeps,
+/// so it holds for any tree numbering.
+pub(crate) fn solve_transposed_on_path<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &Data<S, NB, NV, G>,
+    body: usize,
+    b: &mut [S; NV],
+) {
+    let t = model.topology();
+    let h = &data.ltdl;
+    // The path's coordinates, leaves first (a parent's precede its child's).
+    let mut path = [0usize; NV];
+    let mut len = 0;
+    let mut i = Some(body);
+    while let Some(j) = i {
+        for k in (t.idx_v[j]..t.idx_v[j] + t.nv[j]).rev() {
+            path[len] = k;
+            len += 1;
+        }
+        i = t.parents[j];
+    }
+    for (n, &k) in path[..len].iter().enumerate() {
+        let below = path[..n]
+            .iter()
+            .fold(S::ZERO, |acc, &s| acc + h[k][s] * b[s]);
+        b[k] -= below;
+    }
 }
 
 /// Solves `M X = B` in place for `C` right-hand sides at once, with the

@@ -270,7 +270,7 @@ pub fn time_step<
         projected_gauss_seidel(&cdata.delassus, &free, &mut cdata.lambda, active, settings);
 
     // v⁺ = v_free + M⁻¹ J_cᵀ Λ; q⁺ = q ⊕ dt v⁺.
-    add_response(cdata, rows, &v_free);
+    add_response(model, data, cdata, &v_free);
     check_result(&cdata.lambda[..rows], Quantity::Contact)?;
     check_result(&cdata.ddq, Quantity::Velocity)?;
     for (c, &p) in index[..active].iter().enumerate() {

@@ -22,7 +22,7 @@
 //! CRBA (`O(n d)` for depth `d`), factorisation and `m` sparse solves. Its
 //! numbers are the KKT method's to rounding (both are held to Pinocchio's).
 
-use super::{add_response, baumgarte_less_drift, constrained_rows, ConstraintData, Contact};
+use super::{baumgarte_less_drift, constrained_rows, weighted_rows, ConstraintData, Contact};
 use crate::algorithm::aba::aba;
 use crate::algorithm::kinematics::forward_kinematics_acceleration;
 use crate::data::Data;
@@ -34,7 +34,7 @@ use crate::spatial::{Force, Motion, Spatial, Vec3};
 use crate::Scalar;
 
 /// `q̈₀`, the right-hand side `a_c* − a_c(q̈₀)` (in `cdata.lambda`), the
-/// responses `M⁻¹ J_rᵀ` (in `cdata.minv_jt`) and `G` (in
+/// responses `M⁻¹ J_rᵀ` (in `cdata.responses`) and `G` (in
 /// `cdata.delassus`, without the damping), leaving `data` as ABA and
 /// `forward_kinematics_acceleration` at `q̈₀` leave it. Returns `q̈₀`.
 #[allow(clippy::too_many_arguments)]
@@ -76,7 +76,7 @@ pub(super) fn form_delassus<
                 data,
                 contact.held_frame().body,
                 &force,
-                &mut cdata.minv_jt[column],
+                &mut cdata.responses[column],
                 &mut accel,
             );
             let mut row = 0;
@@ -107,7 +107,9 @@ pub(super) fn accelerations<S: Scalar, const NV: usize, const NC: usize>(
     cdata: &mut ConstraintData<S, NV, NC>,
     ddq0: &[S; NV],
 ) {
-    add_response(cdata, cdata.rows, ddq0);
+    let mut ddq = *ddq0;
+    weighted_rows(&cdata.responses, &cdata.lambda, cdata.rows, &mut ddq);
+    cdata.ddq = ddq;
 }
 
 /// The force (body frame, about the body's origin) whose generalised

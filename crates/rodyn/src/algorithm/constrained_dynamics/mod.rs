@@ -44,13 +44,9 @@ mod articulated;
 
 use super::crba::crba;
 use super::dense::{cholesky_in_place, cholesky_solve};
-use super::frames::{
-    frame_acceleration, frame_classical_acceleration, frame_placement, frame_velocity,
-    ReferenceFrame,
-};
+use super::frames::ReferenceFrame;
 use super::jacobian::{frame_jacobian, joint_jacobians, JacobianData};
-use super::kinematics::forward_kinematics_acceleration;
-use super::ltdl::{ltdl_factor, ltdl_solve};
+use super::ltdl::{ltdl_factor, ltdl_solve, solve_lower, solve_transposed_on_path};
 use super::rnea::nonlinear_effects;
 use crate::data::Data;
 use crate::error::{Error, Quantity, Result};
@@ -196,8 +192,10 @@ pub struct ConstraintData<S: Scalar, const NV: usize, const NC: usize> {
     pub jacobians: JacobianData<S, NV, Spatial>,
     /// `J_c`, one row per constrained direction (the first [`rows`](Self::rows)).
     pub jc: [[S; NV]; NC],
-    /// `M⁻¹ J_cᵀ`, by rows (column r of `M⁻¹ J_cᵀ` in row r).
-    pub minv_jt: [[S; NV]; NC],
+    /// The method's responses to the rows of `J_cᵀ`, by rows: for the KKT
+    /// method `W = D⁻¹ L⁻ᵀ J_cᵀ` (so `M⁻¹ J_cᵀ = L⁻¹ W`), for the
+    /// articulated-body method `M⁻¹ J_cᵀ` itself.
+    responses: [[S; NV]; NC],
     /// The Delassus matrix `J_c M⁻¹ J_cᵀ + μ I`, then its Cholesky factor.
     pub delassus: [[S; NC]; NC],
     /// The contact forces `λ`, in the contacts' order ([`Contact`] gives
@@ -217,7 +215,7 @@ impl<S: Scalar, const NV: usize, const NC: usize> ConstraintData<S, NV, NC> {
         Self {
             jacobians: JacobianData::new(),
             jc: [[S::ZERO; NV]; NC],
-            minv_jt: [[S::ZERO; NV]; NC],
+            responses: [[S::ZERO; NV]; NC],
             delassus: [[S::ZERO; NC]; NC],
             lambda: [S::ZERO; NC],
             ddq: [S::ZERO; NV],
@@ -378,8 +376,13 @@ fn kkt_solve<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, const
     ltdl_solve(model, data, &mut x0)?;
 
     // The right-hand side: the Baumgarte term less the drift J̇_c q̇ and
-    // J_c x₀.
-    forward_kinematics_acceleration(model, data, q, v, &[S::ZERO; NV])?;
+    // J_c x₀. The bodies' accelerations at q̈ = 0 are RNEA's, which leaves
+    // them less gravity (a − ⁱX₀ g) in `a_gf`; CRBA and the Jacobians
+    // (poses) left that and the velocities alone.
+    let gravity = *model.gravity();
+    for i in 0..NB {
+        data.a[i] = data.a_gf[i] + data.o_m_i[i].act_inv_motion(&gravity);
+    }
     let mut rhs = [S::ZERO; NC];
     let mut row = 0;
     for contact in contacts {
@@ -394,7 +397,7 @@ fn kkt_solve<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, const
     cholesky_solve(&cdata.delassus, rows, &mut cdata.lambda);
 
     // q̈ = x₀ + M⁻¹ J_cᵀ λ.
-    add_response(cdata, rows, &x0);
+    add_response(model, data, cdata, &x0);
     data.tau = h;
     Ok(())
 }
@@ -411,20 +414,33 @@ pub(crate) fn baumgarte_less_drift<S: Scalar, const NB: usize, const NV: usize>(
     out: &mut [S],
 ) -> Result<()> {
     let frame = contact.held_frame();
-    let reference = contact.reference();
-    let velocity = frame_velocity(data, frame, reference)?;
-    let placement = frame_placement(data, frame)?;
-    let (error, drift) = match contact {
+    let body = frame.body;
+    let (Some(o_m_b), Some(v_b), Some(a_b)) =
+        (data.o_m_i.get(body), data.v.get(body), data.a.get(body))
+    else {
+        return Err(Error::FrameBodyOutOfRange { body });
+    };
+    // The frame's pose once, then its velocity and acceleration in its own
+    // axes at its origin (what `frames` computes, without forming the pose
+    // three times).
+    let placement = o_m_b.compose(&frame.placement);
+    let v = frame.placement.act_inv_motion(v_b);
+    let a = frame.placement.act_inv_motion(a_b);
+    let (error, velocity, drift) = match contact {
+        // World axes at the point; the classical acceleration a + ω × v.
         Contact::Point { anchor, .. } => {
+            let to_world = |x: Vec3<S>| placement.rot.mul_vec(&x);
             let error = Motion::new(Vec3::ZERO, placement.trans - *anchor);
-            (error, frame_classical_acceleration(data, frame, reference)?)
+            let velocity = Motion::new(Vec3::ZERO, to_world(v.lin));
+            let drift = Motion::new(Vec3::ZERO, to_world(a.lin + v.ang.cross(&v.lin)));
+            (error, velocity, drift)
         }
         // Pinocchio's corrector: e = −log6(ᶜX_anchor), in the frame's axes;
         // the frame's spatial (not classical) acceleration, as its rows are
         // the frame's local Jacobian.
         Contact::Frame { anchor, .. } => {
             let error = -log6(&placement.inverse().compose(anchor));
-            (error, frame_acceleration(data, frame, reference)?)
+            (error, v, a)
         }
     };
     let target =
@@ -489,7 +505,7 @@ pub fn impulse_dynamics<
     }
     cholesky_solve(&cdata.delassus, rows, &mut cdata.lambda);
     // v⁺ = v⁻ + M⁻¹ J_cᵀ Λ.
-    add_response(cdata, rows, v_before);
+    add_response(model, data, cdata, v_before);
     check_result(&cdata.lambda[..rows], Quantity::Contact)?;
     check_result(&cdata.ddq, Quantity::Velocity)?;
     Ok((&cdata.ddq, &cdata.lambda[..rows]))
@@ -595,6 +611,9 @@ pub(crate) fn form_delassus<
         }
     }
     ltdl_factor(model, data)?;
+    // J_c from the joint Jacobians. (Forming each contact's columns along
+    // its path from the joints' subspaces instead measured slower on
+    // Solo12: the joint Jacobians' own pass is cheaper per column.)
     joint_jacobians(model, data, &mut cdata.jacobians, q)?;
     let mut row = 0;
     for contact in contacts {
@@ -617,13 +636,30 @@ pub(crate) fn form_delassus<
         }
         row += contact.rows();
     }
-    for r in 0..rows {
-        cdata.minv_jt[r] = cdata.jc[r];
-        ltdl_solve(model, data, &mut cdata.minv_jt[r])?;
+    // G = J_c L⁻¹ D⁻¹ L⁻ᵀ J_cᵀ = Yᵀ D⁻¹ Y with Y = L⁻ᵀ J_cᵀ: one sweep per
+    // row, along the path of its contact's body only (a row is zero off
+    // it), and W = D⁻¹ Y kept for the response. The pivots are inverted
+    // once: a division costs several multiplications.
+    let d_inv: [S; NV] = core::array::from_fn(|k| S::ONE / data.ltdl[k][k]);
+    let mut row = 0;
+    for contact in contacts {
+        let body = contact.held_frame().body;
+        for r in row..row + contact.rows() {
+            let w = &mut cdata.responses[r];
+            *w = cdata.jc[r];
+            solve_transposed_on_path(model, data, body, w);
+            for (wk, dk) in w.iter_mut().zip(&d_inv) {
+                *wk *= *dk;
+            }
+        }
+        row += contact.rows();
     }
+    // Dense sums: over a few tens of coordinates they vectorise, which
+    // gathering a row's path does not (measured slower on Solo12).
     for r in 0..rows {
+        let d_w: [S; NV] = core::array::from_fn(|k| data.ltdl[k][k] * cdata.responses[r][k]);
         for s in 0..=r {
-            let g = dot(&cdata.jc[r], &cdata.minv_jt[s]);
+            let g = dot(&d_w, &cdata.responses[s]);
             cdata.delassus[r][s] = g;
             cdata.delassus[s][r] = g;
         }
@@ -644,15 +680,35 @@ fn contact_of_row<S: Scalar>(contacts: &[Contact<S>], row: usize) -> usize {
         .unwrap_or(contacts.len())
 }
 
-/// `cdata.ddq = base + M⁻¹ J_cᵀ λ` from the rows of `M⁻¹ J_cᵀ` and `λ`.
-pub(crate) fn add_response<S: Scalar, const NV: usize, const NC: usize>(
+/// `cdata.ddq = base + M⁻¹ J_cᵀ λ` after the KKT method's
+/// [`form_delassus`]: `L⁻¹ (W λ)`, one sweep for all rows.
+pub(crate) fn add_response<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    const NC: usize,
+>(
+    model: &Model<S, NB, NQ, NV, Spatial>,
+    data: &Data<S, NB, NV, Spatial>,
     cdata: &mut ConstraintData<S, NV, NC>,
-    rows: usize,
     base: &[S; NV],
 ) {
-    cdata.ddq = *base;
-    for (row, l) in cdata.minv_jt[..rows].iter().zip(&cdata.lambda[..rows]) {
-        for (a, y) in cdata.ddq.iter_mut().zip(row) {
+    let mut z = [S::ZERO; NV];
+    weighted_rows(&cdata.responses, &cdata.lambda, cdata.rows, &mut z);
+    solve_lower(model, data, &mut z);
+    cdata.ddq = core::array::from_fn(|k| base[k] + z[k]);
+}
+
+/// `out += Σ_r λ_r rows[r]` over the first `n` rows.
+fn weighted_rows<S: Scalar, const NV: usize, const NC: usize>(
+    rows: &[[S; NV]; NC],
+    lambda: &[S; NC],
+    n: usize,
+    out: &mut [S; NV],
+) {
+    for (row, l) in rows[..n].iter().zip(&lambda[..n]) {
+        for (a, y) in out.iter_mut().zip(row) {
             *a += *y * *l;
         }
     }
