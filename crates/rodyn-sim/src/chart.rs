@@ -11,6 +11,9 @@ use std::path::Path;
 pub const STEPS: [f64; 6] = [1e-4, 2e-4, 5e-4, 1e-3, 2e-3, 5e-3];
 /// Step of the reference run (f64, ABA, RK4).
 pub const REFERENCE_STEP: f64 = 1e-5;
+/// Step of the rigid-contact reference run (f64): the rigid-contact points
+/// are held to a rigid run, not to the compliant feet's.
+pub const RIGID_REFERENCE_STEP: f64 = 2e-5;
 /// Simulated time of each run (s).
 pub const DURATION: f64 = 1.0;
 /// Timing repeats; the median is reported.
@@ -52,7 +55,7 @@ pub fn sweep(scenario: Scenario) -> Vec<Point> {
         "reference run failed: {:?}",
         reference.failure
     );
-    let combos: Vec<_> = [Method::Aba, Method::Crba]
+    let mut combos: Vec<_> = [Method::Aba, Method::Crba]
         .into_iter()
         .flat_map(|m| {
             [ScalarType::F32, ScalarType::F64]
@@ -62,6 +65,28 @@ pub fn sweep(scenario: Scenario) -> Vec<Point> {
         .flat_map(|(m, s)| IntegratorKind::ALL.into_iter().map(move |i| (m, s, i)))
         .flat_map(|(m, s, i)| STEPS.into_iter().map(move |dt| (m, s, i, dt)))
         .collect();
+    // Rigid feet for a robot that has them, against a rigid reference.
+    let rigid_reference = scenario.has_feet().then(|| {
+        let reference = run(
+            &RunConfig {
+                dt: RIGID_REFERENCE_STEP,
+                integrator: IntegratorKind::RigidContact,
+                ..base
+            },
+            None,
+        );
+        assert!(
+            reference.failure.is_none(),
+            "rigid reference run failed: {:?}",
+            reference.failure
+        );
+        for scalar in [ScalarType::F32, ScalarType::F64] {
+            for dt in STEPS {
+                combos.push((Method::Crba, scalar, IntegratorKind::RigidContact, dt));
+            }
+        }
+        reference
+    });
     let bar = ProgressBar::new(combos.len() as u64);
     bar.set_message(scenario.name());
     let mut points = Vec::new();
@@ -88,7 +113,10 @@ pub fn sweep(scenario: Scenario) -> Vec<Point> {
             integrator,
             dt,
             cost: costs[REPEATS / 2],
-            error: t.max_error_against(&reference),
+            error: match (&rigid_reference, integrator) {
+                (Some(rigid), IntegratorKind::RigidContact) => t.max_error_against(rigid),
+                _ => t.max_error_against(&reference),
+            },
             failure: t.failure.clone(),
         });
         bar.inc(1);
@@ -97,10 +125,14 @@ pub fn sweep(scenario: Scenario) -> Vec<Point> {
     points
 }
 
-/// Indices of the points no other point beats on both cost and error.
+/// Indices of the points no other point beats on both cost and error,
+/// among the runs held to the main reference (rigid-contact runs are held
+/// to their own, so their errors are not comparable with the others').
 pub fn pareto_front(points: &[Point]) -> Vec<usize> {
     let mut order: Vec<usize> = (0..points.len())
-        .filter(|&i| points[i].error.is_finite())
+        .filter(|&i| {
+            points[i].error.is_finite() && points[i].integrator != IntegratorKind::RigidContact
+        })
         .collect();
     order.sort_by(|&a, &b| points[a].cost.total_cmp(&points[b].cost));
     let mut front = Vec::new();
@@ -114,10 +146,19 @@ pub fn pareto_front(points: &[Point]) -> Vec<usize> {
     front
 }
 
+/// The method's name as the chart shows it (rigid contact: its KKT solve).
+fn method_name(p: &Point) -> &'static str {
+    if p.integrator == IntegratorKind::RigidContact {
+        "KKT"
+    } else {
+        p.method.name()
+    }
+}
+
 fn label(p: &Point) -> String {
     format!(
         "{} {} {} dt={:.0e}",
-        p.method.name(),
+        method_name(p),
         p.scalar.name(),
         p.integrator.name(),
         p.dt
@@ -146,7 +187,7 @@ pub fn chart_command(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
             writeln!(
                 csv,
                 "{},{},{},{:e},{:.4e},{:.4e},{},{}",
-                p.method.name(),
+                method_name(p),
                 p.scalar.name(),
                 p.integrator.name(),
                 p.dt,
@@ -181,14 +222,35 @@ pub fn chart_command(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
                 }
             }
         }
+        if scenario.has_feet() {
+            for (si, scalar) in [ScalarType::F32, ScalarType::F64].into_iter().enumerate() {
+                let pts: Vec<(f64, f64)> = points
+                    .iter()
+                    .filter(|p| p.integrator == IntegratorKind::RigidContact && p.scalar == scalar)
+                    .map(|p| (p.cost, p.error))
+                    .collect();
+                series.push(Series::new(
+                    format!("rigid contact {} (vs rigid ref.)", scalar.name()),
+                    pts,
+                    Mark::Triangles,
+                    10 + si,
+                ));
+            }
+        }
         let front_points = front
             .iter()
             .map(|&i| (points[i].cost, points[i].error))
             .collect();
         series.push(Series::new("Pareto front", front_points, Mark::ThinLine, 9));
-        let title = format!(
-            "{name}: cost against error ({DURATION} s simulated; circles ABA, crosses CRBA)"
-        );
+        let title = if scenario.has_feet() {
+            format!(
+                "{name}: cost against error ({DURATION} s simulated; circles ABA, crosses CRBA, triangles rigid feet)"
+            )
+        } else {
+            format!(
+                "{name}: cost against error ({DURATION} s simulated; circles ABA, crosses CRBA)"
+            )
+        };
         plot(
             &out.join(format!("chart-{name}.svg")),
             &Figure {

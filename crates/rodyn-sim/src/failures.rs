@@ -203,6 +203,9 @@ pub fn largest_stable_step(kind: IntegratorKind, k: f64, steps: usize) -> f64 {
         IntegratorKind::ImplicitEuler => {
             spring_stays_bounded(ImplicitEuler::default(), k, dt, steps)
         }
+        // Rigid contact is a scheme for feet, not an ODE integrator:
+        // `IntegratorKind::ALL` leaves it out of these maps.
+        IntegratorKind::RigidContact => false,
     };
     let (mut lo, mut hi) = (1e-9f64.ln(), 10f64.ln());
     if stable(hi.exp()) {
@@ -555,6 +558,8 @@ fn contact(out: &Path) -> Res {
                     IntegratorKind::ImplicitEuler => {
                         quadruped_lands(ImplicitEuler::default(), k, dt)
                     }
+                    // No ground stiffness to vary: not in `ALL`.
+                    IntegratorKind::RigidContact => Ok(false),
                 };
                 matches!(r, Ok(true))
             };

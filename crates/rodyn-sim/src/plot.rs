@@ -24,6 +24,8 @@ pub enum Mark {
     LinePoints,
     /// Large crosses (failures, limits).
     Crosses,
+    /// Filled triangles (a third kind of point).
+    Triangles,
 }
 
 /// One named series.
@@ -77,7 +79,7 @@ pub struct Figure<'a> {
 
 /// A qualitative palette readable in print.
 pub fn color(index: usize) -> RGBColor {
-    const PALETTE: [RGBColor; 10] = [
+    const PALETTE: [RGBColor; 12] = [
         RGBColor(31, 119, 180),
         RGBColor(255, 127, 14),
         RGBColor(44, 160, 44),
@@ -88,6 +90,8 @@ pub fn color(index: usize) -> RGBColor {
         RGBColor(127, 127, 127),
         RGBColor(188, 189, 34),
         RGBColor(23, 190, 207),
+        RGBColor(0, 0, 0),
+        RGBColor(174, 199, 232),
     ];
     PALETTE[index % PALETTE.len()]
 }
@@ -202,8 +206,18 @@ pub fn plot(
         .collect();
     let (x0, x1) = range(data.iter().flatten().map(|p| p.0), figure.x_scale);
     let (y0, y1) = range(data.iter().flatten().map(|p| p.1), figure.y_scale);
-    let root = SVGBackend::new(path, (800, 520)).into_drawing_area();
-    root.fill(&WHITE)?;
+    // Up to SMALL_LEGEND entries the legend sits in the plot's upper right
+    // corner; a longer one would cover data there, so it gets a panel of
+    // its own to the right of the plot.
+    let side_legend = series.len() > SMALL_LEGEND;
+    let width = if side_legend {
+        800 + SIDE_LEGEND_WIDTH
+    } else {
+        800
+    };
+    let canvas = SVGBackend::new(path, (width, 520)).into_drawing_area();
+    canvas.fill(&WHITE)?;
+    let (root, panel) = canvas.split_horizontally(800);
     let mut chart = ChartBuilder::on(&root)
         .caption(figure.title, ("sans-serif", 20))
         .margin(12)
@@ -250,15 +264,62 @@ pub fn plot(
                     .label(&s.name)
                     .legend(move |(x, y)| Cross::new((x + 9, y), 5, legend_color.stroke_width(2)));
             }
+            Mark::Triangles => {
+                chart
+                    .draw_series(
+                        points
+                            .iter()
+                            .map(|&p| TriangleMarker::new(p, 5, c.filled())),
+                    )?
+                    .label(&s.name)
+                    .legend(move |(x, y)| {
+                        TriangleMarker::new((x + 9, y), 5, legend_color.filled())
+                    });
+            }
         }
     }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK.mix(0.3))
-        .position(SeriesLabelPosition::UpperRight)
-        .label_font(("sans-serif", 13))
-        .draw()?;
-    root.present()?;
+    if side_legend {
+        draw_side_legend(&panel, series)?;
+    } else {
+        chart
+            .configure_series_labels()
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK.mix(0.3))
+            .position(SeriesLabelPosition::UpperRight)
+            .label_font(("sans-serif", 13))
+            .draw()?;
+    }
+    canvas.present()?;
+    Ok(())
+}
+
+/// Most legend entries drawn inside the plot.
+const SMALL_LEGEND: usize = 6;
+/// Width of the side legend panel (px).
+const SIDE_LEGEND_WIDTH: u32 = 300;
+
+/// The legend as a column of entries in `panel`, each its series' mark in
+/// its colour and its name.
+fn draw_side_legend<DB: DrawingBackend>(
+    panel: &DrawingArea<DB, plotters::coord::Shift>,
+    series: &[Series],
+) -> Result<(), Box<dyn std::error::Error>>
+where
+    DB::ErrorType: 'static,
+{
+    let font = ("sans-serif", 13).into_font().color(&BLACK);
+    for (k, s) in series.iter().enumerate() {
+        let y = 60 + 22 * k as i32;
+        let c = color(s.color);
+        match s.mark {
+            Mark::Line | Mark::ThinLine | Mark::LinePoints => {
+                panel.draw(&PathElement::new([(8, y), (26, y)], c.stroke_width(2)))?
+            }
+            Mark::Points => panel.draw(&Circle::new((17, y), 3, c.filled()))?,
+            Mark::Crosses => panel.draw(&Cross::new((17, y), 5, c.stroke_width(2)))?,
+            Mark::Triangles => panel.draw(&TriangleMarker::new((17, y), 5, c.filled()))?,
+        }
+        panel.draw(&Text::new(s.name.clone(), (34, y - 7), font.clone()))?;
+    }
     Ok(())
 }

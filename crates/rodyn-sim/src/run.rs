@@ -151,7 +151,7 @@ pub fn run_command(config: &RunConfig, out: &Path) -> Result<(), Box<dyn std::er
     let last_t = trajectory.t.last().copied().unwrap_or(0.0);
     println!(
         "{name}: {} {} {} dt = {} s, simulated {last_t:.3} s in {:.3} s of host time ({:.2e} s per simulated s)",
-        config.method.name(),
+        config.method_name(),
         config.scalar.name(),
         config.integrator.name(),
         config.dt,

@@ -58,6 +58,10 @@ pub enum IntegratorKind {
     Rk4,
     /// Linearly implicit Euler with a finite-difference Jacobian.
     ImplicitEuler,
+    /// The quadruped only: rigid feet with Coulomb friction, one Moreau–Jean
+    /// step per step (`rodyn::sim::time_stepping`), the PD's damping
+    /// implicit; the forward-dynamics method is the KKT solve on CRBA.
+    RigidContact,
 }
 
 impl IntegratorKind {
@@ -75,6 +79,7 @@ impl IntegratorKind {
             Self::SemiImplicitEuler => SemiImplicitEuler::NAME,
             Self::Rk4 => Rk4::NAME,
             Self::ImplicitEuler => ImplicitEuler::NAME,
+            Self::RigidContact => "rigid-contact",
         }
     }
 }
@@ -108,6 +113,11 @@ impl Scenario {
             Self::QuadrupedTrot => "quadruped-trot",
             Self::MuscleRobot => "muscle-robot",
         }
+    }
+
+    /// Whether the scenario has feet for [`IntegratorKind::RigidContact`].
+    pub fn has_feet(self) -> bool {
+        matches!(self, Self::QuadrupedStand | Self::QuadrupedTrot)
     }
 
     /// The step a run takes unless told otherwise (s): 0.5 ms for the
@@ -167,6 +177,18 @@ pub struct RunConfig {
     pub sample_interval: f64,
 }
 
+impl RunConfig {
+    /// The dynamics method as reports name it: rigid contact always solves
+    /// its contacts by the KKT method on CRBA, whatever `method` says.
+    pub fn method_name(&self) -> &'static str {
+        if self.integrator == IntegratorKind::RigidContact {
+            "KKT"
+        } else {
+            self.method.name()
+        }
+    }
+}
+
 /// Runs a scenario; a dynamics error ends the run early and is recorded in
 /// the trajectory.
 pub fn run(config: &RunConfig, progress: Option<&ProgressBar>) -> Trajectory {
@@ -199,6 +221,30 @@ fn run_typed<S: Scalar>(config: &RunConfig, progress: Option<&ProgressBar>) -> T
                 0.0
             };
             let state = loads.initial_state(loads.stance_height() + S::from_f64(drop));
+            if config.integrator == IntegratorKind::RigidContact {
+                let ground = quadruped::rigid_ground();
+                let mut data = Data::new();
+                let mut contact = quadruped::RigidContactData::new();
+                let dt = S::from_f64(config.dt);
+                return drive(
+                    config,
+                    state,
+                    Vec::new(),
+                    progress,
+                    Some(quadruped_guard),
+                    |state| {
+                        quadruped::rigid_step(
+                            &model,
+                            &mut data,
+                            &mut contact,
+                            &loads,
+                            &ground,
+                            state,
+                            dt,
+                        )
+                    },
+                );
+            }
             by_integrator(
                 config,
                 &model,
@@ -253,6 +299,11 @@ where
         IntegratorKind::SemiImplicitEuler => run.by_method(SemiImplicitEuler::default()),
         IntegratorKind::Rk4 => run.by_method(Rk4::default()),
         IntegratorKind::ImplicitEuler => run.by_method(ImplicitEuler::default()),
+        IntegratorKind::RigidContact => Trajectory::failed(
+            NQ,
+            NV,
+            format!("{}: no feet for rigid contact", config.scenario.name()),
+        ),
     }
 }
 
@@ -300,39 +351,54 @@ where
             config,
             model,
             mut loads,
-            mut state,
+            state,
             internal_names,
             progress,
             guard,
         } = self;
-        let steps = (config.duration / config.dt).round() as usize;
-        let every = ((config.sample_interval / config.dt).round() as usize).max(1);
         let dt = S::from_f64(config.dt);
         let mut data = Data::new();
-        let mut trajectory = Trajectory::with_internal_states(NQ, NV, internal_names);
-        trajectory.record(&state.cast::<f64>());
-        let start = Instant::now();
-        for n in 1..=steps {
-            if let Err(e) = integrator.step(method, model, &mut data, &mut state, dt, &mut loads) {
-                trajectory.failure = Some(format!("t = {:.4} s: {e}", state.t.to_f64()));
+        drive(config, state, internal_names, progress, guard, |state| {
+            integrator.step(method, model, &mut data, state, dt, &mut loads)
+        })
+    }
+}
+
+/// The stepping loop: `step` advances the state by one step; times only
+/// the steps and the recording of samples.
+fn drive<S: Scalar, const NQ: usize, const NV: usize, const NZ: usize>(
+    config: &RunConfig,
+    mut state: State<S, NQ, NV, NZ>,
+    internal_names: Vec<String>,
+    progress: Option<&ProgressBar>,
+    guard: Option<Guard>,
+    mut step: impl FnMut(&mut State<S, NQ, NV, NZ>) -> rodyn::Result<()>,
+) -> Trajectory {
+    let steps = (config.duration / config.dt).round() as usize;
+    let every = ((config.sample_interval / config.dt).round() as usize).max(1);
+    let mut trajectory = Trajectory::with_internal_states(NQ, NV, internal_names);
+    trajectory.record(&state.cast::<f64>());
+    let start = Instant::now();
+    for n in 1..=steps {
+        if let Err(e) = step(&mut state) {
+            trajectory.failure = Some(format!("t = {:.4} s: {e}", state.t.to_f64()));
+            break;
+        }
+        if n % every == 0 || n == steps {
+            let sample = state.cast::<f64>();
+            trajectory.record(&sample);
+            if let Some(cause) = guard.and_then(|g| g(&sample.q)) {
+                trajectory.failure = Some(format!("t = {:.4} s: {cause}", state.t.to_f64()));
                 break;
             }
-            if n % every == 0 || n == steps {
-                let sample = state.cast::<f64>();
-                trajectory.record(&sample);
-                if let Some(cause) = guard.and_then(|g| g(&sample.q)) {
-                    trajectory.failure = Some(format!("t = {:.4} s: {cause}", state.t.to_f64()));
-                    break;
-                }
-            }
-            if let Some(bar) = progress {
-                if n % 1000 == 0 {
-                    bar.set_position(n as u64);
-                }
+        }
+        if let Some(bar) = progress {
+            if n % 1000 == 0 {
+                bar.set_position(n as u64);
             }
         }
-        trajectory.wall_time = start.elapsed();
-        trajectory.steps = steps;
-        trajectory
     }
+    trajectory.wall_time = start.elapsed();
+    trajectory.steps = steps;
+    trajectory
 }

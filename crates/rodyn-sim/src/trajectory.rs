@@ -39,6 +39,14 @@ impl Trajectory {
         }
     }
 
+    /// A trajectory of a run that could not start, with the reason.
+    pub fn failed(nq: usize, nv: usize, reason: String) -> Self {
+        Self {
+            failure: Some(reason),
+            ..Self::new(nq, nv)
+        }
+    }
+
     /// An empty trajectory that also records the internal states `names`.
     pub fn with_internal_states(nq: usize, nv: usize, names: Vec<String>) -> Self {
         Self {
