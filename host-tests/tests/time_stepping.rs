@@ -137,7 +137,7 @@ fn a_sliding_box_stops_where_coulomb_says() {
 
 /// Dropped from 10 cm with a spin, the box lands without bouncing off or
 /// sinking more than a millimetre, and comes to rest: the contacts never
-/// add energy.
+/// add energy, and every impulse stays in its friction cone.
 #[test]
 fn a_dropped_box_lands_and_rests() {
     let gravity = Vec3::new(0.0, 0.0, -G);
@@ -154,6 +154,11 @@ fn a_dropped_box_lands_and_rests() {
     let mut after_landing = f64::INFINITY;
     run(&mut state, 1.5, 1e-3, 0.8, gravity, |s, sdata| {
         deepest = deepest.min(sdata.gaps.iter().copied().fold(0.0, f64::min));
+        // Every impulse inside its friction cone, pushing, never pulling.
+        for i in &sdata.impulses {
+            let tangential = i.x.hypot(i.y);
+            assert!(i.z >= 0.0 && tangential <= 0.8 * i.z * (1.0 + 1e-12), "{i:?}");
+        }
         if landed_at.is_none() && sdata.impulses.iter().any(|i| i.z > 0.0) {
             landed_at = Some(s.t);
         }
