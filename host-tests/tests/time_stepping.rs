@@ -157,7 +157,10 @@ fn a_dropped_box_lands_and_rests() {
         // Every impulse inside its friction cone, pushing, never pulling.
         for i in &sdata.impulses {
             let tangential = i.x.hypot(i.y);
-            assert!(i.z >= 0.0 && tangential <= 0.8 * i.z * (1.0 + 1e-12), "{i:?}");
+            assert!(
+                i.z >= 0.0 && tangential <= 0.8 * i.z * (1.0 + 1e-12),
+                "{i:?}"
+            );
         }
         if landed_at.is_none() && sdata.impulses.iter().any(|i| i.z > 0.0) {
             landed_at = Some(s.t);

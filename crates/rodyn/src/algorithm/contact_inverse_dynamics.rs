@@ -38,7 +38,7 @@
 
 use super::constrained_dynamics::{
     add_response, baumgarte_less_drift, check_input, dot, prepare, ConstraintData,
-    ConstraintSettings, Contact,
+    ConstraintSettings, Contact, Poses,
 };
 use super::dense::{cholesky_in_place, cholesky_solve};
 use super::kinematics::forward_kinematics_acceleration;
@@ -183,6 +183,7 @@ pub fn contact_inverse_dynamics<
         q,
         contacts,
         constraint.damping,
+        Poses::Compute,
     )?;
     forward_kinematics_acceleration(model, data, q, v, &[S::ZERO; NV])?;
     let cdata = &mut iddata.constraint;

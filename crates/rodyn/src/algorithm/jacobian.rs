@@ -119,6 +119,36 @@ pub fn joint_jacobians<
     Ok(())
 }
 
+/// [`joint_jacobians`] from the joint transforms already in `data.li_m_i`
+/// (left by RNEA or ABA at the same configuration): the world poses by
+/// composition only, without forming the joints' transforms again.
+/// Leaves valid `data.o_m_i` and `jac.j`.
+pub(crate) fn joint_jacobians_from_transforms<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: FrameSpace,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    jac: &mut JacobianData<S, NV, G>,
+) {
+    let t = model.topology();
+    for i in 0..NB {
+        let o_m_i = match t.parents[i] {
+            Some(p) => data.o_m_i[p].compose(&data.li_m_i[i]),
+            None => data.li_m_i[i],
+        };
+        data.o_m_i[i] = o_m_i;
+        let joint = model.joint(i);
+        let iv = t.idx_v[i];
+        for k in 0..t.nv[i] {
+            jac.j[iv + k] = G::act_subspace_column(&o_m_i, joint, k);
+        }
+    }
+}
+
 /// All joint Jacobians and their time derivatives at `(q, v)`: `jac.j` and
 /// `jac.dj` (world columns). Runs
 /// [`forward_kinematics_velocity`]; leaves valid `data.li_m_i`,

@@ -50,7 +50,7 @@
 //! impulse so that a user can see how far from converged it stopped.
 
 use crate::algorithm::constrained_dynamics::{
-    add_response, dot, form_delassus, ConstraintData, Contact,
+    add_response, dot, form_delassus, ConstraintData, Contact, Poses,
 };
 use crate::algorithm::frames::frame_placement;
 use crate::algorithm::kinematics::forward_kinematics;
@@ -242,6 +242,7 @@ pub fn time_step<
         contacts,
         S::ZERO,
         Some(&added),
+        Poses::FromJointTransforms,
     )?;
     let mut v_free: [S; NV] = core::array::from_fn(|k| tau[k] - bias[k] - damping[k] * v[k]);
     ltdl_solve(model, data, &mut v_free)?;

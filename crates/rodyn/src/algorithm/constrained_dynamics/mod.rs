@@ -45,7 +45,9 @@ mod articulated;
 use super::crba::crba;
 use super::dense::{cholesky_in_place, cholesky_solve};
 use super::frames::ReferenceFrame;
-use super::jacobian::{frame_jacobian, joint_jacobians, JacobianData};
+use super::jacobian::{
+    frame_jacobian, joint_jacobians, joint_jacobians_from_transforms, JacobianData,
+};
 use super::ltdl::{ltdl_factor, ltdl_solve, solve_lower, solve_transposed_on_path};
 use super::rnea::nonlinear_effects;
 use crate::data::Data;
@@ -370,7 +372,15 @@ fn kkt_solve<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, const
     // Unconstrained: M x₀ = τ − h; then J_c, M⁻¹ J_cᵀ and the Delassus
     // matrix's factor.
     let h = *nonlinear_effects(model, data, q, v, None)?;
-    prepare(model, data, cdata, q, contacts, settings.damping)?;
+    prepare(
+        model,
+        data,
+        cdata,
+        q,
+        contacts,
+        settings.damping,
+        Poses::FromJointTransforms,
+    )?;
     let rows = cdata.rows;
     let mut x0: [S; NV] = core::array::from_fn(|k| tau[k] - h[k]);
     ltdl_solve(model, data, &mut x0)?;
@@ -498,7 +508,7 @@ pub fn impulse_dynamics<
     };
     check_input(contacts, &settings, NB, NC)?;
     check_finite(v_before, Quantity::Velocity)?;
-    prepare(model, data, cdata, q, contacts, damping)?;
+    prepare(model, data, cdata, q, contacts, damping, Poses::Compute)?;
     let rows = cdata.rows;
     for r in 0..rows {
         cdata.lambda[r] = -(S::ONE + restitution) * dot(&cdata.jc[r], v_before);
@@ -544,8 +554,8 @@ pub(crate) fn check_input<S: Scalar>(
     Ok(())
 }
 
-/// CRBA and its factorisation, `J_c`, `M⁻¹ J_cᵀ` and the Cholesky factor
-/// of `J_c M⁻¹ J_cᵀ + μ I`.
+/// CRBA and its factorisation, `J_c`, the responses and the Cholesky
+/// factor of `J_c M⁻¹ J_cᵀ + μ I`.
 pub(crate) fn prepare<
     S: Scalar,
     const NB: usize,
@@ -559,8 +569,9 @@ pub(crate) fn prepare<
     q: &[S; NQ],
     contacts: &[Contact<S>],
     damping: S,
+    poses: Poses,
 ) -> Result<()> {
-    form_delassus(model, data, cdata, q, contacts, damping, None)?;
+    form_delassus(model, data, cdata, q, contacts, damping, None, poses)?;
     factor_delassus(cdata, contacts, S::ZERO)
 }
 
@@ -601,6 +612,7 @@ pub(crate) fn form_delassus<
     contacts: &[Contact<S>],
     damping: S,
     added_diagonal: Option<&[S; NV]>,
+    poses: Poses,
 ) -> Result<()> {
     let rows = constrained_rows(contacts);
     cdata.rows = rows;
@@ -613,8 +625,15 @@ pub(crate) fn form_delassus<
     ltdl_factor(model, data)?;
     // J_c from the joint Jacobians. (Forming each contact's columns along
     // its path from the joints' subspaces instead measured slower on
-    // Solo12: the joint Jacobians' own pass is cheaper per column.)
-    joint_jacobians(model, data, &mut cdata.jacobians, q)?;
+    // Solo12: the joint Jacobians' own pass is cheaper per column.) After
+    // RNEA the joints' transforms are known: the poses need only be
+    // composed.
+    match poses {
+        Poses::Compute => joint_jacobians(model, data, &mut cdata.jacobians, q)?,
+        Poses::FromJointTransforms => {
+            joint_jacobians_from_transforms(model, data, &mut cdata.jacobians);
+        }
+    }
     let mut row = 0;
     for contact in contacts {
         frame_jacobian(
@@ -666,6 +685,15 @@ pub(crate) fn form_delassus<
         cdata.delassus[r][r] += damping;
     }
     Ok(())
+}
+
+/// Where [`form_delassus`] takes the bodies' poses from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Poses {
+    /// Forward kinematics at `q`.
+    Compute,
+    /// Composed from `data.li_m_i`, valid at `q` (after RNEA there).
+    FromJointTransforms,
 }
 
 /// The index of the contact that constrained row `row` belongs to.
