@@ -18,16 +18,15 @@
 //! Two methods solve it behind one interface ([`ConstraintMethod`], as
 //! [`forward_dynamics`](super::forward_dynamics) offers ABA and CRBA):
 //!
-//! - [`ConstraintMethod::Kkt`], the default: the KKT system by its Schur
-//!   complement (Featherstone, *Rigid Body Dynamics Algorithms*, §8.2;
-//!   Pinocchio's `constraintDynamics` solves the same system): CRBA and
-//!   the branch-aware `Lᵀ D L` give `M⁻¹`, the Delassus matrix `G = J_c M⁻¹
-//!   J_cᵀ` is formed, `(G + μ I) λ = −(J_c M⁻¹ (τ − h) + J̇_c q̇ + K_p e + K_d
-//!   J_c q̇)` is solved by a small Cholesky factorisation, and `q̈ = M⁻¹ (τ −
-//!   h + J_cᵀ λ)`.
-//! - [`ConstraintMethod::ArticulatedBody`]: ABA, then `G` from unit test
-//!   forces propagated through ABA's articulated inertias (see
-//!   `articulated.rs`), never forming `M`.
+//! - [`ConstraintMethod::Kkt`], the default (`kkt.rs`): the KKT system by
+//!   its Schur complement (Featherstone, *Rigid Body Dynamics Algorithms*,
+//!   §8.2; Pinocchio's `constraintDynamics` solves the same system): CRBA
+//!   and the branch-aware `M = Lᵀ D L`, the Delassus matrix `G = J_c M⁻¹
+//!   J_cᵀ`, `(G + μ I) λ = −(J_c M⁻¹ (τ − h) + J̇_c q̇ + K_p e + K_d J_c q̇)`
+//!   by a small Cholesky factorisation, and `q̈ = M⁻¹ (τ − h + J_cᵀ λ)`.
+//! - [`ConstraintMethod::ArticulatedBody`] (`articulated.rs`): ABA, then `G`
+//!   from unit test forces propagated through ABA's articulated inertias,
+//!   never forming `M`.
 //!
 //! Redundant contacts (a rank-deficient `J_c`, such as four coplanar feet
 //! of a robot whose legs cannot hold them apart) make `G` singular: with
@@ -35,121 +34,34 @@
 //! contact; a damping `μ > 0` regularises it (Tikhonov: the `λ` of least
 //! norm among the near-solutions, the constraint then met to `O(μ)`).
 //!
-//! Cost of the KKT method: one RNEA, one CRBA and factorisation, one `Lᵀ D
-//! L` solve per constrained row, the joint Jacobians, and a dense `m × m`
-//! solve for `m` rows; of the articulated-body method: one ABA, one
-//! kinematics pass, two sweeps per row and the same dense solve.
+//! Cost of the KKT method: one RNEA, one CRBA and factorisation, the joint
+//! Jacobians, a half sweep of `Lᵀ D L` along its contact's path per
+//! constrained row, one sweep for the response, and a dense `m × m` solve
+//! for `m` rows; of the articulated-body method: one ABA, one kinematics
+//! pass, two sweeps per row and the same dense solve. `contact.rs` holds
+//! what a contact is and the right-hand side of its rows.
 
 mod articulated;
+mod contact;
+mod kkt;
 
-use super::crba::crba;
+pub(crate) use contact::baumgarte_less_drift;
+pub use contact::{constrained_rows, Contact};
+pub(crate) use kkt::{add_response, form_delassus, prepare, Poses};
+
 use super::dense::{cholesky_in_place, cholesky_solve};
-use super::frames::ReferenceFrame;
-use super::jacobian::{
-    frame_jacobian, joint_jacobians, joint_jacobians_from_transforms, JacobianData,
-};
-use super::ltdl::{ltdl_factor, ltdl_solve, solve_lower, solve_transposed_on_path};
-use super::rnea::nonlinear_effects;
+use super::jacobian::JacobianData;
 use crate::data::Data;
 use crate::error::{Error, Quantity, Result};
-use crate::frame::Frame;
 use crate::model::{check_finite, check_result, Model};
 use crate::space::{RigidTransform, VectorOps};
-use crate::spatial::{log6, Motion, Spatial, Transform, Vec3};
+use crate::spatial::{Motion, Spatial};
 use crate::Scalar;
 
 /// Relative size (of the Delassus matrix's largest diagonal entry, in
 /// units of ε) below which a pivot counts as zero: the contacts are
 /// redundant.
 const PIVOT_TOLERANCE: f64 = 1e3;
-
-/// A contact the environment holds: a point (three constrained rows) or a
-/// whole frame (six).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Contact<S: Scalar> {
-    /// The origin of `frame` kept at `anchor` (world frame, m). Its force
-    /// `λ` (N) is in world axes at the point: Pinocchio's `CONTACT_3D` in
-    /// `LOCAL_WORLD_ALIGNED`. A foot that may roll about its sole.
-    Point {
-        /// The contact point, as a frame on its body (only its origin counts).
-        frame: Frame<S, Spatial>,
-        /// Where the point should be, world frame (m): the Baumgarte
-        /// term's reference. Set it where the contact was made.
-        anchor: Vec3<S>,
-    },
-    /// `frame` kept at the placement `anchor` (world frame): position and
-    /// orientation. Its wrench `λ` is in the frame's own axes about its
-    /// origin, force (N) then moment (N m): Pinocchio's `CONTACT_6D` in
-    /// `LOCAL`. A flat foot on the ground, a hand on a handle.
-    Frame {
-        /// The held frame.
-        frame: Frame<S, Spatial>,
-        /// Where the frame should be, world frame: the Baumgarte term's
-        /// reference (its error is the twist `log6(ᶜX_anchor)`).
-        anchor: Transform<S>,
-    },
-}
-
-impl<S: Scalar> Contact<S> {
-    /// A point contact (see [`Contact::Point`]).
-    #[must_use]
-    pub const fn point(frame: Frame<S, Spatial>, anchor: Vec3<S>) -> Self {
-        Self::Point { frame, anchor }
-    }
-
-    /// A frame contact (see [`Contact::Frame`]).
-    #[must_use]
-    pub const fn frame(frame: Frame<S, Spatial>, anchor: Transform<S>) -> Self {
-        Self::Frame { frame, anchor }
-    }
-
-    /// The contact in scalar type `T`.
-    #[must_use]
-    pub fn cast<T: Scalar>(&self) -> Contact<T> {
-        match self {
-            Self::Point { frame, anchor } => Contact::point(frame.cast(), anchor.cast()),
-            Self::Frame { frame, anchor } => Contact::frame(frame.cast(), anchor.cast()),
-        }
-    }
-
-    /// Constrained rows: 3 for a point, 6 for a frame.
-    #[must_use]
-    pub const fn rows(&self) -> usize {
-        match self {
-            Self::Point { .. } => 3,
-            Self::Frame { .. } => 6,
-        }
-    }
-
-    /// The held frame.
-    #[must_use]
-    pub const fn held_frame(&self) -> &Frame<S, Spatial> {
-        match self {
-            Self::Point { frame, .. } | Self::Frame { frame, .. } => frame,
-        }
-    }
-
-    fn anchor_is_finite(&self) -> bool {
-        match self {
-            Self::Point { anchor, .. } => anchor.is_finite(),
-            Self::Frame { anchor, .. } => anchor.is_finite(),
-        }
-    }
-
-    /// The reference frame of the rows and of `λ`.
-    const fn reference(&self) -> ReferenceFrame {
-        match self {
-            Self::Point { .. } => ReferenceFrame::LocalWorldAligned,
-            Self::Frame { .. } => ReferenceFrame::Local,
-        }
-    }
-}
-
-/// The rows of all `contacts`: the sum of [`Contact::rows`].
-#[must_use]
-pub fn constrained_rows<S: Scalar>(contacts: &[Contact<S>]) -> usize {
-    contacts.iter().map(Contact::rows).sum()
-}
 
 /// How [`constrained_forward_dynamics_with`] solves the system (see the
 /// [module](self)): the two give the same numbers to rounding.
@@ -239,8 +151,9 @@ impl<S: Scalar, const NV: usize, const NC: usize> Default for ConstraintData<S, 
 /// `contacts`' order: three entries per point contact, six per frame
 /// contact ([`Contact`] gives their axes and units).
 ///
-/// Leaves valid in `data`: what [`crba`], [`ltdl_factor`] and
-/// [`joint_jacobians`] leave, `o_m_i`, `v` and `a` at `(q, v, 0)`; `tau`
+/// Leaves valid in `data`: what [`crba`](crate::algorithm::crba::crba),
+/// [`ltdl_factor`](crate::algorithm::ltdl::ltdl_factor) and
+/// [`joint_jacobians`](crate::algorithm::jacobian::joint_jacobians) leave, `o_m_i`, `v` and `a` at `(q, v, 0)`; `tau`
 /// holds the bias forces `h`. In `cdata`: every field.
 ///
 /// # Errors
@@ -341,7 +254,7 @@ pub fn constrained_forward_dynamics_with<
     check_input(contacts, settings, NB, NC)?;
     check_finite(tau, Quantity::Torque)?;
     match method {
-        ConstraintMethod::Kkt => kkt_solve(model, data, cdata, q, v, tau, contacts, settings)?,
+        ConstraintMethod::Kkt => kkt::kkt_solve(model, data, cdata, q, v, tau, contacts, settings)?,
         ConstraintMethod::ArticulatedBody => {
             let ddq0 =
                 articulated::form_delassus(model, data, cdata, q, v, tau, contacts, settings)?;
@@ -357,113 +270,6 @@ pub fn constrained_forward_dynamics_with<
     Ok((&cdata.ddq, &cdata.lambda[..rows]))
 }
 
-/// The KKT method into `cdata.ddq` and `cdata.lambda`.
-#[allow(clippy::too_many_arguments)]
-fn kkt_solve<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, const NC: usize>(
-    model: &Model<S, NB, NQ, NV, Spatial>,
-    data: &mut Data<S, NB, NV, Spatial>,
-    cdata: &mut ConstraintData<S, NV, NC>,
-    q: &[S; NQ],
-    v: &[S; NV],
-    tau: &[S; NV],
-    contacts: &[Contact<S>],
-    settings: &ConstraintSettings<S>,
-) -> Result<()> {
-    // Unconstrained: M x₀ = τ − h; then J_c, M⁻¹ J_cᵀ and the Delassus
-    // matrix's factor.
-    let h = *nonlinear_effects(model, data, q, v, None)?;
-    prepare(
-        model,
-        data,
-        cdata,
-        q,
-        contacts,
-        settings.damping,
-        Poses::FromJointTransforms,
-    )?;
-    let rows = cdata.rows;
-    let mut x0: [S; NV] = core::array::from_fn(|k| tau[k] - h[k]);
-    ltdl_solve(model, data, &mut x0)?;
-
-    // The right-hand side: the Baumgarte term less the drift J̇_c q̇ and
-    // J_c x₀. The bodies' accelerations at q̈ = 0 are RNEA's, which leaves
-    // them less gravity (a − ⁱX₀ g) in `a_gf`; CRBA and the Jacobians
-    // (poses) left that and the velocities alone.
-    let gravity = *model.gravity();
-    for i in 0..NB {
-        data.a[i] = data.a_gf[i] + data.o_m_i[i].act_inv_motion(&gravity);
-    }
-    let mut rhs = [S::ZERO; NC];
-    let mut row = 0;
-    for contact in contacts {
-        let n = contact.rows();
-        baumgarte_less_drift(data, contact, settings, &mut rhs[row..row + n])?;
-        for (r, value) in rhs[row..row + n].iter_mut().enumerate() {
-            *value -= dot(&cdata.jc[row + r], &x0);
-        }
-        row += n;
-    }
-    cdata.lambda = rhs;
-    cholesky_solve(&cdata.delassus, rows, &mut cdata.lambda);
-
-    // q̈ = x₀ + M⁻¹ J_cᵀ λ.
-    add_response(model, data, cdata, &x0);
-    data.tau = h;
-    Ok(())
-}
-
-/// `−K_p e − K_d v_c − a_drift` of one contact, in its rows' order
-/// (linear before angular): `e` the contact's error against its anchor,
-/// `v_c` its velocity and `a_drift` its acceleration at `q̈ = 0`, all in the
-/// contact's reference frame. Reads `data` after
-/// `forward_kinematics_acceleration` at `q̈ = 0`.
-pub(crate) fn baumgarte_less_drift<S: Scalar, const NB: usize, const NV: usize>(
-    data: &Data<S, NB, NV, Spatial>,
-    contact: &Contact<S>,
-    settings: &ConstraintSettings<S>,
-    out: &mut [S],
-) -> Result<()> {
-    let frame = contact.held_frame();
-    let body = frame.body;
-    let (Some(o_m_b), Some(v_b), Some(a_b)) =
-        (data.o_m_i.get(body), data.v.get(body), data.a.get(body))
-    else {
-        return Err(Error::FrameBodyOutOfRange { body });
-    };
-    // The frame's pose once, then its velocity and acceleration in its own
-    // axes at its origin (what `frames` computes, without forming the pose
-    // three times).
-    let placement = o_m_b.compose(&frame.placement);
-    let v = frame.placement.act_inv_motion(v_b);
-    let a = frame.placement.act_inv_motion(a_b);
-    let (error, velocity, drift) = match contact {
-        // World axes at the point; the classical acceleration a + ω × v.
-        Contact::Point { anchor, .. } => {
-            let to_world = |x: Vec3<S>| placement.rot.mul_vec(&x);
-            let error = Motion::new(Vec3::ZERO, placement.trans - *anchor);
-            let velocity = Motion::new(Vec3::ZERO, to_world(v.lin));
-            let drift = Motion::new(Vec3::ZERO, to_world(a.lin + v.ang.cross(&v.lin)));
-            (error, velocity, drift)
-        }
-        // Pinocchio's corrector: e = −log6(ᶜX_anchor), in the frame's axes;
-        // the frame's spatial (not classical) acceleration, as its rows are
-        // the frame's local Jacobian.
-        Contact::Frame { anchor, .. } => {
-            let error = -log6(&placement.inverse().compose(anchor));
-            (error, v, a)
-        }
-    };
-    let target =
-        |e: Vec3<S>, v: Vec3<S>, a: Vec3<S>| (-(e * settings.kp) - v * settings.kd - a).to_array();
-    let lin = target(error.lin, velocity.lin, drift.lin);
-    out[..3].copy_from_slice(&lin);
-    if out.len() == 6 {
-        let ang = target(error.ang, velocity.ang, drift.ang);
-        out[3..].copy_from_slice(&ang);
-    }
-    Ok(())
-}
-
 /// The velocities just after an impact at configuration `q`: the contacts
 /// meet the environment with velocity `J_c v⁻` and leave with `−e J_c v⁻`
 /// (`e`, `restitution`, in `[0, 1]`; 0 for a plastic impact that stops
@@ -472,8 +278,9 @@ pub(crate) fn baumgarte_less_drift<S: Scalar, const NB: usize, const NV: usize>(
 /// with `e ≤ 1` never adds kinetic energy. Returns `(v⁺, Λ)`; `damping`
 /// regularises redundant contacts as in [`constrained_forward_dynamics`].
 ///
-/// Leaves valid in `data`: what [`crba`], [`ltdl_factor`] and
-/// [`joint_jacobians`] leave. In `cdata`: every field (`ddq` holds `v⁺`,
+/// Leaves valid in `data`: what [`crba`](crate::algorithm::crba::crba),
+/// [`ltdl_factor`](crate::algorithm::ltdl::ltdl_factor) and
+/// [`joint_jacobians`](crate::algorithm::jacobian::joint_jacobians) leave. In `cdata`: every field (`ddq` holds `v⁺`,
 /// `lambda` holds `Λ`).
 ///
 /// # Errors
@@ -554,29 +361,8 @@ pub(crate) fn check_input<S: Scalar>(
     Ok(())
 }
 
-/// CRBA and its factorisation, `J_c`, the responses and the Cholesky
-/// factor of `J_c M⁻¹ J_cᵀ + μ I`.
-pub(crate) fn prepare<
-    S: Scalar,
-    const NB: usize,
-    const NQ: usize,
-    const NV: usize,
-    const NC: usize,
->(
-    model: &Model<S, NB, NQ, NV, Spatial>,
-    data: &mut Data<S, NB, NV, Spatial>,
-    cdata: &mut ConstraintData<S, NV, NC>,
-    q: &[S; NQ],
-    contacts: &[Contact<S>],
-    damping: S,
-    poses: Poses,
-) -> Result<()> {
-    form_delassus(model, data, cdata, q, contacts, damping, None, poses)?;
-    factor_delassus(cdata, contacts, S::ZERO)
-}
-
 /// Adds `damping` to the Delassus matrix's diagonal and factors it.
-fn factor_delassus<S: Scalar, const NV: usize, const NC: usize>(
+pub(crate) fn factor_delassus<S: Scalar, const NV: usize, const NC: usize>(
     cdata: &mut ConstraintData<S, NV, NC>,
     contacts: &[Contact<S>],
     damping: S,
@@ -592,110 +378,6 @@ fn factor_delassus<S: Scalar, const NV: usize, const NC: usize>(
     })
 }
 
-/// CRBA and its factorisation, `J_c` (each contact's rows in its reference
-/// frame), `M⁻¹ J_cᵀ` and the Delassus matrix `J_c M⁻¹ J_cᵀ + μ I` itself
-/// (not factored: the friction solver of
-/// [`sim::time_stepping`](crate::sim::time_stepping) works on it). With
-/// `added_diagonal`, `M` is replaced by `M + diag(added_diagonal)` before
-/// the factorisation (time stepping's implicit joint damping).
-pub(crate) fn form_delassus<
-    S: Scalar,
-    const NB: usize,
-    const NQ: usize,
-    const NV: usize,
-    const NC: usize,
->(
-    model: &Model<S, NB, NQ, NV, Spatial>,
-    data: &mut Data<S, NB, NV, Spatial>,
-    cdata: &mut ConstraintData<S, NV, NC>,
-    q: &[S; NQ],
-    contacts: &[Contact<S>],
-    damping: S,
-    added_diagonal: Option<&[S; NV]>,
-    poses: Poses,
-) -> Result<()> {
-    let rows = constrained_rows(contacts);
-    cdata.rows = rows;
-    crba(model, data, q)?;
-    if let Some(added) = added_diagonal {
-        for (k, d) in added.iter().enumerate() {
-            data.mass_matrix[k][k] += *d;
-        }
-    }
-    ltdl_factor(model, data)?;
-    // J_c from the joint Jacobians. (Forming each contact's columns along
-    // its path from the joints' subspaces instead measured slower on
-    // Solo12: the joint Jacobians' own pass is cheaper per column.) After
-    // RNEA the joints' transforms are known: the poses need only be
-    // composed.
-    match poses {
-        Poses::Compute => joint_jacobians(model, data, &mut cdata.jacobians, q)?,
-        Poses::FromJointTransforms => {
-            joint_jacobians_from_transforms(model, data, &mut cdata.jacobians);
-        }
-    }
-    let mut row = 0;
-    for contact in contacts {
-        frame_jacobian(
-            model,
-            data,
-            &cdata.jacobians,
-            contact.held_frame(),
-            contact.reference(),
-            &mut cdata.columns,
-        )?;
-        for (r, jc_row) in cdata.jc[row..row + contact.rows()].iter_mut().enumerate() {
-            for (entry, column) in jc_row.iter_mut().zip(&cdata.columns) {
-                *entry = if r < 3 {
-                    column.lin.to_array()[r]
-                } else {
-                    column.ang.to_array()[r - 3]
-                };
-            }
-        }
-        row += contact.rows();
-    }
-    // G = J_c L⁻¹ D⁻¹ L⁻ᵀ J_cᵀ = Yᵀ D⁻¹ Y with Y = L⁻ᵀ J_cᵀ: one sweep per
-    // row, along the path of its contact's body only (a row is zero off
-    // it), and W = D⁻¹ Y kept for the response. The pivots are inverted
-    // once: a division costs several multiplications.
-    let d_inv: [S; NV] = core::array::from_fn(|k| S::ONE / data.ltdl[k][k]);
-    let mut row = 0;
-    for contact in contacts {
-        let body = contact.held_frame().body;
-        for r in row..row + contact.rows() {
-            let w = &mut cdata.responses[r];
-            *w = cdata.jc[r];
-            solve_transposed_on_path(model, data, body, w);
-            for (wk, dk) in w.iter_mut().zip(&d_inv) {
-                *wk *= *dk;
-            }
-        }
-        row += contact.rows();
-    }
-    // Dense sums: over a few tens of coordinates they vectorise, which
-    // gathering a row's path does not (measured slower on Solo12).
-    for r in 0..rows {
-        let d_w: [S; NV] = core::array::from_fn(|k| data.ltdl[k][k] * cdata.responses[r][k]);
-        for s in 0..=r {
-            let g = dot(&d_w, &cdata.responses[s]);
-            cdata.delassus[r][s] = g;
-            cdata.delassus[s][r] = g;
-        }
-        cdata.delassus[r][r] += damping;
-    }
-    Ok(())
-}
-
-/// Where [`form_delassus`] takes the bodies' poses from.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Poses {
-    /// Forward kinematics at `q`.
-    Compute,
-    /// Composed from `data.li_m_i`, valid at `q` (after RNEA there).
-    FromJointTransforms,
-}
-
 /// The index of the contact that constrained row `row` belongs to.
 fn contact_of_row<S: Scalar>(contacts: &[Contact<S>], row: usize) -> usize {
     let mut end = 0;
@@ -708,28 +390,8 @@ fn contact_of_row<S: Scalar>(contacts: &[Contact<S>], row: usize) -> usize {
         .unwrap_or(contacts.len())
 }
 
-/// `cdata.ddq = base + M⁻¹ J_cᵀ λ` after the KKT method's
-/// [`form_delassus`]: `L⁻¹ (W λ)`, one sweep for all rows.
-pub(crate) fn add_response<
-    S: Scalar,
-    const NB: usize,
-    const NQ: usize,
-    const NV: usize,
-    const NC: usize,
->(
-    model: &Model<S, NB, NQ, NV, Spatial>,
-    data: &Data<S, NB, NV, Spatial>,
-    cdata: &mut ConstraintData<S, NV, NC>,
-    base: &[S; NV],
-) {
-    let mut z = [S::ZERO; NV];
-    weighted_rows(&cdata.responses, &cdata.lambda, cdata.rows, &mut z);
-    solve_lower(model, data, &mut z);
-    cdata.ddq = core::array::from_fn(|k| base[k] + z[k]);
-}
-
 /// `out += Σ_r λ_r rows[r]` over the first `n` rows.
-fn weighted_rows<S: Scalar, const NV: usize, const NC: usize>(
+pub(crate) fn weighted_rows<S: Scalar, const NV: usize, const NC: usize>(
     rows: &[[S; NV]; NC],
     lambda: &[S; NC],
     n: usize,

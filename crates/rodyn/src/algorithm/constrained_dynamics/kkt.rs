@@ -1,0 +1,230 @@
+//! The KKT method: CRBA and the branch-aware `M = Lᵀ D L`, the Delassus
+//! matrix `G = Yᵀ D⁻¹ Y` with `Y = L⁻ᵀ J_cᵀ` (one half sweep per row along
+//! its contact's path), its Cholesky factor, and `q̈ = M⁻¹ (τ − h) + L⁻¹
+//! D⁻¹ Y λ` (one sweep for all rows). The time stepping and the inverse
+//! dynamics with contacts reuse its pieces.
+
+use super::{
+    baumgarte_less_drift, constrained_rows, dot, factor_delassus, weighted_rows, ConstraintData,
+    ConstraintSettings, Contact,
+};
+use crate::algorithm::crba::crba;
+use crate::algorithm::dense::cholesky_solve;
+use crate::algorithm::jacobian::{
+    frame_jacobian, joint_jacobians, joint_jacobians_from_transforms,
+};
+use crate::algorithm::ltdl::{ltdl_factor, ltdl_solve, solve_lower, solve_transposed_on_path};
+use crate::algorithm::rnea::nonlinear_effects;
+use crate::data::Data;
+use crate::error::Result;
+use crate::model::Model;
+use crate::space::RigidTransform;
+use crate::spatial::Spatial;
+use crate::Scalar;
+
+/// The KKT method into `cdata.ddq` and `cdata.lambda`.
+#[allow(clippy::too_many_arguments)]
+pub(super) fn kkt_solve<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    const NC: usize,
+>(
+    model: &Model<S, NB, NQ, NV, Spatial>,
+    data: &mut Data<S, NB, NV, Spatial>,
+    cdata: &mut ConstraintData<S, NV, NC>,
+    q: &[S; NQ],
+    v: &[S; NV],
+    tau: &[S; NV],
+    contacts: &[Contact<S>],
+    settings: &ConstraintSettings<S>,
+) -> Result<()> {
+    // Unconstrained: M x₀ = τ − h; then J_c, M⁻¹ J_cᵀ and the Delassus
+    // matrix's factor.
+    let h = *nonlinear_effects(model, data, q, v, None)?;
+    prepare(
+        model,
+        data,
+        cdata,
+        q,
+        contacts,
+        settings.damping,
+        Poses::FromJointTransforms,
+    )?;
+    let rows = cdata.rows;
+    let mut x0: [S; NV] = core::array::from_fn(|k| tau[k] - h[k]);
+    ltdl_solve(model, data, &mut x0)?;
+
+    // The right-hand side: the Baumgarte term less the drift J̇_c q̇ and
+    // J_c x₀. The bodies' accelerations at q̈ = 0 are RNEA's, which leaves
+    // them less gravity (a − ⁱX₀ g) in `a_gf`; CRBA and the Jacobians
+    // (poses) left that and the velocities alone.
+    let gravity = *model.gravity();
+    for i in 0..NB {
+        data.a[i] = data.a_gf[i] + data.o_m_i[i].act_inv_motion(&gravity);
+    }
+    let mut rhs = [S::ZERO; NC];
+    let mut row = 0;
+    for contact in contacts {
+        let n = contact.rows();
+        baumgarte_less_drift(data, contact, settings, &mut rhs[row..row + n])?;
+        for (r, value) in rhs[row..row + n].iter_mut().enumerate() {
+            *value -= dot(&cdata.jc[row + r], &x0);
+        }
+        row += n;
+    }
+    cdata.lambda = rhs;
+    cholesky_solve(&cdata.delassus, rows, &mut cdata.lambda);
+
+    // q̈ = x₀ + M⁻¹ J_cᵀ λ.
+    add_response(model, data, cdata, &x0);
+    data.tau = h;
+    Ok(())
+}
+
+/// CRBA and its factorisation, `J_c`, the responses and the Cholesky
+/// factor of `J_c M⁻¹ J_cᵀ + μ I`.
+pub(crate) fn prepare<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    const NC: usize,
+>(
+    model: &Model<S, NB, NQ, NV, Spatial>,
+    data: &mut Data<S, NB, NV, Spatial>,
+    cdata: &mut ConstraintData<S, NV, NC>,
+    q: &[S; NQ],
+    contacts: &[Contact<S>],
+    damping: S,
+    poses: Poses,
+) -> Result<()> {
+    form_delassus(model, data, cdata, q, contacts, damping, None, poses)?;
+    factor_delassus(cdata, contacts, S::ZERO)
+}
+
+/// CRBA and its factorisation, `J_c` (each contact's rows in its reference
+/// frame), `M⁻¹ J_cᵀ` and the Delassus matrix `J_c M⁻¹ J_cᵀ + μ I` itself
+/// (not factored: the friction solver of
+/// [`sim::time_stepping`](crate::sim::time_stepping) works on it). With
+/// `added_diagonal`, `M` is replaced by `M + diag(added_diagonal)` before
+/// the factorisation (time stepping's implicit joint damping).
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn form_delassus<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    const NC: usize,
+>(
+    model: &Model<S, NB, NQ, NV, Spatial>,
+    data: &mut Data<S, NB, NV, Spatial>,
+    cdata: &mut ConstraintData<S, NV, NC>,
+    q: &[S; NQ],
+    contacts: &[Contact<S>],
+    damping: S,
+    added_diagonal: Option<&[S; NV]>,
+    poses: Poses,
+) -> Result<()> {
+    let rows = constrained_rows(contacts);
+    cdata.rows = rows;
+    crba(model, data, q)?;
+    if let Some(added) = added_diagonal {
+        for (k, d) in added.iter().enumerate() {
+            data.mass_matrix[k][k] += *d;
+        }
+    }
+    ltdl_factor(model, data)?;
+    // J_c from the joint Jacobians. (Forming each contact's columns along
+    // its path from the joints' subspaces instead measured slower on
+    // Solo12: the joint Jacobians' own pass is cheaper per column.) After
+    // RNEA the joints' transforms are known: the poses need only be
+    // composed.
+    match poses {
+        Poses::Compute => joint_jacobians(model, data, &mut cdata.jacobians, q)?,
+        Poses::FromJointTransforms => {
+            joint_jacobians_from_transforms(model, data, &mut cdata.jacobians);
+        }
+    }
+    let mut row = 0;
+    for contact in contacts {
+        frame_jacobian(
+            model,
+            data,
+            &cdata.jacobians,
+            contact.held_frame(),
+            contact.reference(),
+            &mut cdata.columns,
+        )?;
+        for (r, jc_row) in cdata.jc[row..row + contact.rows()].iter_mut().enumerate() {
+            for (entry, column) in jc_row.iter_mut().zip(&cdata.columns) {
+                *entry = if r < 3 {
+                    column.lin.to_array()[r]
+                } else {
+                    column.ang.to_array()[r - 3]
+                };
+            }
+        }
+        row += contact.rows();
+    }
+    // G = J_c L⁻¹ D⁻¹ L⁻ᵀ J_cᵀ = Yᵀ D⁻¹ Y with Y = L⁻ᵀ J_cᵀ: one sweep per
+    // row, along the path of its contact's body only (a row is zero off
+    // it), and W = D⁻¹ Y kept for the response. The pivots are inverted
+    // once: a division costs several multiplications.
+    let d_inv: [S; NV] = core::array::from_fn(|k| S::ONE / data.ltdl[k][k]);
+    let mut row = 0;
+    for contact in contacts {
+        let body = contact.held_frame().body;
+        for r in row..row + contact.rows() {
+            let w = &mut cdata.responses[r];
+            *w = cdata.jc[r];
+            solve_transposed_on_path(model, data, body, w);
+            for (wk, dk) in w.iter_mut().zip(&d_inv) {
+                *wk *= *dk;
+            }
+        }
+        row += contact.rows();
+    }
+    // Dense sums: over a few tens of coordinates they vectorise, which
+    // gathering a row's path does not (measured slower on Solo12).
+    for r in 0..rows {
+        let d_w: [S; NV] = core::array::from_fn(|k| data.ltdl[k][k] * cdata.responses[r][k]);
+        for s in 0..=r {
+            let g = dot(&d_w, &cdata.responses[s]);
+            cdata.delassus[r][s] = g;
+            cdata.delassus[s][r] = g;
+        }
+        cdata.delassus[r][r] += damping;
+    }
+    Ok(())
+}
+
+/// Where [`form_delassus`] takes the bodies' poses from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Poses {
+    /// Forward kinematics at `q`.
+    Compute,
+    /// Composed from `data.li_m_i`, valid at `q` (after RNEA there).
+    FromJointTransforms,
+}
+
+/// `cdata.ddq = base + M⁻¹ J_cᵀ λ` after the KKT method's
+/// [`form_delassus`]: `L⁻¹ (W λ)`, one sweep for all rows.
+pub(crate) fn add_response<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    const NC: usize,
+>(
+    model: &Model<S, NB, NQ, NV, Spatial>,
+    data: &Data<S, NB, NV, Spatial>,
+    cdata: &mut ConstraintData<S, NV, NC>,
+    base: &[S; NV],
+) {
+    let mut z = [S::ZERO; NV];
+    weighted_rows(&cdata.responses, &cdata.lambda, cdata.rows, &mut z);
+    solve_lower(model, data, &mut z);
+    cdata.ddq = core::array::from_fn(|k| base[k] + z[k]);
+}
