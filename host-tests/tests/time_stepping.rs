@@ -278,11 +278,35 @@ fn bad_settings_are_errors() {
     )
     .unwrap_err();
     assert_eq!(error, Error::FrameBodyOutOfRange { body: 1 });
-    for dt in [0.0, f64::NAN, -1e-3] {
-        assert!(time_step(
+    let time = rodyn::error::Quantity::Time;
+    for (dt, want) in [
+        (
+            0.0,
+            Error::OutOfRange {
+                quantity: time,
+                index: 1,
+            },
+        ),
+        (
+            -1e-3,
+            Error::OutOfRange {
+                quantity: time,
+                index: 1,
+            },
+        ),
+        (
+            f64::NAN,
+            Error::NonFinite {
+                quantity: time,
+                index: 0,
+            },
+        ),
+    ] {
+        let error = time_step(
             &model, &mut data, &mut sdata, &mut state, &[0.0; 6], &[0.0; 6], &points, &good, dt,
         )
-        .is_err());
+        .unwrap_err();
+        assert_eq!(error, want, "dt = {dt}");
     }
     let mut negative = [0.0; 6];
     negative[1] = -1.0;

@@ -161,15 +161,17 @@ impl<S: Scalar, const NV: usize, const NC: usize, const NP: usize> Default
 /// points' last impulses in `sdata` warm-start the solver: keep one
 /// `sdata` per simulation.
 ///
-/// On error the state is unchanged.
+/// On error the state is unchanged (`sdata` holds the failed attempt's
+/// gaps and contacts).
 ///
 /// # Errors
 /// [`Error::TooManyConstraints`] when `NC < 3 NP`,
 /// [`Error::InvalidGain`] for bad settings (see [`TimeSteppingSettings`];
 /// index 4 for a negative or non-finite damping entry),
 /// [`Error::FrameBodyOutOfRange`] for a point on a missing body,
-/// [`Error::NonFinite`] for a non-finite time, step, state or torque, and
-/// those of the algorithms it runs.
+/// [`Error::NonFinite`] for a non-finite time, step, state or torque,
+/// [`Error::OutOfRange`] (`Quantity::Time`, index 1) for a step that is
+/// not positive, and those of the algorithms it runs.
 #[allow(clippy::too_many_arguments)]
 pub fn time_step<
     S: Scalar,
@@ -201,7 +203,7 @@ pub fn time_step<
     }
     check_time(state.t, dt)?;
     if dt.to_f64() <= 0.0 {
-        return Err(Error::NonFinite {
+        return Err(Error::OutOfRange {
             quantity: Quantity::Time,
             index: 1,
         });
