@@ -94,9 +94,9 @@ pub struct ContactInverseDynamicsData<S: Scalar, const NV: usize, const NC: usiz
     /// the contacts could not supply. Zero (to rounding and `ε`) when the
     /// wanted motion is possible.
     pub residual: [S; NV],
-    /// Bit `c` set: point contact `c` needs a force outside its friction
-    /// cone (or pulls on the ground).
-    pub outside_cone: u32,
+    /// Entry `c` true: point contact `c` needs a force outside its friction
+    /// cone, or pulls on the ground (the first `contacts.len()` entries).
+    pub outside_cone: [bool; NC],
 }
 
 impl<S: Scalar, const NV: usize, const NC: usize> ContactInverseDynamicsData<S, NV, NC> {
@@ -108,7 +108,7 @@ impl<S: Scalar, const NV: usize, const NC: usize> ContactInverseDynamicsData<S, 
             tau: [S::ZERO; NV],
             ddq: [S::ZERO; NV],
             residual: [S::ZERO; NV],
-            outside_cone: 0,
+            outside_cone: [false; NC],
         }
     }
 
@@ -139,7 +139,7 @@ impl<S: Scalar, const NV: usize, const NC: usize> Default
 /// As [`constrained_forward_dynamics`](super::constrained_dynamics::constrained_forward_dynamics)
 /// for the contacts and `constraint` (use a damping for redundant
 /// contacts); [`Error::InvalidGain`] with index 3 for `unactuated` above 6
-/// or `NV`, or more than 32 contacts, 4 for a non-positive or non-finite
+/// or `NV`, 4 for a non-positive or non-finite
 /// `regularisation`, 5 for a bad `friction`; [`Error::NonFinite`] for a
 /// non-finite wanted acceleration.
 #[allow(clippy::too_many_arguments)]
@@ -163,7 +163,7 @@ pub fn contact_inverse_dynamics<
 ) -> Result<&'d [S; NV]> {
     check_input(contacts, constraint, NB, NC)?;
     let nu = settings.unactuated;
-    if nu > NV.min(UNACTUATED_MAX) || contacts.len() > 32 {
+    if nu > NV.min(UNACTUATED_MAX) {
         return Err(Error::InvalidGain { index: 3 });
     }
     let eps = settings.regularisation;
@@ -244,14 +244,14 @@ pub fn contact_inverse_dynamics<
     check_result(&cdata.lambda[..rows], Quantity::Contact)?;
     check_result(&iddata.tau, Quantity::Torque)?;
 
-    iddata.outside_cone = 0;
+    iddata.outside_cone = [false; NC];
     let mut row = 0;
     for (c, contact) in contacts.iter().enumerate() {
         if let Contact::Point { .. } = contact {
             let l = &cdata.lambda[row..row + 3];
             let tangential = (l[0] * l[0] + l[1] * l[1]).sqrt();
             if l[2].to_f64() < 0.0 || tangential.to_f64() > (settings.friction * l[2]).to_f64() {
-                iddata.outside_cone |= 1 << c;
+                iddata.outside_cone[c] = true;
             }
         }
         row += contact.rows();
