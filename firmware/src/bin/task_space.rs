@@ -16,8 +16,8 @@
 
 use cortex_m_rt::entry;
 use rodyn::algorithm::frames::frame_placement;
-use rodyn::algorithm::inverse_kinematics::log3;
 use rodyn::algorithm::kinematics::forward_kinematics;
+use rodyn::spatial::log3;
 use rodyn::spatial::{Transform, Vec3};
 use rodyn::{Data, Scalar};
 use rodyn_firmware::control::{CirclePoseTrajectory, TaskGains, TaskSpaceImpedance};

@@ -39,12 +39,12 @@ use embedded_hal::pwm::SetDutyCycle;
 use embedded_hal::spi::SpiDevice;
 use rodyn::algorithm::dense::{cholesky_in_place, cholesky_solve};
 use rodyn::algorithm::frames::{frame_placement, ReferenceFrame};
-use rodyn::algorithm::inverse_kinematics::log3;
 use rodyn::algorithm::jacobian::{
     frame_jacobian, frame_jacobian_time_variation, joint_jacobians_time_variation, mul_rates,
     JacobianData,
 };
 use rodyn::algorithm::rnea::rnea;
+use rodyn::spatial::log3;
 use rodyn::spatial::{Motion, Spatial, Vec3};
 use rodyn::{Data, Frame, Model};
 

@@ -21,7 +21,10 @@ use crate::data::Data;
 use crate::error::{Error, Result};
 use crate::frame::Frame;
 use crate::model::Model;
-use crate::spatial::{Mat3, Motion, Spatial, Transform, Vec3};
+/// The rotation vector of a rotation (moved to [`crate::spatial`], where
+/// the frame contacts' `log6` uses it too; kept here for existing paths).
+pub use crate::spatial::log3;
+use crate::spatial::{Motion, Spatial, Transform, Vec3};
 use crate::Scalar;
 
 /// Settings of [`solve`].
@@ -60,53 +63,6 @@ pub fn pose_error<S: Scalar>(o_m_f: &Transform<S>, target: &Transform<S>) -> Mot
     let rot = o_m_f.rot.tr_mul_mat(&target.rot);
     let lin = o_m_f.rot.tr_mul_vec(&(target.trans - o_m_f.trans));
     Motion::new(log3(&rot), lin)
-}
-
-/// The rotation vector (axis times angle, rad, angle in `[0, π]`) of a
-/// rotation matrix.
-#[must_use]
-pub fn log3<S: Scalar>(r: &Mat3<S>) -> Vec3<S> {
-    let m = &r.m;
-    let half = S::from_f64(0.5);
-    // sin θ times the axis, and cos θ.
-    let w = Vec3::new(m[2][1] - m[1][2], m[0][2] - m[2][0], m[1][0] - m[0][1]) * half;
-    let c = ((m[0][0] + m[1][1] + m[2][2] - S::ONE) * half)
-        .max(S::NEG_ONE)
-        .min(S::ONE);
-    let s = w.norm();
-    let theta = s.atan2(c);
-    if c > S::from_f64(-0.9) {
-        // sin θ / θ is well away from zero for θ < 2.69 rad; below 1e-8
-        // rad it is 1 to the last bit.
-        return if s > S::from_f64(1e-8) {
-            w * (theta / s)
-        } else {
-            w
-        };
-    }
-    // Near half a turn the axis comes from the symmetric part, R + Rᵀ =
-    // 2 c I + 2 (1 - c) a aᵀ, its largest diagonal entry first.
-    let one_c = S::ONE - c;
-    let mut k = 0;
-    for i in 1..3 {
-        if m[i][i] > m[k][k] {
-            k = i;
-        }
-    }
-    let ak = ((m[k][k] - c) / one_c).max(S::ZERO).sqrt();
-    let mut a = [S::ZERO; 3];
-    for i in 0..3 {
-        a[i] = if i == k {
-            ak
-        } else {
-            (m[i][k] + m[k][i]) * half / (one_c * ak)
-        };
-    }
-    let mut axis = Vec3::from_array(a);
-    if axis.dot(&w) < S::ZERO {
-        axis = axis * S::NEG_ONE;
-    }
-    axis * theta
 }
 
 /// The workspace of [`solve`]: the Jacobians. Its own type so that models

@@ -1,60 +1,61 @@
 //! The logarithms of SO(3) and SE(3): the rotation vector of a rotation
 //! and the twist that moves the identity to a placement in unit time.
-//! Frame contacts use them for their placement error (Pinocchio's `log3`
-//! and `log6` compute the same maps).
+//! Inverse kinematics and the task-space controller use `log3` for the
+//! orientation error, frame contacts `log6` for their placement error
+//! (Pinocchio's `log3` and `log6` compute the same maps).
 
 use super::{Mat3, Motion, Transform, Vec3};
 use crate::Scalar;
 
-/// Below this angle (rad) the series of `θ / sin θ` and of `V⁻¹` replace
-/// the closed forms, whose quotients lose their digits near 0.
+/// Below this angle (rad) the series of `V⁻¹` replaces its closed form,
+/// whose quotient loses its digits near 0.
 const SMALL_ANGLE: f64 = 1e-4;
 
-/// Above this angle (rad) the axis comes from the symmetric part of `R`:
-/// the antisymmetric part, `sin θ` times the axis, vanishes near `π`.
-const NEAR_PI: f64 = 3.0;
-
-/// The rotation vector `ω = θ n` of `r`, `θ ∈ [0, π]` (rad): `R = exp([ω]×)`.
+/// The rotation vector (axis times angle, rad, angle in `[0, π]`) of a
+/// rotation matrix.
 #[must_use]
 pub fn log3<S: Scalar>(r: &Mat3<S>) -> Vec3<S> {
     let m = &r.m;
     let half = S::from_f64(0.5);
-    // ½ (R − Rᵀ) = sin θ [n]×, ½ (tr R − 1) = cos θ.
-    let s = Vec3::new(m[2][1] - m[1][2], m[0][2] - m[2][0], m[1][0] - m[0][1]) * half;
-    let c = (m[0][0] + m[1][1] + m[2][2] - S::ONE) * half;
-    let theta = s.norm().atan2(c);
-    let t = theta.to_f64();
-    if t < SMALL_ANGLE {
-        // θ / sin θ = 1 + θ²/6 + O(θ⁴).
-        return s * (S::ONE + theta * theta / S::from_f64(6.0));
-    }
-    if t < NEAR_PI {
-        return s * (theta / theta.sin());
-    }
-    // R + Rᵀ = 2 cos θ I + 2 (1 − cos θ) n nᵀ: take n from the column with
-    // the largest diagonal, its sign from the antisymmetric part.
-    let one_minus_c = S::ONE - c;
-    let k = (0..3).fold(0, |best, i| {
-        if m[i][i].to_f64() > m[best][best].to_f64() {
-            i
+    // sin θ times the axis, and cos θ.
+    let w = Vec3::new(m[2][1] - m[1][2], m[0][2] - m[2][0], m[1][0] - m[0][1]) * half;
+    let c = ((m[0][0] + m[1][1] + m[2][2] - S::ONE) * half)
+        .max(S::NEG_ONE)
+        .min(S::ONE);
+    let s = w.norm();
+    let theta = s.atan2(c);
+    if c > S::from_f64(-0.9) {
+        // sin θ / θ is well away from zero for θ < 2.69 rad; below 1e-8
+        // rad it is 1 to the last bit.
+        return if s > S::from_f64(1e-8) {
+            w * (theta / s)
         } else {
-            best
-        }
-    });
-    let nk = ((m[k][k] - c) / one_minus_c).max(S::ZERO).sqrt();
-    let mut n = [S::ZERO; 3];
-    for (i, ni) in n.iter_mut().enumerate() {
-        *ni = if i == k {
-            nk
-        } else {
-            (m[i][k] + m[k][i]) * half / (one_minus_c * nk)
+            w
         };
     }
-    let mut n = Vec3::new(n[0], n[1], n[2]);
-    if n.dot(&s).to_f64() < 0.0 {
-        n = -n;
+    // Near half a turn the axis comes from the symmetric part, R + Rᵀ =
+    // 2 c I + 2 (1 - c) a aᵀ, its largest diagonal entry first.
+    let one_c = S::ONE - c;
+    let mut k = 0;
+    for i in 1..3 {
+        if m[i][i] > m[k][k] {
+            k = i;
+        }
     }
-    n * (theta / n.norm())
+    let ak = ((m[k][k] - c) / one_c).max(S::ZERO).sqrt();
+    let mut a = [S::ZERO; 3];
+    for i in 0..3 {
+        a[i] = if i == k {
+            ak
+        } else {
+            (m[i][k] + m[k][i]) * half / (one_c * ak)
+        };
+    }
+    let mut axis = Vec3::from_array(a);
+    if axis.dot(&w) < S::ZERO {
+        axis = axis * S::NEG_ONE;
+    }
+    axis * theta
 }
 
 /// The twist `ξ = (ω, u)` with `exp(ξ) = x` (angular part `log3(R)`,
