@@ -292,8 +292,9 @@ extern crate std;
 impl std::error::Error for Error {}
 
 /// Written out rather than derived: the derived `format` was inlined at
-/// each error that prints a quantity, each copy with its own table (64
-/// bytes of flash apiece in the pendulum image); out of line there is one.
+/// each error that prints a quantity, each copy with its own table (flash
+/// in the pendulum image for every copy; the performance notebook,
+/// "Firmware size"); out of line there is one.
 #[cfg(feature = "defmt")]
 impl defmt::Format for Quantity {
     #[inline(never)]

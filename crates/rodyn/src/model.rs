@@ -508,8 +508,9 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
         // Every dynamics call starts here. One pass over `q` settles
         // finiteness for all joints; only joints with a further condition
         // (a unit quaternion, a user's rule) are then asked. Walking and
-        // slicing every joint cost about 40 instructions a joint on the
-        // Cortex-M4. A non-finite `q` takes the joint-by-joint walk below,
+        // slicing every joint cost instructions on every joint on the
+        // Cortex-M4 (docs/sections/performance_notebook.md, "Model
+        // checks"). A non-finite `q` takes the joint-by-joint walk below,
         // which names the joint exactly as before.
         if q.iter().all(|x| x.is_finite()) {
             if !self.constrained_configuration {

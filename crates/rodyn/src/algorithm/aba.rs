@@ -88,10 +88,11 @@ pub fn aba<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: 
 /// registers for its bias force. The joint transform goes to `data.li_m_i`
 /// at once and the velocity is formed from there (not through
 /// `body_velocity`, whose returned pair was merged on the stack and copied
-/// into `data` afterwards: x86-64 Solo12 -414 instructions, 5-8 % faster;
-/// Cortex-M4 Panda +10, quadruped -287). Giving `body_velocity` itself
-/// this form, for both callers, grew the pendulum image by 132 bytes
-/// (1.7 %, over its 1 % guard), so the step is written here.
+/// into `data` afterwards: fewer instructions and less time on x86-64,
+/// about even on the Cortex-M4). Giving `body_velocity` itself this form,
+/// for both callers, grew the pendulum image past its size guard, so the
+/// step is written here. Figures: docs/sections/performance_notebook.md,
+/// "ABA".
 #[inline]
 fn velocity_and_bias_pass<
     S: Scalar,
@@ -156,8 +157,8 @@ pub(crate) fn backward_pass<
             // The common case, without the loops over the joint's columns.
             // On hosts into a local first: the column is read at once, and
             // a copy read back from `data` waits on store-to-load
-            // forwarding. (On the Cortex-M4 the local costs 117
-            // instructions on the Panda.)
+            // forwarding. (On the Cortex-M4 the local only costs
+            // instructions: see `joint_column`.)
             let u_col = joint_column(joint, i_a, &mut data.u_cols[iv]);
             let mut s_t = [S::ZERO];
             joint.project_force(&u_col, &mut s_t);
@@ -229,7 +230,7 @@ pub(crate) fn backward_pass<
 /// On hosts formed in a local first: the column is read at once, and a
 /// copy read back from `data` (stored piecewise, read whole) waits on
 /// store-to-load forwarding. On the Cortex-M4, which has no such stall,
-/// the local cost 117 instructions on the Panda.
+/// the local costs instructions (the performance notebook, "ABA").
 #[inline(always)]
 fn joint_column<S: Scalar, G: Space, J: JointModel<S, G>>(
     joint: &J,

@@ -29,10 +29,10 @@ pub(crate) fn check_external<S: Scalar, F: VectorOps<S>>(f_ext: Option<&[F]>) ->
 /// Joint transform and placement of body `i`: `ˡⁱMᵢ = placement · jMi(q)`.
 ///
 /// Inlined into each algorithm: with the firmware at opt-level 3 that saves
-/// the Panda about 10 instructions a body (its bounds checks fold into the
-/// algorithm's loop) for 420 bytes of the pendulum's flash. (At opt-level
-/// "s" one shared out-of-line copy is the better trade: 800 bytes for two
-/// instructions a body.)
+/// the Panda instructions on every body (its bounds checks fold into the
+/// algorithm's loop) for some of the pendulum's flash. (At opt-level "s"
+/// one shared out-of-line copy is the better trade.) Figures: the
+/// performance notebook, "Cortex-M4 rounds".
 #[inline]
 pub(crate) fn body_transform<
     S: Scalar,
@@ -108,7 +108,8 @@ pub(crate) fn body_transform_with<
 ) -> G::Transform<S> {
     match sin_cos {
         // `ANGLES_FIRST` again so that the Cortex-M4's build drops the arm
-        // before inlining (its planar forward dynamics, 92 instructions).
+        // before inlining (it cost its planar forward dynamics instructions;
+        // the performance notebook, "Sine and cosine").
         Some(t) if ANGLES_FIRST => model.joint(i).placed_transform_from_sin_cos(
             model.placement(i),
             joint_configuration(model, i, q),
@@ -181,7 +182,8 @@ pub(crate) fn check_state<
 ///
 /// It leaves the world poses `ᵒMᵢ` alone: RNEA and ABA work in body frames
 /// and never read them, and composing them costs a 3x3 product per body
-/// (about a tenth of RNEA on the Cortex-M4). Callers that need poses run
+/// (a visible share of RNEA on the Cortex-M4; the performance notebook,
+/// "Cortex-M4 rounds"). Callers that need poses run
 /// [`forward_kinematics`](super::kinematics::forward_kinematics) or
 /// [`forward_kinematics_velocity`](super::kinematics::forward_kinematics_velocity).
 #[inline]

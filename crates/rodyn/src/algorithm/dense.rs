@@ -32,8 +32,8 @@ pub fn cholesky_in_place<S: Scalar, const N: usize>(
     let scale = (0..n).fold(0.0_f64, |m, k| m.max(a[k][k].to_f64().abs()));
     let smallest = S::EPSILON * tolerance * scale;
     // Plain indexing: on the Cortex-M4 it ran fewer instructions than rows
-    // split at the pivot (docs/sections/performance.md, "Derivatives and
-    // the small dense Cholesky").
+    // split at the pivot (docs/sections/performance_notebook.md,
+    // "Derivatives and the small dense Cholesky").
     for j in 0..n {
         let mut d = a[j][j];
         for k in 0..j {

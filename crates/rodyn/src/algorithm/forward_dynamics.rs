@@ -91,10 +91,11 @@ impl ForwardDynamics for Aba {
 /// loop over the bodies forwards and one backwards
 /// ([`crba::bias_and_mass_lower`]), instead of RNEA and then CRBA: each
 /// joint transform is used at once by both, and an out-of-order core
-/// overlaps their independent work on each body (x86-64: the Panda's call
-/// 11 to 14 % faster). The in-order Cortex-M4 keeps the two algorithms
-/// apart: fused, its pendulum took 767 instructions instead of 735, and
-/// the Panda's and the quadruped's calls 220 to 280 more bytes of stack.
+/// overlaps their independent work on each body (faster on x86-64). The
+/// in-order Cortex-M4 keeps the two algorithms apart: fused, its pendulum
+/// ran more instructions, and the Panda's and the quadruped's calls took
+/// more stack. Figures: docs/sections/performance_notebook.md, "CRBA
+/// forward dynamics and the factorisation".
 const FUSED_PASSES: bool = cfg!(not(target_arch = "arm"));
 
 impl ForwardDynamics for Crba {

@@ -16,8 +16,9 @@
 //! of them, and gathering each one's partial sums costs as much as its
 //! terms. There a row of `L` is formed instead as a combination of the
 //! rows below it, eight rows per pass over the entries, with `L` kept
-//! untransposed below the diagonal too (60-link chain, x86-64: CRBA
-//! forward dynamics -18 % instructions).
+//! untransposed below the diagonal too (fewer instructions on long chains;
+//! figures in docs/sections/performance_notebook.md, "CRBA forward
+//! dynamics and the factorisation").
 
 use crate::data::Data;
 use crate::error::{Error, Quantity, Result};
@@ -39,8 +40,9 @@ const PIVOT_TOLERANCE_EPS: f64 = 64.0;
 /// coordinate is updated on its own, so that every pass reads the rest
 /// with the alignment the previous pass stored it in: an out-of-order
 /// core then does not wait on the newest value or on a load spanning two
-/// stores (Panda factor and solve about -17 % time). The Cortex-M4 keeps
-/// the plain order (these cost it about 380 instructions on the Panda).
+/// stores (the Panda's factor and solve take less time). The Cortex-M4
+/// keeps the plain order (these orders only cost it instructions). Figures:
+/// the performance notebook, "CRBA forward dynamics and the factorisation".
 const HOST_ORDER: bool = cfg!(not(target_arch = "arm"));
 
 /// `y -= a x`, element by element. Slices of equal length, so the loop
@@ -83,11 +85,11 @@ const ROWS_PER_COMBINATION: usize = 4;
 /// (the combination fills SIMD lanes the Cortex-M4 does not have), on
 /// trees whose coordinates sit below at least `MIN_DEPTH` moving bodies
 /// on average (chains of 31 links or more; never an arm or a legged
-/// robot). x86-64, f64, instructions per CRBA forward dynamics, by
-/// combination against by dots only: 20-link chain 42,079 against 39,777,
-/// 30-link 77,493 against 74,544, 40-link 122,227 against 131,469,
-/// 60-link 240,371 against 278,070. The condition on `NV` is known at
-/// compile time, so small models carry no second copy.
+/// robot): on shorter chains the dots alone run fewer instructions, on
+/// longer ones the combination (x86-64, f64; the counts per chain length
+/// are in the performance notebook, "CRBA forward dynamics and the
+/// factorisation"). The condition on `NV` is known at compile time, so
+/// small models carry no second copy.
 #[inline(always)]
 fn combination_pays<const NB: usize, const NV: usize>(t: &Topology<NB, NV>) -> bool {
     const MIN_DEPTH: usize = 15;
@@ -98,9 +100,9 @@ fn combination_pays<const NB: usize, const NV: usize>(t: &Topology<NB, NV>) -> b
 /// its division by the pivot, from the rows below it (`L` stored
 /// untransposed below the diagonal). Eight rows at a time, then four,
 /// then one, so that each entry is loaded and stored once per eight rows
-/// and no sum is gathered across lanes (eight rather than four: 60-link
-/// chain -4 % instructions); farthest first, so that the nearest row,
-/// formed just before, enters last.
+/// and no sum is gathered across lanes (eight rather than four: fewer
+/// instructions on the 60-link chain); farthest first, so that the nearest
+/// row, formed just before, enters last.
 #[inline(never)]
 fn row_by_combination<S: Scalar, const NV: usize>(
     l: &mut [S],
@@ -199,8 +201,8 @@ impl<S: Scalar, const NV: usize> Pivots<S, NV> {
     ) -> Result<S> {
         let mut d = m_kk;
         if HOST_ORDER {
-            // Slices zipped, with no bounds checks (60-link chain
-            // factorisation -5 % instructions), and `L[k + 1][k]`, the
+            // Slices zipped, with no bounds checks (fewer instructions in
+            // the 60-link chain's factorisation), and `L[k + 1][k]`, the
             // entry formed just before, ends the chain of subtractions
             // instead of starting it.
             let (l_k, d_s) = (&l_k[below.clone()], &self.d[below.clone()]);
@@ -210,7 +212,7 @@ impl<S: Scalar, const NV: usize> Pivots<S, NV> {
             }
         } else {
             // Indexed: slicing three ranges per pivot costs the Cortex-M4
-            // more than the bounds checks (Panda about 200 instructions).
+            // more than the bounds checks (measured on the Panda).
             for s in below {
                 let dl = self.d[s] * l_k[s];
                 d_l[s] = dl;
@@ -260,9 +262,9 @@ fn factor_by_dots<S: Scalar, const NB: usize, const NV: usize>(
 ///
 /// Out of line: inlined, its slices became a dozen pointers that the loop
 /// over k carried and spilled. Called once per coordinate, it costs a
-/// call and saves more (CRBA forward dynamics, x86-64: Solo12 -5 %
-/// instructions, Panda -1.4 %; Cortex-M4: quadruped -3.3 %, Panda -2.8 %,
-/// the one-link pendulum +18 cycles).
+/// call and saves more (CRBA forward dynamics on x86-64 and the Cortex-M4;
+/// only the one-link pendulum pays for the call). Figures: the performance
+/// notebook, "CRBA forward dynamics and the factorisation".
 #[inline(never)]
 fn column_by_dots<S: Scalar, const NB: usize, const NV: usize>(
     topology: &Topology<NB, NV>,

@@ -69,14 +69,14 @@ pub fn rnea<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
 ///
 /// One loop rather than the shared [`velocity_pass`](crate::algorithm::kinematics)
 /// and a second one for forces: each body's transform, velocity and `c`
-/// stay in registers instead of being stored and read back (about 30
+/// stay in registers instead of being stored and read back (fewer
 /// instructions a body on the Cortex-M4).
 // Inlined into each caller on the Cortex-M4, so that `a: None` folds away
-// (the pendulum's RNEA is 30 instructions slower with plain `#[inline]`).
+// (the pendulum's RNEA is slower with plain `#[inline]`).
 // Hosts keep it and the backward pass out of line, shared by `rnea` and
 // `nonlinear_effects`: inlined into `rnea` alone (as once `Crba` no longer
-// called `nonlinear_effects`), Solo12's RNEA ran 5 % more instructions and
-// 5 to 9 % more time.
+// called `nonlinear_effects`), Solo12's RNEA ran more instructions and
+// more time. Figures: docs/sections/performance_notebook.md, "RNEA".
 #[cfg_attr(target_arch = "arm", inline(always))]
 #[cfg_attr(not(target_arch = "arm"), inline(never))]
 fn forward_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
@@ -173,7 +173,8 @@ pub(crate) fn backward_force_pass_with<
     // On hosts, the force handed to the body just before (a chain's
     // parent) stays in registers: a sum stored piecewise and read back
     // whole at once waits on store-to-load forwarding. (The Cortex-M4 has
-    // no such stall; there it costs 67 instructions on the Panda.)
+    // no such stall; there the local only costs instructions: see the
+    // performance notebook, "RNEA".)
     const CARRY: bool = cfg!(not(target_arch = "arm"));
     let mut carry = G::Force::<S>::ZERO;
     for i in (0..NB).rev() {

@@ -593,8 +593,9 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
     ) -> Result<()> {
         let activation = read_input(w, self.input)?;
         check_activation(activation, self.input)?;
-        // Parameters are not validated here (a per-call cost of about 40 %
-        // of the muscle robot's forward dynamics on the Cortex-M4): one
+        // Parameters are not validated here (per call, a large share of
+        // the muscle robot's forward dynamics on the Cortex-M4; see
+        // docs/sections/performance_notebook.md, "Drives"): one
         // that breaks the force law makes the tension non-finite, which is
         // reported; `ThelenParameters::validate` names the field. The path
         // comes from a finite state: only an overflow makes it non-finite,

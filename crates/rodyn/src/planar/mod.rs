@@ -122,7 +122,8 @@ impl Space for Planar {
     }
     // Only hosts form the angles first (see `crba`); on the Cortex-M4 the
     // extra call site of `compose` cost the muscle robot's forward
-    // dynamics 92 instructions through other inlining.
+    // dynamics instructions through other inlining (see the performance
+    // notebook, "Sine and cosine").
     #[cfg(not(target_arch = "arm"))]
     #[inline(always)]
     fn turned_joint_step<S: Scalar>(

@@ -163,7 +163,8 @@ impl Scalar for f32 {
 }
 
 /// `f32` square root: the FPU instruction on Cortex-M4F/M7, never libm's
-/// bit-by-bit software loop (hundreds of instructions per call on the MCU).
+/// bit-by-bit software loop (a long loop per call on the MCU, where the
+/// FPU's takes one instruction).
 ///
 /// The test is the hard-float ABI (`target_abi = "eabihf"`): every such Arm
 /// target has a single-precision VSQRT. The FPU's `target_feature` names are

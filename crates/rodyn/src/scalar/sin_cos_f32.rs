@@ -1,8 +1,10 @@
 //! Single-precision sine and cosine for FPUs without double precision.
 //!
 //! libm's `sincosf` evaluates its polynomials in `f64`, which a Cortex-M4F
-//! emulates in software: about 2,400 instructions per call, paid once per
-//! revolute joint per algorithm call. This version stays in `f32`: a
+//! emulates in software: more than a whole joint's dynamics otherwise
+//! costs, paid once per revolute joint per algorithm call (figures in
+//! docs/sections/performance_notebook.md, "Sine and cosine"). This
+//! version stays in `f32`: a
 //! three-part Cody-Waite reduction by π/2 and minimax polynomials on
 //! [-π/4, π/4] (the coefficients of Cephes' `sinf`/`cosf`), a few ulp
 //! accurate for |x| ≤ 8192 rad. Larger arguments are reduced exactly

@@ -134,9 +134,10 @@ impl<S: Scalar> ArticulatedInertia6<S> {
     /// row and column K (the axis normal to the plane of I and J) and whose
     /// `B` row K are zero: only rows I and J of `A` and `B` are read.
     // Out of line on Arm (the Cortex-M4's 32 registers hold the kernel's
-    // intermediates; inlined, ABA took 86 more instructions on the Panda),
+    // intermediates; inlined, ABA took more instructions on the Panda),
     // inlined elsewhere (x86-64's 16 registers spill less when the kernel is
-    // scheduled with its caller: 8 % fewer instructions in ABA).
+    // scheduled with its caller: fewer instructions in ABA). Figures: the
+    // performance notebook, "ABA".
     #[cfg_attr(target_arch = "arm", inline(never))]
     #[cfg_attr(not(target_arch = "arm"), inline)]
     fn add_act_plane<const I: usize, const J: usize>(&mut self, o: &Self, x: &Transform<S>) {

@@ -93,13 +93,13 @@ impl<S: Scalar> AxisTurn<S> {
         let own = Force::new(own.ang * sign, own.lin * sign);
         // Index loops over equal lengths: no bounds checks, and no
         // vectorised copy with its set-up and remainder for the one to
-        // three columns a limb body moves (Solo12 CRBA 2.5 % fewer
-        // instructions than zipped iterators).
+        // three columns a limb body moves (fewer instructions than zipped
+        // iterators on Solo12's CRBA; see the performance notebook, "CRBA").
         if upper {
             // The body's own column and row apart: the mirrors are then
             // stores the compiler knows to be distinct from the column's
-            // entries (Solo12 CRBA -10 % time against mirroring after the
-            // pass, though 9 % more instructions).
+            // entries (on Solo12's CRBA faster than mirroring after the
+            // pass, though more instructions; see the notebook, "CRBA").
             let (Some((column, columns)), Some((own_row, rows))) =
                 (columns.split_first_mut(), rows.split_first_mut())
             else {

@@ -119,7 +119,8 @@ impl Space for Spatial {
             }
         }
         // One call site for the transform: a second one (an early return
-        // above) made the Cortex-M4's CRBA frame 48-56 bytes larger.
+        // above) made the Cortex-M4's CRBA stack frame larger (see the
+        // performance notebook, "CRBA").
         let x = j.placed_transform(placement, q);
         if about_other_axes {
             TransformStep::General(x)

@@ -76,7 +76,8 @@ pub(super) fn about_root<
         }
         // The composite inertias form one chain of dependent steps: the
         // parent's is stepped before this body's rows, so that it overlaps
-        // their dot products (60-link chain CRBA time -6 %).
+        // their dot products (faster on the 60-link chain; see the
+        // performance notebook, "CRBA").
         if let (Some(p), Some(step)) = (t.parents[i], &steps[i]) {
             let ic_i = data.ic[i];
             G::add_stepped_inertia(&mut data.ic[p], step, &ic_i);
@@ -122,7 +123,8 @@ pub(super) fn dot_columns<S: Scalar, const NV: usize, G: Space>(
 /// [`dot_columns`] that also writes each entry's mirror, `above[j][c]`
 /// (`above` starting at row `first`), while the entry is in a register:
 /// cheaper than copying the triangle afterwards, which loads it again
-/// (60-link chain CRBA time -8 %).
+/// (measured on the 60-link chain's CRBA: the performance notebook,
+/// "CRBA").
 #[inline(always)]
 pub(super) fn dot_columns_mirrored<S: Scalar, const NV: usize, G: Space>(
     row: &mut [S],

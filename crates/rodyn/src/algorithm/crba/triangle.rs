@@ -11,9 +11,10 @@ use crate::Scalar;
 
 /// Copies the lower triangle of `m` onto the upper. On hosts two rows by
 /// two columns at a time, so that each row above takes its entries in
-/// adjacent pairs (60-link chain CRBA time -3 %); the Cortex-M4, which
-/// pays per instruction, one entry at a time (the blocked form measured
-/// there: quadruped CRBA +470 instructions).
+/// adjacent pairs (faster on the 60-link chain's CRBA); the Cortex-M4,
+/// which pays per instruction, one entry at a time (there the blocked form
+/// ran more instructions on the quadruped's CRBA). Figures: the
+/// performance notebook, "CRBA".
 #[inline]
 pub(super) fn mirror_lower<S: Scalar, const NV: usize>(m: &mut [[S; NV]; NV]) {
     if cfg!(target_arch = "arm") {
@@ -66,8 +67,8 @@ pub(super) fn clear_lower<S: Scalar, const NB: usize, const NV: usize>(
 ) {
     for (k, row) in m.iter_mut().enumerate() {
         // Most rows have nothing to clear (every row of a chain): they
-        // skip the fill, which can become a call into `memset` (M4, Panda
-        // CRBA 20 instructions fewer).
+        // skip the fill, which can become a call into `memset` (fewer
+        // instructions on the M4's Panda CRBA; see the notebook, "CRBA").
         let start = t.chain_start_v[k];
         if start > 0 {
             row[..start].fill(S::ZERO);
