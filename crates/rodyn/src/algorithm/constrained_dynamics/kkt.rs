@@ -136,9 +136,9 @@ pub(crate) fn form_delassus<
         }
     }
     ltdl_factor(model, data)?;
-    // J_c from the joint Jacobians. (Forming each contact's columns along
-    // its path from the joints' subspaces instead measured slower on
-    // Solo12: the joint Jacobians' own pass is cheaper per column.) After
+    // J_c from the joint Jacobians, whose pass is cheaper per column than
+    // forming each contact's columns along its path from the joints'
+    // subspaces (performance_notebook.md, "Constrained dynamics"). After
     // RNEA the joints' transforms are known: the poses need only be
     // composed.
     match poses {
@@ -187,7 +187,8 @@ pub(crate) fn form_delassus<
         row += contact.rows();
     }
     // Dense sums: over a few tens of coordinates they vectorise, which
-    // gathering a row's path does not (measured slower on Solo12).
+    // gathering a row's path does not (performance_notebook.md,
+    // "Constrained dynamics").
     for r in 0..rows {
         let d_w: [S; NV] = core::array::from_fn(|k| data.ltdl[k][k] * cdata.responses[r][k]);
         for s in 0..=r {
