@@ -206,6 +206,12 @@ pub const ROWS: &[(&str, &str, &str, &str)] = &[
         "control-tick(4-feet)",
         "probe_quadruped_contacts::{closure_env#7}>",
     ),
+    (
+        "contact_cost_probe",
+        "quadruped-rigid",
+        "rigid-step(feet-up)",
+        "probe_quadruped_contacts::{closure_env#8}>",
+    ),
 ];
 
 /// A call from one function to another.

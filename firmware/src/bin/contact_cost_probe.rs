@@ -40,7 +40,9 @@ const MODEL: &str = "quadruped-rigid";
 ///   (ABA and test forces), Baumgarte gains;
 /// * the plastic impact of the four feet (`impulse_dynamics`);
 /// * one rigid-contact time step of the plant (`time_step`: 30 sweeps of
-///   projected Gauss–Seidel, friction 0.8, the drives' damping implicit);
+///   projected Gauss–Seidel, friction 0.8, the drives' damping implicit),
+///   and the same step with the trunk 5 cm higher, every foot outside the
+///   contact margin (no contact in the active set: the step's other end);
 /// * one tick of the trunk controller (`TrunkController::torques`) with
 ///   two diagonal feet touching, as in the trot, and with all four, the
 ///   most it ever solves.
@@ -151,7 +153,25 @@ fn probe_quadruped_contacts(counter: &InstructionCounter) -> bool {
             .torques(&MODEL_F32, &mut data, &mut control, *t, q, v, &[true; LEGS])
             .is_ok()
     });
-    fd & fd_articulated & impulse & step & tick & tick_four
+    let step_up = probe_scene(MODEL, "rigid-step(feet-up)", counter, draw, |(q, v, _)| {
+        let mut state = State::new(*q, *v);
+        state.q[2] += 0.05;
+        let tau = [0.0; NV];
+        time_step(
+            &MODEL_F32,
+            &mut data,
+            &mut contact,
+            &mut state,
+            &tau,
+            &damping,
+            &feet,
+            &ground,
+            1e-3,
+        )
+        .is_ok()
+            && contact.in_contact.iter().all(|c| !*c)
+    });
+    fd & fd_articulated & impulse & step & tick & tick_four & step_up
 }
 
 #[entry]
