@@ -197,19 +197,19 @@ pub const ROWS: &[(&str, &str, &str, &str)] = &[
     (
         "contact_cost_probe",
         "quadruped-rigid",
-        "control-tick(2-feet)",
-        "probe_quadruped_contacts::{closure_env#6}>",
+        "rigid-step(feet-up)",
+        "probe_quadruped_contacts::{closure_env#5}>",
     ),
     (
         "contact_cost_probe",
         "quadruped-rigid",
-        "control-tick(4-feet)",
+        "control-tick(2-feet)",
         "probe_quadruped_contacts::{closure_env#7}>",
     ),
     (
         "contact_cost_probe",
         "quadruped-rigid",
-        "rigid-step(feet-up)",
+        "control-tick(4-feet)",
         "probe_quadruped_contacts::{closure_env#8}>",
     ),
 ];

@@ -124,8 +124,12 @@ fn probe_quadruped_contacts(counter: &InstructionCounter) -> bool {
     let ground = quadruped::rigid_ground::<f32>();
     let damping = controller.joint_damping();
     let mut contact = RigidContactData::<f32>::new();
-    let step = probe_scene(MODEL, "rigid-step(4-feet)", counter, draw, |(q, v, _)| {
+    // One closure measures both rows, with the trunk's lift (m) in its
+    // input: with a single call site the optimiser inlines `time_step`
+    // into it as it did when the four-feet row was the only one.
+    let mut step = |(q, v, lift): &mut ([f32; NQ], [f32; NV], f32)| {
         let mut state = State::new(*q, *v);
+        state.q[2] += *lift;
         let tau = [0.0; NV];
         time_step(
             &MODEL_F32,
@@ -139,8 +143,22 @@ fn probe_quadruped_contacts(counter: &InstructionCounter) -> bool {
             1e-3,
         )
         .is_ok()
-            && contact.in_contact.iter().all(|c| *c)
-    });
+            && contact.in_contact.iter().all(|c| *c == (*lift <= 0.0))
+    };
+    let lifted = |lift: f32| {
+        move |rng: &mut XorShift32| {
+            let (q, v, _) = draw(rng);
+            (q, v, lift)
+        }
+    };
+    let step_four = probe_scene(MODEL, "rigid-step(4-feet)", counter, lifted(0.0), &mut step);
+    let step_up = probe_scene(
+        MODEL,
+        "rigid-step(feet-up)",
+        counter,
+        lifted(0.05),
+        &mut step,
+    );
     let mut control = TrunkControllerData::<f32>::new();
     let trot = [true, false, false, true];
     let tick = probe_scene(MODEL, "control-tick(2-feet)", counter, draw, |(q, v, t)| {
@@ -153,25 +171,7 @@ fn probe_quadruped_contacts(counter: &InstructionCounter) -> bool {
             .torques(&MODEL_F32, &mut data, &mut control, *t, q, v, &[true; LEGS])
             .is_ok()
     });
-    let step_up = probe_scene(MODEL, "rigid-step(feet-up)", counter, draw, |(q, v, _)| {
-        let mut state = State::new(*q, *v);
-        state.q[2] += 0.05;
-        let tau = [0.0; NV];
-        time_step(
-            &MODEL_F32,
-            &mut data,
-            &mut contact,
-            &mut state,
-            &tau,
-            &damping,
-            &feet,
-            &ground,
-            1e-3,
-        )
-        .is_ok()
-            && contact.in_contact.iter().all(|c| !*c)
-    });
-    fd & fd_articulated & impulse & step & tick & tick_four & step_up
+    fd & fd_articulated & impulse & step_four & step_up & tick & tick_four
 }
 
 #[entry]
