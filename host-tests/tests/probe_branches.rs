@@ -55,6 +55,9 @@ fn muscle_robot_states_cover_the_muscle_branches() {
     // lengthening].
     let mut passive = [0usize; 2];
     let mut velocity = [0usize; 3];
+    // Fibres held at their shortest (the geometry stops: no fibre
+    // velocity while the path moves).
+    let mut shortest = 0usize;
     for k in 0..STATES {
         let (mut q, mut v) = ([0.0f32; NV], [0.0f32; NV]);
         rng.fill_symmetric(&mut q, 1.0);
@@ -75,9 +78,15 @@ fn muscle_robot_states_cover_the_muscle_branches() {
             let vn = s.normalized_velocity;
             let piece = usize::from(vn > -1.0) + usize::from(vn > 0.0);
             velocity[piece] += 1;
+            if s.fiber_velocity == 0.0 && kin.lengthening_velocity != 0.0 {
+                shortest += 1;
+            }
         }
     }
-    println!("passive off/on {passive:?}, stalled/shortening/lengthening {velocity:?}");
+    println!(
+        "passive off/on {passive:?}, stalled/shortening/lengthening {velocity:?}, \
+         shortest fibre {shortest}"
+    );
     assert!(passive.iter().chain(&velocity).all(|&n| n > 0));
 }
 
