@@ -197,14 +197,20 @@ pub const ROWS: &[(&str, &str, &str, &str)] = &[
     (
         "contact_cost_probe",
         "quadruped-rigid",
+        "rigid-step(feet-up)",
+        "probe_quadruped_contacts::{closure_env#5}>",
+    ),
+    (
+        "contact_cost_probe",
+        "quadruped-rigid",
         "control-tick(2-feet)",
-        "probe_quadruped_contacts::{closure_env#6}>",
+        "probe_quadruped_contacts::{closure_env#7}>",
     ),
     (
         "contact_cost_probe",
         "quadruped-rigid",
         "control-tick(4-feet)",
-        "probe_quadruped_contacts::{closure_env#7}>",
+        "probe_quadruped_contacts::{closure_env#8}>",
     ),
 ];
 

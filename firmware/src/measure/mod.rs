@@ -9,7 +9,7 @@ mod probe;
 mod stack;
 
 pub use instructions::{InstructionCounter, MAX_INSTRUCTIONS};
-pub use probe::{probe_scene, Cost, SEED, STATES};
+pub use probe::{branch_state, probe_scene, Cost, StateIndex, BRANCH_EVERY, SEED, STATES, WOUND};
 pub use stack::{stack_bytes, STACK_WINDOW_BYTES};
 
 /// Calls `f` in a frame of its own; the optimiser sees neither through the

@@ -8,6 +8,51 @@ use crate::rng::XorShift32;
 pub const STATES: u32 = 100;
 /// Seed of the state generator.
 pub const SEED: u32 = 0x5EED_0001;
+/// One state in this many (the last of every ten) is drawn across a
+/// data-dependent branch that the row's ordinary states do not reach: the
+/// joints wound beyond the f32 sine's fast range, the muscles shortening
+/// faster than they can pull, the feet in the air (the branch table of
+/// `docs/sections/firmware.md`). The other states are drawn as before, so
+/// the row's minimum and maximum span both sides.
+pub const BRANCH_EVERY: u32 = 10;
+
+/// Whether state `index` (from 0) is one of [`BRANCH_EVERY`]'s.
+#[must_use]
+pub const fn branch_state(index: u32) -> bool {
+    index % BRANCH_EVERY == BRANCH_EVERY - 1
+}
+
+/// 1592 turns (10,002.8 rad): an angle plus this is beyond the f32 sine's
+/// fast range (|x| ≤ 8192 rad), where `sin_cos` reduces the argument
+/// exactly in integer arithmetic (Payne–Hanek), and is the same angle to
+/// within the f32 spacing there (5e-4 rad).
+pub const WOUND: f32 = 1592.0 * 2.0 * core::f32::consts::PI;
+
+/// Counts the inputs a `probe_scene` draw makes, for draws that mark
+/// [`branch_state`]s: wraps after [`STATES`], so the same counter serves
+/// every row it is shared by.
+pub struct StateIndex(core::cell::Cell<u32>);
+
+impl StateIndex {
+    /// Before the first state.
+    #[must_use]
+    pub const fn new() -> Self {
+        Self(core::cell::Cell::new(0))
+    }
+
+    /// Whether the next state drawn is a [`branch_state`].
+    pub fn next_is_branch(&self) -> bool {
+        let index = self.0.get();
+        self.0.set((index + 1) % STATES);
+        branch_state(index)
+    }
+}
+
+impl Default for StateIndex {
+    fn default() -> Self {
+        Self::new()
+    }
+}
 
 /// Min and max instructions and max stack over random states.
 pub struct Cost {
