@@ -38,6 +38,10 @@ fn main() {
     let odd = Path::new(env!("CARGO_MANIFEST_DIR")).join("odd/odd_names.toml");
     let out = compile_with(odd, "odd_names", LoadOptions::default());
     writeln!(all, "include!({:?});", out.display().to_string()).unwrap();
+    // Link names that become the same constant: the frames stay distinct.
+    let odd = Path::new(env!("CARGO_MANIFEST_DIR")).join("odd/frame_names.urdf");
+    let out = compile_with(odd, "frame_names", LoadOptions::default());
+    writeln!(all, "include!({:?});", out.display().to_string()).unwrap();
     let out_dir = std::env::var("OUT_DIR").unwrap();
     std::fs::write(Path::new(&out_dir).join("models.rs"), all).unwrap();
 }

@@ -1,6 +1,7 @@
 //! Writes a [`ModelDescription`] as a Rust module: a `const` model in `f64`
-//! and `f32`, named indices for bodies, joints, coordinates and endpoints,
-//! and the drive and contact parameters.
+//! and `f32`, named indices for bodies, joints, coordinates, endpoints and
+//! frames, the frames as `rodyn::Frame` values, and the drive and contact
+//! parameters.
 //!
 //! The output uses only `rodyn::` paths and `core` syntax, so it compiles in a
 //! `no_std` crate. Every float is written as an untyped literal inside a
@@ -10,7 +11,7 @@
 use crate::description::{ForceLaw, JointType, ModelDescription};
 use crate::diagnostic::{Diagnostic, Location, Result};
 use crate::geometry::{snap_deviation, snap_signed_permutation, Mat3, Pose, Vec3, IDENTITY};
-use crate::names::{check_distinct, constant_name, module_name};
+use crate::names::{check_distinct, constant_name, module_name, unique_constant_names};
 
 /// Rust source of `model` as `pub mod <module>`. `source` names the model
 /// file in the header comment.
@@ -67,13 +68,14 @@ pub fn generate(model: &ModelDescription, module: &str, source: &str) -> Result<
     for line in geometry.lines() {
         w.line(line);
     }
-    w.line("use rodyn::{Endpoint, Model};");
+    w.line("use rodyn::{Endpoint, Frame, Model};");
     w.blank();
     sizes(&mut w, model);
     indices(&mut w, model);
     names(&mut w, model);
     model_macro(&mut w, model)?;
     endpoints(&mut w, model);
+    frames(&mut w, model);
     drives(&mut w, model);
     w.close("}");
     if let Some(x) = UNFIT.with(|u| u.borrow().first().copied()) {
@@ -576,6 +578,91 @@ fn endpoints(w: &mut Writer, model: &ModelDescription) {
         w.line(&format!("/// The endpoints in `{s}`."));
         w.line(&format!(
             "pub const ENDPOINTS_{}: [Endpoint<{s}{geometry}>; NE] = endpoints!({s});",
+            s.to_uppercase()
+        ));
+    }
+    w.blank();
+}
+
+/// The frames the generated module carries: every frame fixed to a moving
+/// body (a URDF link, moving or merged by fixed joints, and a rodyn file's
+/// bodies), in the file's order, with its constant name. A frame fixed to
+/// the world (a fixed root link and the links welded to it) never moves
+/// and has no body for `rodyn::Frame`; a planar model keeps only the frames
+/// in its plane.
+#[must_use]
+pub fn generated_frames(
+    model: &ModelDescription,
+) -> Vec<(&crate::description::Frame, usize, String)> {
+    let tol = 1e-12;
+    let kept: Vec<(&crate::description::Frame, usize)> = model
+        .frames
+        .iter()
+        .filter_map(|f| f.body.map(|b| (f, b)))
+        .filter(|(f, _)| {
+            let (r, t) = (&f.pose.rot, &f.pose.trans);
+            !model.planar
+                || ((r[2][2] - 1.0).abs() <= tol
+                    && r[0][2].abs() <= tol
+                    && r[1][2].abs() <= tol
+                    && r[2][0].abs() <= tol
+                    && r[2][1].abs() <= tol
+                    && t[2].abs() <= tol)
+        })
+        .collect();
+    let names = unique_constant_names(kept.iter().map(|(f, _)| f.name.as_str()));
+    kept.into_iter()
+        .zip(names)
+        .map(|((f, b), n)| (f, b, n))
+        .collect()
+}
+
+/// Frames (placement and orientation) fixed to bodies, as `rodyn::Frame`
+/// constants: Pinocchio's `BODY` frames of the links, whose world
+/// placements `frame_placement` gives (Pinocchio's `oMf`).
+fn frames(w: &mut Writer, model: &ModelDescription) {
+    let frames = generated_frames(model);
+    let geometry = if model.planar { ", Planar" } else { "" };
+    w.line("/// Number of frames.");
+    w.line(&format!("pub const NF: usize = {};", frames.len()));
+    w.line("/// Frame indices into `FRAMES_F64`, `FRAMES_F32` and `FRAME_NAMES`: every link");
+    w.line("/// (or body) fixed to a moving body, merged links included, with its full");
+    w.line("/// placement in that body. Links fixed to the world are not frames here.");
+    w.open("pub mod frame {");
+    for (k, (f, b, constant)) in frames.iter().enumerate() {
+        w.line(&format!("/// `{}` on `{}`.", f.name, model.bodies[*b].name));
+        w.line(&format!("pub const {constant}: usize = {k};"));
+    }
+    w.close("}");
+    w.blank();
+    w.line("/// Frame names, by frame index.");
+    w.line(&format!(
+        "pub const FRAME_NAMES: [&str; NF] = [{}];",
+        frames
+            .iter()
+            .map(|(f, _, _)| string_literal(&f.name))
+            .collect::<Vec<_>>()
+            .join(", ")
+    ));
+    w.line("/// The frames in scalar type `$S`, indexed by the constants of [`frame`].");
+    w.open("macro_rules! frames {");
+    w.open("($S:ty) => {");
+    w.open("[");
+    for (f, b, _) in &frames {
+        w.line(&format!("// {} on {}", f.name, model.bodies[*b].name));
+        w.line(&format!(
+            "Frame::<$S{geometry}>::new({b}, {}),",
+            placement(model.planar, &f.pose, model.snap_tolerance())
+        ));
+    }
+    w.close("]");
+    w.close("};");
+    w.close("}");
+    w.blank();
+    for s in ["f64", "f32"] {
+        w.line(&format!("/// The frames in `{s}`."));
+        w.line(&format!(
+            "pub const FRAMES_{}: [Frame<{s}{geometry}>; NF] = frames!({s});",
             s.to_uppercase()
         ));
     }
