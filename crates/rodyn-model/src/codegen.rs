@@ -73,6 +73,7 @@ pub fn generate(model: &ModelDescription, module: &str, source: &str) -> Result<
     sizes(&mut w, model);
     indices(&mut w, model);
     names(&mut w, model);
+    pinocchio_layout(&mut w, model);
     model_macro(&mut w, model)?;
     endpoints(&mut w, model);
     frames(&mut w, model);
@@ -303,6 +304,99 @@ fn names(w: &mut Writer, model: &ModelDescription) {
     w.line("None => write!(f, \"{}\", self.0),");
     w.close("}");
     w.close("}");
+    w.close("}");
+    w.blank();
+}
+
+/// The body whose joint keeps each configuration coordinate as an angle
+/// that Pinocchio keeps as `(cos θ, sin θ)`: a continuous joint's angle, a
+/// planar floating joint's θ.
+fn pinocchio_angles(model: &ModelDescription) -> Vec<Option<usize>> {
+    let mut out = Vec::with_capacity(model.nq());
+    for (i, b) in model.bodies.iter().enumerate() {
+        match b.joint {
+            JointType::Revolute { .. } => out.push(b.continuous.then_some(i)),
+            JointType::PlanarFloating => out.extend([None, None, Some(i)]),
+            other => out.extend(std::iter::repeat_n(None, other.nq())),
+        }
+    }
+    out
+}
+
+/// Conversions of configuration vectors to and from Pinocchio's layout.
+fn pinocchio_layout(w: &mut Writer, model: &ModelDescription) {
+    let angles = pinocchio_angles(model);
+    let pairs = angles.iter().flatten().count();
+    w.line("/// The size of Pinocchio's configuration vector for the same file: `NQ`");
+    w.line("/// plus one for each angle Pinocchio keeps as `(cos θ, sin θ)` (a");
+    w.line("/// continuous joint's, a planar floating joint's θ), where rodyn keeps θ.");
+    w.line(&format!(
+        "pub const PINOCCHIO_NQ: usize = {};",
+        model.nq() + pairs
+    ));
+    w.line("/// For each of rodyn's configuration coordinates, the joint (body index)");
+    w.line("/// when it is an angle that Pinocchio keeps as `(cos θ, sin θ)`.");
+    w.line(&format!(
+        "pub const PINOCCHIO_ANGLES: [Option<usize>; NQ] = [{}];",
+        angles
+            .iter()
+            .map(|a| a.map_or("None".to_string(), |j| format!("Some({j})")))
+            .collect::<Vec<_>>()
+            .join(", ")
+    ));
+    w.blank();
+    w.line("/// rodyn's configuration from Pinocchio's (`θ = atan2(sin, cos)` for each");
+    w.line("/// angle of [`PINOCCHIO_ANGLES`], every other coordinate as it is).");
+    w.line("/// Velocities, accelerations and torques are the same in both layouts.");
+    w.line("///");
+    w.line("/// # Errors");
+    w.line("/// `NonFinite` (`Configuration`, the index in Pinocchio's `q`) for a");
+    w.line("/// non-finite entry; `InvalidConfiguration` (`AngleNotUnit`) for a");
+    w.line("/// `(cos, sin)` pair off the unit circle beyond rounding.");
+    w.open("pub fn q_from_pinocchio<S: rodyn::Scalar>(q: &[S; PINOCCHIO_NQ]) -> rodyn::Result<[S; NQ]> {");
+    w.open("if let Some(index) = q.iter().position(|x| !x.is_finite()) {");
+    w.line("return Err(rodyn::Error::NonFinite { quantity: rodyn::error::Quantity::Configuration, index });");
+    w.close("}");
+    w.line("let mut out = [S::ZERO; NQ];");
+    w.line("let mut p = 0;");
+    w.open("for (k, angle) in PINOCCHIO_ANGLES.iter().enumerate() {");
+    w.open("if let Some(joint) = *angle {");
+    w.line("out[k] = rodyn::joint::angle_from_cos_sin(q[p], q[p + 1]).map_err(|reason| rodyn::Error::InvalidConfiguration { joint, reason })?;");
+    w.line("p += 2;");
+    w.close("} else {");
+    w.depth += 1;
+    w.line("out[k] = q[p];");
+    w.line("p += 1;");
+    w.close("}");
+    w.close("}");
+    w.line("Ok(out)");
+    w.close("}");
+    w.blank();
+    w.line("/// Pinocchio's configuration from rodyn's (`(cos θ, sin θ)` for each angle");
+    w.line("/// of [`PINOCCHIO_ANGLES`], every other coordinate as it is).");
+    w.line("///");
+    w.line("/// # Errors");
+    w.line("/// `NonFinite` (`Configuration`, the index in rodyn's `q`) for a");
+    w.line("/// non-finite entry.");
+    w.open("pub fn q_to_pinocchio<S: rodyn::Scalar>(q: &[S; NQ]) -> rodyn::Result<[S; PINOCCHIO_NQ]> {");
+    w.open("if let Some(index) = q.iter().position(|x| !x.is_finite()) {");
+    w.line("return Err(rodyn::Error::NonFinite { quantity: rodyn::error::Quantity::Configuration, index });");
+    w.close("}");
+    w.line("let mut out = [S::ZERO; PINOCCHIO_NQ];");
+    w.line("let mut p = 0;");
+    w.open("for (k, angle) in PINOCCHIO_ANGLES.iter().enumerate() {");
+    w.open("if let Some(joint) = *angle {");
+    w.line("let (c, s) = rodyn::joint::cos_sin_from_angle(q[k]).map_err(|reason| rodyn::Error::InvalidConfiguration { joint, reason })?;");
+    w.line("out[p] = c;");
+    w.line("out[p + 1] = s;");
+    w.line("p += 2;");
+    w.close("} else {");
+    w.depth += 1;
+    w.line("out[p] = q[k];");
+    w.line("p += 1;");
+    w.close("}");
+    w.close("}");
+    w.line("Ok(out)");
     w.close("}");
     w.blank();
 }

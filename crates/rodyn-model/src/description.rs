@@ -88,6 +88,9 @@ pub struct Body {
     pub parent: Option<usize>,
     /// The joint.
     pub joint: JointType,
+    /// A `continuous` joint (a revolute joint without limits): one angle in
+    /// rodyn's `q`, `(cos θ, sin θ)` in Pinocchio's.
+    pub continuous: bool,
     /// The joint frame at `q = 0` in the parent body's frame.
     pub placement: Pose,
     /// The body's inertia in its own frame, merged links included.

@@ -479,6 +479,7 @@ impl Reader<'_> {
             joint_name: b.joint.get_ref().clone(),
             parent,
             joint,
+            continuous: b.kind.get_ref() == "continuous",
             placement,
             inertia: RigidInertia { mass, com, inertia },
             location: self.at(b.name.span()),

@@ -152,6 +152,8 @@ struct Link {
 struct JointDecl<'a> {
     name: &'a str,
     kind: JointKind,
+    /// Declared `continuous`.
+    continuous: bool,
     parent: &'a str,
     child: &'a str,
     origin: Pose,
@@ -551,6 +553,7 @@ impl<'a> Reader<'a> {
         Ok(JointDecl {
             name,
             kind,
+            continuous: kind_text == "continuous",
             parent,
             child: child_link,
             origin: self.origin(node)?,
@@ -695,6 +698,7 @@ impl<'a> Reader<'a> {
                 joint_name: "root_joint".to_string(),
                 parent: None,
                 joint: JointType::FreeFlyer,
+                continuous: false,
                 placement: Pose::IDENTITY,
                 inertia: root_link.inertia.unwrap_or(RigidInertia::ZERO),
                 location: root_link.location.clone(),
@@ -755,6 +759,7 @@ impl<'a> Reader<'a> {
                         joint_name: j.name.to_string(),
                         parent: body,
                         joint,
+                        continuous: j.continuous,
                         placement,
                         inertia: child_inertia,
                         location: j.location.clone(),
