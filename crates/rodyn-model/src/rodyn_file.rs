@@ -11,7 +11,7 @@ use crate::codegen::fits_f32;
 use crate::description::{
     Body, Contact, EndpointDef, ForceElement, ForceLaw, Frame, JointType, ModelDescription, Motor,
 };
-use crate::diagnostic::{Diagnostic, LineIndex, Location, Result};
+use crate::diagnostic::{Diagnostic, LineIndex, Location, Result, WarningKinds};
 use crate::geometry::{norm, scale, Pose, RigidInertia, Vec3};
 use crate::names::{check_distinct, check_not_reserved};
 use crate::physics::{check_mass, check_rotational_inertia, check_subtrees_have_mass};
@@ -61,6 +61,9 @@ struct ModelSection {
     /// Placements within 1e-10 of a quarter turn become exact ones.
     #[serde(default)]
     round_quarter_turns: bool,
+    /// Kinds of warning not to report (`WarningKind` names).
+    #[serde(default)]
+    silence: Vec<S<String>>,
 }
 
 #[derive(Deserialize, Default)]
@@ -169,6 +172,28 @@ struct Scale {
 /// The first problem found, with its position in `file` (or in an included
 /// URDF).
 pub fn read_rodyn_file(file: &Path, text: &str, strict: bool) -> Result<ModelDescription> {
+    read_rodyn_file_with(
+        file,
+        text,
+        crate::LoadOptions {
+            strict,
+            ..crate::LoadOptions::default()
+        },
+    )
+}
+
+/// [`read_rodyn_file`] with the caller's options: strict mode and the
+/// silenced kinds of warning (the file's `silence` adds to them).
+///
+/// # Errors
+/// As [`read_rodyn_file`]; also a `silence` entry that is no kind of warning.
+pub fn read_rodyn_file_with(
+    file: &Path,
+    text: &str,
+    options: crate::LoadOptions,
+) -> Result<ModelDescription> {
+    let strict = options.strict;
+    let silence = options.silence;
     let parsed: File = toml::from_str(text).map_err(|e| {
         let at = e.span().map_or(0, |s| s.start);
         Diagnostic::error(
@@ -181,6 +206,7 @@ pub fn read_rodyn_file(file: &Path, text: &str, strict: bool) -> Result<ModelDes
         text,
         lines: LineIndex::new(text),
         strict,
+        silence,
     }
     .read(parsed)
 }
@@ -191,6 +217,8 @@ struct Reader<'a> {
     lines: LineIndex,
     /// Strict mode asked by the caller (the file may ask too).
     strict: bool,
+    /// Kinds of warning the caller silenced (the file may add some).
+    silence: WarningKinds,
 }
 
 impl Reader<'_> {
@@ -292,6 +320,7 @@ impl Reader<'_> {
             )?,
         };
         let planar = f.model.planar;
+        let silence = self.silence.union(self.silenced_by_file(&f.model)?);
         let mut model = match &f.model.include {
             Some(include) => {
                 let path = self
@@ -308,6 +337,7 @@ impl Reader<'_> {
                 let options = UrdfOptions {
                     floating_base: f.model.floating_base,
                     strict: self.strict || f.model.strict,
+                    silence,
                 };
                 let mut m = read_urdf(&path, &text, options)?;
                 m.included_files.insert(0, self.file.to_path_buf());
@@ -368,6 +398,18 @@ impl Reader<'_> {
         )?;
         self.add_drives(&mut model, &f, &scale_to_si)?;
         Ok(model)
+    }
+
+    /// The kinds of warning the file's `silence` names.
+    fn silenced_by_file(&self, model: &ModelSection) -> Result<WarningKinds> {
+        let mut set = WarningKinds::NONE;
+        for name in &model.silence {
+            set = set.union(
+                WarningKinds::parse_one(name.get_ref())
+                    .map_err(|why| Diagnostic::error(self.at(name.span()), why))?,
+            );
+        }
+        Ok(set)
     }
 
     /// The body a frame name is fixed to and the frame's pose in it.

@@ -20,7 +20,9 @@
 
 use crate::codegen::fits_f32;
 use crate::description::{Body, EndpointDef, Frame, JointType, ModelDescription};
-use crate::diagnostic::{Diagnostic, LineIndex, Location, Result};
+use crate::diagnostic::{
+    settle_warnings, Diagnostic, LineIndex, Location, Result, WarningKind, WarningKinds,
+};
 use crate::geometry::{norm, scale, Pose, RigidInertia, Vec3};
 use crate::physics::{check_mass, check_subtrees_have_mass, tensor_problem, TensorProblem};
 use roxmltree::{Document, Node};
@@ -40,6 +42,8 @@ pub struct UrdfOptions {
     /// rounding level or before a fixed joint merges it, a massless link
     /// with a tensor, a robot without a name.
     pub strict: bool,
+    /// Kinds of warning not to report (nor to refuse in strict mode).
+    pub silence: WarningKinds,
 }
 
 /// Reads URDF `text` (the content of `file`) into a checked model.
@@ -169,23 +173,27 @@ enum JointKind {
 /// Elements that do not enter the dynamics: counted, then reported once each.
 #[derive(Default)]
 struct Ignored {
-    first: BTreeMap<&'static str, (Location, usize)>,
+    first: BTreeMap<&'static str, (WarningKind, Location, usize)>,
 }
 
 impl Ignored {
-    fn note(&mut self, what: &'static str, location: Location) {
-        self.first.entry(what).or_insert((location, 0)).1 += 1;
+    fn note(&mut self, kind: WarningKind, what: &'static str, location: Location) {
+        self.first.entry(what).or_insert((kind, location, 0)).2 += 1;
     }
     fn into_warnings(self) -> Vec<Diagnostic> {
         self.first
             .into_iter()
-            .map(|(what, (location, count))| {
+            .map(|(what, (kind, location, count))| {
                 let times = if count == 1 {
                     "once".to_string()
                 } else {
                     format!("{count} times")
                 };
-                Diagnostic::warning(location, format!("ignored {what} ({times} in this file)"))
+                Diagnostic::warning_of(
+                    kind,
+                    location,
+                    format!("ignored {what} ({times} in this file)"),
+                )
             })
             .collect()
     }
@@ -288,7 +296,8 @@ impl<'a> Reader<'a> {
                     .file
                     .file_stem()
                     .map_or_else(|| "robot".into(), |s| s.to_string_lossy().into_owned());
-                self.lenient(Diagnostic::warning(
+                self.lenient(Diagnostic::warning_of(
+                    WarningKind::UnnamedRobot,
                     self.at_node(robot),
                     format!("<robot> has no `name` attribute; the model is named `{stem}` after the file"),
                 ));
@@ -333,12 +342,18 @@ impl<'a> Reader<'a> {
                     joints.push(joint);
                 }
                 "transmission" => ignored.note(
+                    WarningKind::Transmission,
                     "<transmission> (rodyn models motors in its own file)",
                     self.at_node(node),
                 ),
-                "gazebo" => ignored.note("<gazebo> (simulator settings)", self.at_node(node)),
+                "gazebo" => ignored.note(
+                    WarningKind::Gazebo,
+                    "<gazebo> (simulator settings)",
+                    self.at_node(node),
+                ),
                 "material" => {}
                 other => ignored.note(
+                    WarningKind::UnknownElement,
                     if other.is_empty() {
                         "an unnamed element"
                     } else {
@@ -368,7 +383,8 @@ impl<'a> Reader<'a> {
                         ),
                     ));
                 }
-                Some(p) => self.lenient(Diagnostic::warning(
+                Some(p) => self.lenient(Diagnostic::warning_of(
+                    WarningKind::BodyTensor,
                     body.location.clone(),
                     format!(
                         "body `{}` (its link and the links fixed to it) {}; no real body has such a tensor, but the dynamics are defined",
@@ -379,7 +395,8 @@ impl<'a> Reader<'a> {
                 None => {}
             }
         }
-        let lenient = self.lenient.take();
+        let mut lenient = self.lenient.take();
+        lenient.retain(|w| !w.kind.is_some_and(|k| options.silence.contains(k)));
         if options.strict {
             if let Some(first) = lenient.into_iter().next() {
                 return Err(Diagnostic::error(
@@ -391,6 +408,7 @@ impl<'a> Reader<'a> {
             model.warnings.extend(lenient);
         }
         model.warnings.extend(ignored.into_warnings());
+        model.warnings = settle_warnings(std::mem::take(&mut model.warnings), options.silence);
         Ok(model)
     }
 
@@ -406,10 +424,15 @@ impl<'a> Reader<'a> {
             match element.tag_name().name() {
                 "inertial" => inertia = Some(self.read_inertial(node, element)?),
                 "visual" | "collision" => ignored.note(
+                    WarningKind::Geometry,
                     "<visual> and <collision> geometry (meshes and shapes do not enter the dynamics)",
                     self.at_node(element),
                 ),
-                _ => ignored.note("an unknown element in <link>", self.at_node(element)),
+                _ => ignored.note(
+                    WarningKind::UnknownElement,
+                    "an unknown element in <link>",
+                    self.at_node(element),
+                ),
             }
         }
         Ok(Link { inertia, location })
@@ -443,7 +466,8 @@ impl<'a> Reader<'a> {
             // Pinocchio keeps such a link's tensor, and so does rodyn; a
             // moving link with neither mass nor tensor is refused below.
             if inertia.iter().flatten().any(|x| *x != 0.0) {
-                self.lenient(Diagnostic::warning(
+                self.lenient(Diagnostic::warning_of(
+                    WarningKind::MasslessTensor,
                     mass_at,
                     format!("{what} has mass 0 but a non-zero inertia tensor; the tensor is kept"),
                 ));
@@ -455,7 +479,8 @@ impl<'a> Reader<'a> {
         // joint may merge it into a body that is fine; the merged bodies
         // are checked after assembly.
         if let Some(problem) = tensor_problem(&inertia) {
-            self.lenient(Diagnostic::warning(
+            self.lenient(Diagnostic::warning_of(
+                WarningKind::LinkTensor,
                 self.at_node(i),
                 format!(
                     "{what} {} (the body it belongs to is checked after fixed joints merge links)",
@@ -538,16 +563,33 @@ impl<'a> Reader<'a> {
             let at = self.at_node(element);
             match element.tag_name().name() {
                 "origin" | "parent" | "child" | "axis" => {}
-                "limit" => ignored.note("<limit> (rodyn does not enforce joint limits)", at),
+                "limit" => ignored.note(
+                    WarningKind::Limit,
+                    "<limit> (rodyn does not enforce joint limits)",
+                    at,
+                ),
                 "dynamics" => ignored.note(
+                    WarningKind::Dynamics,
                     "<dynamics> damping and friction (model them as drives in a rodyn file)",
                     at,
                 ),
-                "mimic" => ignored.note("<mimic> (mimicking joints become independent joints)", at),
-                "calibration" | "safety_controller" => {
-                    ignored.note("<calibration> and <safety_controller>", at)
-                }
-                _ => ignored.note("an unknown element in <joint>", at),
+                "mimic" => ignored.note(
+                    WarningKind::Mimic,
+                    "<mimic> (rodyn does not couple joints: each mimicking joint becomes an \
+                     independent joint with its own q and v, as in Pinocchio's buildModel \
+                     without mimic=True; hold it at multiplier q_leader + offset yourself)",
+                    at,
+                ),
+                "calibration" | "safety_controller" => ignored.note(
+                    WarningKind::Calibration,
+                    "<calibration> and <safety_controller>",
+                    at,
+                ),
+                _ => ignored.note(
+                    WarningKind::UnknownElement,
+                    "an unknown element in <joint>",
+                    at,
+                ),
             }
         }
         Ok(JointDecl {
@@ -706,7 +748,8 @@ impl<'a> Reader<'a> {
             Some(0)
         } else {
             if root_link.inertia.is_some_and(|i| i.mass > 0.0) {
-                model.warnings.push(Diagnostic::warning(
+                model.warnings.push(Diagnostic::warning_of(
+                    WarningKind::FixedRootInertia,
                     root_link.location.clone(),
                     format!("the root link `{root}` is fixed to the world, so its inertia never moves and is dropped (as in Pinocchio); ask for a floating base to keep it"),
                 ));
