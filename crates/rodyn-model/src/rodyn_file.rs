@@ -34,6 +34,8 @@ struct File {
     #[serde(default)]
     endpoint: Vec<EndpointDecl>,
     #[serde(default)]
+    frame: Vec<FrameDecl>,
+    #[serde(default)]
     spring: Vec<SpringDecl>,
     #[serde(default)]
     damper: Vec<DamperDecl>,
@@ -98,6 +100,17 @@ struct EndpointDecl {
     name: S<String>,
     body: S<String>,
     position: S<Vec<f64>>,
+}
+
+/// A named frame (placement and orientation) on a body or URDF link.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FrameDecl {
+    name: S<String>,
+    body: S<String>,
+    position: Option<S<Vec<f64>>>,
+    rpy: Option<S<Vec<f64>>>,
+    angle: Option<S<f64>>,
 }
 
 #[derive(Deserialize)]
@@ -389,6 +402,9 @@ impl Reader<'_> {
         for e in &f.endpoint {
             self.add_endpoint(&mut model, e, &scale_to_si)?;
         }
+        for fr in &f.frame {
+            self.add_frame(&mut model, fr, &scale_to_si)?;
+        }
         check_distinct(
             "endpoint",
             model
@@ -486,24 +502,7 @@ impl Reader<'_> {
             Some(o) => self.vector(o, "the origin", planar, si.length)?,
             None => [0.0; 3],
         };
-        let rpy = match (&b.rpy, &b.angle) {
-            (Some(_), Some(a)) => return self.error(a, "give either `rpy` or `angle`, not both"),
-            (Some(r), None) if planar => {
-                return self.error(
-                    r,
-                    "a planar model rotates placements about z only: use `angle`",
-                )
-            }
-            (Some(r), None) => {
-                let x = r.get_ref();
-                if x.len() != 3 || x.iter().any(|c| !c.is_finite()) {
-                    return self.error(r, "`rpy` needs 3 finite angles (roll, pitch, yaw)");
-                }
-                scale(&[x[0], x[1], x[2]], si.angle)
-            }
-            (None, Some(a)) => [0.0, 0.0, self.number(a, "the angle", Sign::Any)? * si.angle],
-            (None, None) => [0.0; 3],
-        };
+        let rpy = self.rpy(b.rpy.as_ref(), b.angle.as_ref(), planar, si)?;
         let placement = parent_pose.compose(&Pose::from_xyz_rpy(&translation, &rpy));
         let what = format!("body `{name}`");
         let mass = *b.mass.get_ref() * si.mass;
@@ -591,6 +590,69 @@ impl Reader<'_> {
             }
             None => m,
         })
+    }
+
+    /// Roll, pitch and yaw in radians from `rpy` (3-D) or `angle` (planar,
+    /// about z), in the file's angle unit.
+    fn rpy(
+        &self,
+        rpy: Option<&S<Vec<f64>>>,
+        angle: Option<&S<f64>>,
+        planar: bool,
+        si: &Scale,
+    ) -> Result<Vec3> {
+        Ok(match (rpy, angle) {
+            (Some(_), Some(a)) => return self.error(a, "give either `rpy` or `angle`, not both"),
+            (Some(r), None) if planar => {
+                return self.error(
+                    r,
+                    "a planar model rotates placements about z only: use `angle`",
+                )
+            }
+            (Some(r), None) => {
+                let x = r.get_ref();
+                if x.len() != 3 || x.iter().any(|c| !c.is_finite()) {
+                    return self.error(r, "`rpy` needs 3 finite angles (roll, pitch, yaw)");
+                }
+                scale(&[x[0], x[1], x[2]], si.angle)
+            }
+            (None, Some(a)) => [0.0, 0.0, self.number(a, "the angle", Sign::Any)? * si.angle],
+            (None, None) => [0.0; 3],
+        })
+    }
+
+    /// A `[[frame]]`: a placement on a body or URDF link, kept in the
+    /// generated module's frames.
+    fn add_frame(&self, model: &mut ModelDescription, f: &FrameDecl, si: &Scale) -> Result<()> {
+        let name = f.name.get_ref();
+        if model.frames.iter().any(|fr| &fr.name == name) || name == "world" {
+            return self.error(
+                &f.name,
+                format!("a body, link or frame named `{name}` already exists"),
+            );
+        }
+        let (body, pose) = self.frame(model, &f.body)?;
+        if body.is_none() {
+            return self.error(
+                &f.body,
+                format!(
+                    "frame `{name}` is fixed to the world (`{}`), which never moves; a frame \
+                     needs a moving body",
+                    f.body.get_ref()
+                ),
+            );
+        }
+        let position = match &f.position {
+            Some(p) => self.vector(p, "the position", model.planar, si.length)?,
+            None => [0.0; 3],
+        };
+        let rpy = self.rpy(f.rpy.as_ref(), f.angle.as_ref(), model.planar, si)?;
+        model.frames.push(Frame {
+            name: name.clone(),
+            body,
+            pose: pose.compose(&Pose::from_xyz_rpy(&position, &rpy)),
+        });
+        Ok(())
     }
 
     fn add_endpoint(

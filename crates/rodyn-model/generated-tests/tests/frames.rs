@@ -10,7 +10,9 @@ use rodyn::algorithm::frames::frame_placement;
 use rodyn::algorithm::kinematics::forward_kinematics;
 use rodyn::spatial::Transform;
 use rodyn::{Data, Frame, Model};
-use rodyn_model_generated_tests::{panda, panda_with_motors, solo12, wheeled_arm};
+use rodyn_model_generated_tests::{
+    panda, panda_with_motors, solo12, wheeled_arm, wheeled_arm_tool,
+};
 use serde_json::Value;
 use std::path::Path;
 
@@ -255,4 +257,39 @@ fn bad_configurations_in_pinocchios_layout_are_named() {
     assert_eq!(p[..4], [0.1, 0.1, 2.0_f64.cos(), 2.0_f64.sin()]);
     let back = gait_planar::q_from_pinocchio(&p).unwrap();
     assert!(back.iter().zip(q).all(|(b, x)| (b - x).abs() < 1e-15));
+}
+
+#[test]
+fn frames_named_in_a_rodyn_file_sit_on_their_links() {
+    use rodyn::space::RigidTransform;
+    use rodyn::spatial::{Mat3, Vec3};
+    // The URDF's frames first, then the file's, in its order.
+    assert_eq!(wheeled_arm_tool::NF, wheeled_arm::NF + 2);
+    assert_eq!(
+        wheeled_arm_tool::FRAME_NAMES[wheeled_arm::NF..],
+        ["camera", "wheel_marker"]
+    );
+    let tool = wheeled_arm::FRAMES_F64[wheeled_arm::frame::TOOL];
+    let camera = wheeled_arm_tool::FRAMES_F64[wheeled_arm_tool::frame::CAMERA];
+    assert_eq!(camera.body, tool.body);
+    // 2 cm along the tool's z, turned by 90° about its y.
+    let offset = Transform::new(
+        Mat3::from_rows([[0.0, 0.0, 1.0], [0.0, 1.0, 0.0], [-1.0, 0.0, 0.0]]),
+        Vec3::new(0.0, 0.0, 0.02),
+    );
+    let want = tool.placement.compose(&offset);
+    for r in 0..3 {
+        for c in 0..3 {
+            assert!((camera.placement.rot.m[r][c] - want.rot.m[r][c]).abs() < 1e-15);
+        }
+    }
+    let d = camera.placement.trans.to_array();
+    let w = want.trans.to_array();
+    assert!(d.iter().zip(w).all(|(a, b)| (a - b).abs() < 1e-15));
+    let marker = wheeled_arm_tool::FRAMES_F64[wheeled_arm_tool::frame::WHEEL_MARKER];
+    assert_eq!(marker.body, wheeled_arm::body::LEFT_WHEEL);
+    assert_eq!(
+        marker.placement,
+        Transform::from_translation(Vec3::new(0.05, 0.0, 0.0))
+    );
 }
