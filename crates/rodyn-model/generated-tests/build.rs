@@ -46,6 +46,10 @@ fn main() {
     };
     let out = compile_with(urdf, "wheeled_arm", options);
     writeln!(all, "include!({:?});", out.display().to_string()).unwrap();
+    // Mimic joints, against Pinocchio's mimic=True model.
+    let urdf = Path::new(env!("CARGO_MANIFEST_DIR")).join("urdf/gripper.urdf");
+    let out = compile_with(urdf, "gripper", LoadOptions::default());
+    writeln!(all, "include!({:?});", out.display().to_string()).unwrap();
     // Frames named in a rodyn file on top of the URDF's.
     let toml = Path::new(env!("CARGO_MANIFEST_DIR")).join("urdf/wheeled_arm_tool.toml");
     let out = compile_with(toml, "wheeled_arm_tool", LoadOptions::default());

@@ -74,6 +74,7 @@ pub fn generate(model: &ModelDescription, module: &str, source: &str) -> Result<
     indices(&mut w, model);
     names(&mut w, model);
     pinocchio_layout(&mut w, model);
+    mimics(&mut w, model);
     model_macro(&mut w, model)?;
     endpoints(&mut w, model);
     frames(&mut w, model);
@@ -395,6 +396,198 @@ fn pinocchio_layout(w: &mut Writer, model: &ModelDescription) {
     w.line("out[p] = q[k];");
     w.line("p += 1;");
     w.close("}");
+    w.close("}");
+    w.line("Ok(out)");
+    w.close("}");
+    w.blank();
+}
+
+/// Mimic joints (URDF `<mimic>`) and the maps between rodyn's coordinates
+/// and Pinocchio's `mimic=True` ones, which leave out each follower's.
+fn mimics(w: &mut Writer, model: &ModelDescription) {
+    let list = |v: Vec<usize>| {
+        v.iter()
+            .map(ToString::to_string)
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    w.line("/// Number of mimic joints (URDF `<mimic>`).");
+    w.line(&format!("pub const NM: usize = {};", model.mimics.len()));
+    w.line("/// A joint that moves with another: `q_f = multiplier q_l + offset`,");
+    w.line("/// `v_f = multiplier v_l` (body indices, as `joint::`). `MODEL_*` keeps the");
+    w.line("/// follower as a joint of its own; the `*_mimic` functions couple them.");
+    w.line("#[derive(Clone, Copy, Debug, PartialEq)]");
+    w.open("pub struct Mimic {");
+    w.line("/// The follower joint.");
+    w.line("pub follower: usize,");
+    w.line("/// The leader joint.");
+    w.line("pub leader: usize,");
+    w.line("/// `multiplier`.");
+    w.line("pub multiplier: f64,");
+    w.line("/// `offset` (rad or m).");
+    w.line("pub offset: f64,");
+    w.close("}");
+    w.line("/// The mimic joints.");
+    w.open("pub const MIMICS: [Mimic; NM] = [");
+    for m in &model.mimics {
+        w.line(&format!(
+            "// {} follows {}",
+            model.bodies[m.follower].joint_name, model.bodies[m.leader].joint_name
+        ));
+        w.line(&format!(
+            "Mimic {{ follower: {}, leader: {}, multiplier: {}, offset: {} }},",
+            m.follower,
+            m.leader,
+            literal(m.multiplier),
+            literal(m.offset)
+        ));
+    }
+    w.close("];");
+    w.line("/// Configuration and velocity sizes without the followers' coordinates");
+    w.line("/// (Pinocchio's `buildModelFromUrdf(..., mimic=True)`).");
+    w.line(&format!(
+        "pub const MIMIC_NQ: usize = {};",
+        model.nq() - model.mimics.len()
+    ));
+    w.line(&format!(
+        "pub const MIMIC_NV: usize = {};",
+        model.nv() - model.mimics.len()
+    ));
+    w.line(&format!(
+        "const IDX_Q: [usize; NB] = [{}];",
+        list(model.idx_q())
+    ));
+    w.line(&format!(
+        "const IDX_V: [usize; NB] = [{}];",
+        list(model.idx_v())
+    ));
+    w.blank();
+    // One function per map; `$index` is IDX_Q or IDX_V.
+    let expand = |w: &mut Writer,
+                  name: &str,
+                  doc: &[&str],
+                  full: &str,
+                  reduced: &str,
+                  index: &str,
+                  quantity: &str,
+                  offset: bool| {
+        for line in doc {
+            w.line(&format!("/// {line}"));
+        }
+        w.open(&format!(
+            "pub fn {name}<S: rodyn::Scalar>(x: &[S; {reduced}]) -> rodyn::Result<[S; {full}]> {{"
+        ));
+        w.open("if let Some(index) = x.iter().position(|x| !x.is_finite()) {");
+        w.line(&format!("return Err(rodyn::Error::NonFinite {{ quantity: rodyn::error::Quantity::{quantity}, index }});"));
+        w.close("}");
+        w.line(&format!("let mut out = [S::ZERO; {full}];"));
+        w.line("let mut r = 0;");
+        w.open("for (k, slot) in out.iter_mut().enumerate() {");
+        w.open(&format!(
+            "if !MIMICS.iter().any(|m| {index}[m.follower] == k) {{"
+        ));
+        w.line("*slot = x[r];");
+        w.line("r += 1;");
+        w.close("}");
+        w.close("}");
+        w.open("for m in &MIMICS {");
+        let plus = if offset {
+            " + S::from_f64(m.offset)"
+        } else {
+            ""
+        };
+        w.line(&format!(
+            "out[{index}[m.follower]] = S::from_f64(m.multiplier) * out[{index}[m.leader]]{plus};"
+        ));
+        w.close("}");
+        w.open("if let Some(index) = out.iter().position(|x| !x.is_finite()) {");
+        w.line(&format!("return Err(rodyn::Error::NonFiniteResult {{ quantity: rodyn::error::Quantity::{quantity}, index }});"));
+        w.close("}");
+        w.line("Ok(out)");
+        w.close("}");
+        w.blank();
+    };
+    expand(
+        w,
+        "q_from_mimic",
+        &[
+            "rodyn's configuration from the leaders' (Pinocchio's `mimic=True` layout):",
+            "each follower at `multiplier q_l + offset`.",
+            "",
+            "# Errors",
+            "`NonFinite` for a non-finite entry, `NonFiniteResult` when a follower's",
+            "coordinate overflows.",
+        ],
+        "NQ",
+        "MIMIC_NQ",
+        "IDX_Q",
+        "Configuration",
+        true,
+    );
+    expand(
+        w,
+        "v_from_mimic",
+        &[
+            "rodyn's velocities (or accelerations) from the leaders': each follower's",
+            "`multiplier v_l` (`v = G v_m`).",
+            "",
+            "# Errors",
+            "As [`q_from_mimic`].",
+        ],
+        "NV",
+        "MIMIC_NV",
+        "IDX_V",
+        "Velocity",
+        false,
+    );
+    w.line("/// Pinocchio's `mimic=True` configuration from rodyn's: the followers'");
+    w.line("/// coordinates left out.");
+    w.line("///");
+    w.line("/// # Errors");
+    w.line("/// `NonFinite` for a non-finite entry.");
+    w.open("pub fn q_to_mimic<S: rodyn::Scalar>(q: &[S; NQ]) -> rodyn::Result<[S; MIMIC_NQ]> {");
+    w.open("if let Some(index) = q.iter().position(|x| !x.is_finite()) {");
+    w.line("return Err(rodyn::Error::NonFinite { quantity: rodyn::error::Quantity::Configuration, index });");
+    w.close("}");
+    w.line("let mut out = [S::ZERO; MIMIC_NQ];");
+    w.line("let mut r = 0;");
+    w.open("for (k, x) in q.iter().enumerate() {");
+    w.open("if !MIMICS.iter().any(|m| IDX_Q[m.follower] == k) {");
+    w.line("out[r] = *x;");
+    w.line("r += 1;");
+    w.close("}");
+    w.close("}");
+    w.line("Ok(out)");
+    w.close("}");
+    w.blank();
+    w.line("/// The generalised forces on the leaders' coordinates from rodyn's (`Gᵀ τ`:");
+    w.line("/// each follower's force, times its multiplier, added to its leader's),");
+    w.line("/// as Pinocchio's `rnea` of the `mimic=True` model gives them.");
+    w.line("///");
+    w.line("/// # Errors");
+    w.line("/// `NonFinite` for a non-finite entry, `NonFiniteResult` on overflow.");
+    w.open(
+        "pub fn tau_to_mimic<S: rodyn::Scalar>(tau: &[S; NV]) -> rodyn::Result<[S; MIMIC_NV]> {",
+    );
+    w.open("if let Some(index) = tau.iter().position(|x| !x.is_finite()) {");
+    w.line(
+        "return Err(rodyn::Error::NonFinite { quantity: rodyn::error::Quantity::Torque, index });",
+    );
+    w.close("}");
+    w.line("let mut full = *tau;");
+    w.open("for m in &MIMICS {");
+    w.line("full[IDX_V[m.leader]] += S::from_f64(m.multiplier) * tau[IDX_V[m.follower]];");
+    w.close("}");
+    w.line("let mut out = [S::ZERO; MIMIC_NV];");
+    w.line("let mut r = 0;");
+    w.open("for (k, x) in full.iter().enumerate() {");
+    w.open("if !MIMICS.iter().any(|m| IDX_V[m.follower] == k) {");
+    w.line("out[r] = *x;");
+    w.line("r += 1;");
+    w.close("}");
+    w.close("}");
+    w.open("if let Some(index) = out.iter().position(|x| !x.is_finite()) {");
+    w.line("return Err(rodyn::Error::NonFiniteResult { quantity: rodyn::error::Quantity::Torque, index });");
     w.close("}");
     w.line("Ok(out)");
     w.close("}");

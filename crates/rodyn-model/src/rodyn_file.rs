@@ -366,6 +366,7 @@ impl Reader<'_> {
                 force_elements: Vec::new(),
                 motors: Vec::new(),
                 contacts: Vec::new(),
+                mimics: Vec::new(),
                 warnings: Vec::new(),
                 included_files: vec![self.file.to_path_buf()],
                 round_quarter_turns: false,

@@ -19,7 +19,7 @@
 //! dynamics; each is reported once as a warning.
 
 use crate::codegen::fits_f32;
-use crate::description::{Body, EndpointDef, Frame, JointType, ModelDescription};
+use crate::description::{Body, EndpointDef, Frame, JointType, MimicDef, ModelDescription};
 use crate::diagnostic::{
     settle_warnings, Diagnostic, LineIndex, Location, Result, WarningKind, WarningKinds,
 };
@@ -158,6 +158,8 @@ struct JointDecl<'a> {
     kind: JointKind,
     /// Declared `continuous`.
     continuous: bool,
+    /// Its `<mimic>`: the leader joint's name, multiplier and offset.
+    mimic: Option<(&'a str, f64, f64)>,
     parent: &'a str,
     child: &'a str,
     origin: Pose,
@@ -369,6 +371,7 @@ impl<'a> Reader<'a> {
         let joint_of_child = self.check_tree(&links, &joints)?;
         let root = self.find_root(robot, &links, &link_order, &joint_of_child, &joints)?;
         let mut model = self.assemble(name, root, &links, &joints, options)?;
+        self.resolve_mimics(&mut model, &joints);
         check_subtrees_have_mass(&model)?;
         // The bodies the dynamics use, after fixed joints merged their links.
         for body in &model.bodies {
@@ -575,9 +578,10 @@ impl<'a> Reader<'a> {
                 ),
                 "mimic" => ignored.note(
                     WarningKind::Mimic,
-                    "<mimic> (rodyn does not couple joints: each mimicking joint becomes an \
-                     independent joint with its own q and v, as in Pinocchio's buildModel \
-                     without mimic=True; hold it at multiplier q_leader + offset yourself)",
+                    "<mimic> in the model's dynamics (MODEL_* keeps each mimicking joint as \
+                     an independent joint, as Pinocchio's buildModel without mimic=True; the \
+                     generated MIMICS and *_mimic functions give Pinocchio's mimic=True \
+                     coordinates and torques)",
                     at,
                 ),
                 "calibration" | "safety_controller" => ignored.note(
@@ -592,9 +596,24 @@ impl<'a> Reader<'a> {
                 ),
             }
         }
+        let mimic = match child(node, "mimic") {
+            Some(m) => Some((
+                self.required_attribute(m, "joint")?,
+                match m.attribute("multiplier") {
+                    Some(t) => self.number(m, "multiplier", t)?,
+                    None => 1.0,
+                },
+                match m.attribute("offset") {
+                    Some(t) => self.number(m, "offset", t)?,
+                    None => 0.0,
+                },
+            )),
+            None => None,
+        };
         Ok(JointDecl {
             name,
             kind,
+            mimic,
             continuous: kind_text == "continuous",
             parent,
             child: child_link,
@@ -703,6 +722,77 @@ impl<'a> Reader<'a> {
         }
     }
 
+    /// Each moving joint's `<mimic>` as a [`MimicDef`] between bodies. A
+    /// mimic that cannot be coupled (an unknown leader, a continuous or
+    /// floating joint, a chain of mimics) is a warning, and its follower
+    /// stays an independent joint.
+    fn resolve_mimics(&self, model: &mut ModelDescription, joints: &[JointDecl<'_>]) {
+        let body_of: HashMap<&str, usize> = model
+            .bodies
+            .iter()
+            .enumerate()
+            .map(|(i, b)| (b.joint_name.as_str(), i))
+            .collect();
+        let one_dof = |i: usize| {
+            matches!(
+                model.bodies[i].joint,
+                JointType::Revolute { .. } | JointType::Prismatic { .. }
+            ) && !model.bodies[i].continuous
+        };
+        let mut mimics = Vec::new();
+        for j in joints {
+            let (Some((leader, multiplier, offset)), Some(&follower)) =
+                (j.mimic, body_of.get(j.name))
+            else {
+                continue;
+            };
+            let why = match body_of.get(leader) {
+                None => Some("which is not a moving joint of the robot"),
+                Some(&l) if !(one_dof(follower) && one_dof(l)) || follower == l => Some(
+                    "but a mimic couples two distinct revolute or prismatic joints (not \
+                     continuous, floating or itself)",
+                ),
+                Some(&l) => {
+                    mimics.push(MimicDef {
+                        follower,
+                        leader: l,
+                        multiplier,
+                        offset,
+                    });
+                    None
+                }
+            };
+            if let Some(why) = why {
+                self.lenient(Diagnostic::warning_of(
+                    WarningKind::Mimic,
+                    j.location.clone(),
+                    format!(
+                        "joint `{}` mimics `{leader}`, {why}; it stays an independent joint",
+                        j.name
+                    ),
+                ));
+            }
+        }
+        let followers: Vec<usize> = mimics.iter().map(|m: &MimicDef| m.follower).collect();
+        mimics.retain(|m| {
+            if !followers.contains(&m.leader) {
+                return true;
+            }
+            let j = &model.bodies[m.follower];
+            self.lenient(Diagnostic::warning_of(
+                WarningKind::Mimic,
+                j.location.clone(),
+                format!(
+                    "joint `{}` mimics `{}`, which mimics another joint itself; it stays an \
+                     independent joint (make it mimic that joint directly)",
+                    j.joint_name, model.bodies[m.leader].joint_name
+                ),
+            ));
+            false
+        });
+        model.mimics = mimics;
+    }
+
     /// Walks the tree depth-first in Pinocchio's order, merging fixed joints.
     fn assemble(
         &self,
@@ -729,6 +819,7 @@ impl<'a> Reader<'a> {
             force_elements: Vec::new(),
             motors: Vec::new(),
             contacts: Vec::new(),
+            mimics: Vec::new(),
             warnings: Vec::new(),
             included_files: vec![self.file.to_path_buf()],
             round_quarter_turns: false,

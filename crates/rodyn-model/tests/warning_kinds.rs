@@ -34,7 +34,10 @@ fn urdf() -> String {
 }
 
 fn messages(options: LoadOptions) -> Vec<String> {
-    let path = write("kinds.urdf", &urdf());
+    // Tests run in parallel: one file per call.
+    static CALLS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let n = CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let path = write(&format!("kinds{n}.urdf"), &urdf());
     load(&path, options)
         .unwrap_or_else(|e| panic!("{e}"))
         .warnings
@@ -61,7 +64,7 @@ fn each_kind_is_reported_once_per_file_with_its_name() {
     assert!(limits[0].contains("(2 times in this file) [limit]"));
     assert!(all
         .iter()
-        .any(|m| m.contains("rodyn does not couple joints") && m.ends_with("[mimic]")));
+        .any(|m| m.contains("MIMICS and *_mimic functions") && m.ends_with("[mimic]")));
 }
 
 #[test]
@@ -133,4 +136,25 @@ fn the_cli_silences_kinds() {
     let bad = run(&["--silence", "limitz"]);
     assert!(!bad.status.success());
     assert!(String::from_utf8_lossy(&bad.stderr).contains("--silence: `limitz` is no kind"));
+}
+
+#[test]
+fn a_mimic_that_cannot_be_coupled_is_a_warning() {
+    let text = urdf().replace("<mimic joint=\"shoulder\"/>", "<mimic joint=\"nowhere\"/>");
+    let path = write("kinds_mimic.urdf", &text);
+    let model = load(&path, LoadOptions::default()).unwrap();
+    assert!(model.mimics.is_empty());
+    assert!(model
+        .warnings
+        .iter()
+        .any(|w| w.kind == Some(WarningKind::Mimic)
+            && w.message
+                .contains("joint `elbow` mimics `nowhere`, which is not a moving joint")));
+    // Coupled when the leader exists.
+    let model = load(
+        &write("kinds_mimic_ok.urdf", &urdf()),
+        LoadOptions::default(),
+    )
+    .unwrap();
+    assert_eq!((model.mimics[0].follower, model.mimics[0].leader), (1, 0));
 }
