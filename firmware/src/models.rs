@@ -8,7 +8,6 @@
 //! the x-y plane about z).
 
 use rodyn::planar::{Planar, PlanarInertia, PlanarJoint, PlanarMotion, PlanarTransform, Vec2};
-use rodyn::spatial::Transform;
 use rodyn::{Frame, Model};
 
 pub use rodyn_scenarios::{aibo, muscle_robot, panda, pendulum, quadruped};
@@ -26,12 +25,9 @@ pub const PANDA_TORQUE_LIMITS: [f32; panda::NV] = [87.0, 87.0, 87.0, 87.0, 12.0,
 pub const PANDA_READY: [f32; panda::NV] = [0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785];
 
 /// The Panda's flange (`panda_link8` of its URDF, merged into the last
-/// link by the model compiler): 0.107 m along the last link's z axis, with
-/// its axes, where a tool is mounted.
-pub const PANDA_FLANGE: Frame<f32> = Frame::new(
-    panda::body::PANDA_LINK7,
-    Transform::from_translation(panda::ENDPOINTS_F32[panda::endpoint::PANDA_LINK8].position),
-);
+/// link by the model compiler, which keeps it as a frame): 0.107 m along
+/// the last link's z axis, with its axes, where a tool is mounted.
+pub const PANDA_FLANGE: Frame<f32> = panda::FRAMES_F32[panda::frame::PANDA_LINK8];
 
 /// The pendulum of `models/pendulum.toml` as a planar model: the same link
 /// (it turns about z and its centre of mass lies in the x-y plane) with the

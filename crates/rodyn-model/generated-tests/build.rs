@@ -38,6 +38,26 @@ fn main() {
     let odd = Path::new(env!("CARGO_MANIFEST_DIR")).join("odd/odd_names.toml");
     let out = compile_with(odd, "odd_names", LoadOptions::default());
     writeln!(all, "include!({:?});", out.display().to_string()).unwrap();
+    // Continuous joints on a free-flyer, against Pinocchio's layout.
+    let urdf = Path::new(env!("CARGO_MANIFEST_DIR")).join("urdf/wheeled_arm.urdf");
+    let options = LoadOptions {
+        floating_base: true,
+        ..LoadOptions::default()
+    };
+    let out = compile_with(urdf, "wheeled_arm", options);
+    writeln!(all, "include!({:?});", out.display().to_string()).unwrap();
+    // Mimic joints, against Pinocchio's mimic=True model.
+    let urdf = Path::new(env!("CARGO_MANIFEST_DIR")).join("urdf/gripper.urdf");
+    let out = compile_with(urdf, "gripper", LoadOptions::default());
+    writeln!(all, "include!({:?});", out.display().to_string()).unwrap();
+    // Frames named in a rodyn file on top of the URDF's.
+    let toml = Path::new(env!("CARGO_MANIFEST_DIR")).join("urdf/wheeled_arm_tool.toml");
+    let out = compile_with(toml, "wheeled_arm_tool", LoadOptions::default());
+    writeln!(all, "include!({:?});", out.display().to_string()).unwrap();
+    // Link names that become the same constant: the frames stay distinct.
+    let odd = Path::new(env!("CARGO_MANIFEST_DIR")).join("odd/frame_names.urdf");
+    let out = compile_with(odd, "frame_names", LoadOptions::default());
+    writeln!(all, "include!({:?});", out.display().to_string()).unwrap();
     let out_dir = std::env::var("OUT_DIR").unwrap();
     std::fs::write(Path::new(&out_dir).join("models.rs"), all).unwrap();
 }

@@ -1,6 +1,7 @@
 //! Writes a [`ModelDescription`] as a Rust module: a `const` model in `f64`
-//! and `f32`, named indices for bodies, joints, coordinates and endpoints,
-//! and the drive and contact parameters.
+//! and `f32`, named indices for bodies, joints, coordinates, endpoints and
+//! frames, the frames as `rodyn::Frame` values, and the drive and contact
+//! parameters.
 //!
 //! The output uses only `rodyn::` paths and `core` syntax, so it compiles in a
 //! `no_std` crate. Every float is written as an untyped literal inside a
@@ -10,7 +11,7 @@
 use crate::description::{ForceLaw, JointType, ModelDescription};
 use crate::diagnostic::{Diagnostic, Location, Result};
 use crate::geometry::{snap_deviation, snap_signed_permutation, Mat3, Pose, Vec3, IDENTITY};
-use crate::names::{check_distinct, constant_name, module_name};
+use crate::names::{check_distinct, constant_name, module_name, unique_constant_names};
 
 /// Rust source of `model` as `pub mod <module>`. `source` names the model
 /// file in the header comment.
@@ -67,13 +68,16 @@ pub fn generate(model: &ModelDescription, module: &str, source: &str) -> Result<
     for line in geometry.lines() {
         w.line(line);
     }
-    w.line("use rodyn::{Endpoint, Model};");
+    w.line("use rodyn::{Endpoint, Frame, Model};");
     w.blank();
     sizes(&mut w, model);
     indices(&mut w, model);
     names(&mut w, model);
+    pinocchio_layout(&mut w, model);
+    mimics(&mut w, model);
     model_macro(&mut w, model)?;
     endpoints(&mut w, model);
+    frames(&mut w, model);
     drives(&mut w, model);
     w.close("}");
     if let Some(x) = UNFIT.with(|u| u.borrow().first().copied()) {
@@ -301,6 +305,291 @@ fn names(w: &mut Writer, model: &ModelDescription) {
     w.line("None => write!(f, \"{}\", self.0),");
     w.close("}");
     w.close("}");
+    w.close("}");
+    w.blank();
+}
+
+/// The body whose joint keeps each configuration coordinate as an angle
+/// that Pinocchio keeps as `(cos θ, sin θ)`: a continuous joint's angle, a
+/// planar floating joint's θ.
+fn pinocchio_angles(model: &ModelDescription) -> Vec<Option<usize>> {
+    let mut out = Vec::with_capacity(model.nq());
+    for (i, b) in model.bodies.iter().enumerate() {
+        match b.joint {
+            JointType::Revolute { .. } => out.push(b.continuous.then_some(i)),
+            JointType::PlanarFloating => out.extend([None, None, Some(i)]),
+            other => out.extend(std::iter::repeat_n(None, other.nq())),
+        }
+    }
+    out
+}
+
+/// Conversions of configuration vectors to and from Pinocchio's layout.
+fn pinocchio_layout(w: &mut Writer, model: &ModelDescription) {
+    let angles = pinocchio_angles(model);
+    let pairs = angles.iter().flatten().count();
+    w.line("/// The size of Pinocchio's configuration vector for the same file: `NQ`");
+    w.line("/// plus one for each angle Pinocchio keeps as `(cos θ, sin θ)` (a");
+    w.line("/// continuous joint's, a planar floating joint's θ), where rodyn keeps θ.");
+    w.line(&format!(
+        "pub const PINOCCHIO_NQ: usize = {};",
+        model.nq() + pairs
+    ));
+    w.line("/// For each of rodyn's configuration coordinates, the joint (body index)");
+    w.line("/// when it is an angle that Pinocchio keeps as `(cos θ, sin θ)`.");
+    w.line(&format!(
+        "pub const PINOCCHIO_ANGLES: [Option<usize>; NQ] = [{}];",
+        angles
+            .iter()
+            .map(|a| a.map_or("None".to_string(), |j| format!("Some({j})")))
+            .collect::<Vec<_>>()
+            .join(", ")
+    ));
+    w.blank();
+    w.line("/// rodyn's configuration from Pinocchio's (`θ = atan2(sin, cos)` for each");
+    w.line("/// angle of [`PINOCCHIO_ANGLES`], every other coordinate as it is).");
+    w.line("/// Velocities, accelerations and torques are the same in both layouts.");
+    w.line("///");
+    w.line("/// # Errors");
+    w.line("/// `NonFinite` (`Configuration`, the index in Pinocchio's `q`) for a");
+    w.line("/// non-finite entry; `InvalidConfiguration` (`AngleNotUnit`) for a");
+    w.line("/// `(cos, sin)` pair off the unit circle beyond rounding.");
+    w.open("pub fn q_from_pinocchio<S: rodyn::Scalar>(q: &[S; PINOCCHIO_NQ]) -> rodyn::Result<[S; NQ]> {");
+    w.open("if let Some(index) = q.iter().position(|x| !x.is_finite()) {");
+    w.line("return Err(rodyn::Error::NonFinite { quantity: rodyn::error::Quantity::Configuration, index });");
+    w.close("}");
+    w.line("let mut out = [S::ZERO; NQ];");
+    w.line("let mut p = 0;");
+    w.open("for (k, angle) in PINOCCHIO_ANGLES.iter().enumerate() {");
+    w.open("if let Some(joint) = *angle {");
+    w.line("out[k] = rodyn::joint::angle_from_cos_sin(q[p], q[p + 1]).map_err(|reason| rodyn::Error::InvalidConfiguration { joint, reason })?;");
+    w.line("p += 2;");
+    w.close("} else {");
+    w.depth += 1;
+    w.line("out[k] = q[p];");
+    w.line("p += 1;");
+    w.close("}");
+    w.close("}");
+    w.line("Ok(out)");
+    w.close("}");
+    w.blank();
+    w.line("/// Pinocchio's configuration from rodyn's (`(cos θ, sin θ)` for each angle");
+    w.line("/// of [`PINOCCHIO_ANGLES`], every other coordinate as it is).");
+    w.line("///");
+    w.line("/// # Errors");
+    w.line("/// `NonFinite` (`Configuration`, the index in rodyn's `q`) for a");
+    w.line("/// non-finite entry.");
+    w.open("pub fn q_to_pinocchio<S: rodyn::Scalar>(q: &[S; NQ]) -> rodyn::Result<[S; PINOCCHIO_NQ]> {");
+    w.open("if let Some(index) = q.iter().position(|x| !x.is_finite()) {");
+    w.line("return Err(rodyn::Error::NonFinite { quantity: rodyn::error::Quantity::Configuration, index });");
+    w.close("}");
+    w.line("let mut out = [S::ZERO; PINOCCHIO_NQ];");
+    w.line("let mut p = 0;");
+    w.open("for (k, angle) in PINOCCHIO_ANGLES.iter().enumerate() {");
+    w.open("if let Some(joint) = *angle {");
+    w.line("let (c, s) = rodyn::joint::cos_sin_from_angle(q[k]).map_err(|reason| rodyn::Error::InvalidConfiguration { joint, reason })?;");
+    w.line("out[p] = c;");
+    w.line("out[p + 1] = s;");
+    w.line("p += 2;");
+    w.close("} else {");
+    w.depth += 1;
+    w.line("out[p] = q[k];");
+    w.line("p += 1;");
+    w.close("}");
+    w.close("}");
+    w.line("Ok(out)");
+    w.close("}");
+    w.blank();
+}
+
+/// Mimic joints (URDF `<mimic>`) and the maps between rodyn's coordinates
+/// and Pinocchio's `mimic=True` ones, which leave out each follower's.
+fn mimics(w: &mut Writer, model: &ModelDescription) {
+    let list = |v: Vec<usize>| {
+        v.iter()
+            .map(ToString::to_string)
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    w.line("/// Number of mimic joints (URDF `<mimic>`).");
+    w.line(&format!("pub const NM: usize = {};", model.mimics.len()));
+    w.line("/// A joint that moves with another: `q_f = multiplier q_l + offset`,");
+    w.line("/// `v_f = multiplier v_l` (body indices, as `joint::`). `MODEL_*` keeps the");
+    w.line("/// follower as a joint of its own; the `*_mimic` functions couple them.");
+    w.line("#[derive(Clone, Copy, Debug, PartialEq)]");
+    w.open("pub struct Mimic {");
+    w.line("/// The follower joint.");
+    w.line("pub follower: usize,");
+    w.line("/// The leader joint.");
+    w.line("pub leader: usize,");
+    w.line("/// `multiplier`.");
+    w.line("pub multiplier: f64,");
+    w.line("/// `offset` (rad or m).");
+    w.line("pub offset: f64,");
+    w.close("}");
+    w.line("/// The mimic joints.");
+    w.open("pub const MIMICS: [Mimic; NM] = [");
+    for m in &model.mimics {
+        w.line(&format!(
+            "// {} follows {}",
+            model.bodies[m.follower].joint_name, model.bodies[m.leader].joint_name
+        ));
+        w.line(&format!(
+            "Mimic {{ follower: {}, leader: {}, multiplier: {}, offset: {} }},",
+            m.follower,
+            m.leader,
+            literal(m.multiplier),
+            literal(m.offset)
+        ));
+    }
+    w.close("];");
+    w.line("/// Configuration and velocity sizes without the followers' coordinates");
+    w.line("/// (Pinocchio's `buildModelFromUrdf(..., mimic=True)`).");
+    w.line(&format!(
+        "pub const MIMIC_NQ: usize = {};",
+        model.nq() - model.mimics.len()
+    ));
+    w.line(&format!(
+        "pub const MIMIC_NV: usize = {};",
+        model.nv() - model.mimics.len()
+    ));
+    w.line(&format!(
+        "const IDX_Q: [usize; NB] = [{}];",
+        list(model.idx_q())
+    ));
+    w.line(&format!(
+        "const IDX_V: [usize; NB] = [{}];",
+        list(model.idx_v())
+    ));
+    w.blank();
+    // One function per map; `$index` is IDX_Q or IDX_V.
+    let expand = |w: &mut Writer,
+                  name: &str,
+                  doc: &[&str],
+                  full: &str,
+                  reduced: &str,
+                  index: &str,
+                  quantity: &str,
+                  offset: bool| {
+        for line in doc {
+            w.line(&format!("/// {line}"));
+        }
+        w.open(&format!(
+            "pub fn {name}<S: rodyn::Scalar>(x: &[S; {reduced}]) -> rodyn::Result<[S; {full}]> {{"
+        ));
+        w.open("if let Some(index) = x.iter().position(|x| !x.is_finite()) {");
+        w.line(&format!("return Err(rodyn::Error::NonFinite {{ quantity: rodyn::error::Quantity::{quantity}, index }});"));
+        w.close("}");
+        w.line(&format!("let mut out = [S::ZERO; {full}];"));
+        w.line("let mut r = 0;");
+        w.open("for (k, slot) in out.iter_mut().enumerate() {");
+        w.open(&format!(
+            "if !MIMICS.iter().any(|m| {index}[m.follower] == k) {{"
+        ));
+        w.line("*slot = x[r];");
+        w.line("r += 1;");
+        w.close("}");
+        w.close("}");
+        w.open("for m in &MIMICS {");
+        let plus = if offset {
+            " + S::from_f64(m.offset)"
+        } else {
+            ""
+        };
+        w.line(&format!(
+            "out[{index}[m.follower]] = S::from_f64(m.multiplier) * out[{index}[m.leader]]{plus};"
+        ));
+        w.close("}");
+        w.open("if let Some(index) = out.iter().position(|x| !x.is_finite()) {");
+        w.line(&format!("return Err(rodyn::Error::NonFiniteResult {{ quantity: rodyn::error::Quantity::{quantity}, index }});"));
+        w.close("}");
+        w.line("Ok(out)");
+        w.close("}");
+        w.blank();
+    };
+    expand(
+        w,
+        "q_from_mimic",
+        &[
+            "rodyn's configuration from the leaders' (Pinocchio's `mimic=True` layout):",
+            "each follower at `multiplier q_l + offset`.",
+            "",
+            "# Errors",
+            "`NonFinite` for a non-finite entry, `NonFiniteResult` when a follower's",
+            "coordinate overflows.",
+        ],
+        "NQ",
+        "MIMIC_NQ",
+        "IDX_Q",
+        "Configuration",
+        true,
+    );
+    expand(
+        w,
+        "v_from_mimic",
+        &[
+            "rodyn's velocities (or accelerations) from the leaders': each follower's",
+            "`multiplier v_l` (`v = G v_m`).",
+            "",
+            "# Errors",
+            "As [`q_from_mimic`].",
+        ],
+        "NV",
+        "MIMIC_NV",
+        "IDX_V",
+        "Velocity",
+        false,
+    );
+    w.line("/// Pinocchio's `mimic=True` configuration from rodyn's: the followers'");
+    w.line("/// coordinates left out.");
+    w.line("///");
+    w.line("/// # Errors");
+    w.line("/// `NonFinite` for a non-finite entry.");
+    w.open("pub fn q_to_mimic<S: rodyn::Scalar>(q: &[S; NQ]) -> rodyn::Result<[S; MIMIC_NQ]> {");
+    w.open("if let Some(index) = q.iter().position(|x| !x.is_finite()) {");
+    w.line("return Err(rodyn::Error::NonFinite { quantity: rodyn::error::Quantity::Configuration, index });");
+    w.close("}");
+    w.line("let mut out = [S::ZERO; MIMIC_NQ];");
+    w.line("let mut r = 0;");
+    w.open("for (k, x) in q.iter().enumerate() {");
+    w.open("if !MIMICS.iter().any(|m| IDX_Q[m.follower] == k) {");
+    w.line("out[r] = *x;");
+    w.line("r += 1;");
+    w.close("}");
+    w.close("}");
+    w.line("Ok(out)");
+    w.close("}");
+    w.blank();
+    w.line("/// The generalised forces on the leaders' coordinates from rodyn's (`Gᵀ τ`:");
+    w.line("/// each follower's force, times its multiplier, added to its leader's),");
+    w.line("/// as Pinocchio's `rnea` of the `mimic=True` model gives them.");
+    w.line("///");
+    w.line("/// # Errors");
+    w.line("/// `NonFinite` for a non-finite entry, `NonFiniteResult` on overflow.");
+    w.open(
+        "pub fn tau_to_mimic<S: rodyn::Scalar>(tau: &[S; NV]) -> rodyn::Result<[S; MIMIC_NV]> {",
+    );
+    w.open("if let Some(index) = tau.iter().position(|x| !x.is_finite()) {");
+    w.line(
+        "return Err(rodyn::Error::NonFinite { quantity: rodyn::error::Quantity::Torque, index });",
+    );
+    w.close("}");
+    w.line("let mut full = *tau;");
+    w.open("for m in &MIMICS {");
+    w.line("full[IDX_V[m.leader]] += S::from_f64(m.multiplier) * tau[IDX_V[m.follower]];");
+    w.close("}");
+    w.line("let mut out = [S::ZERO; MIMIC_NV];");
+    w.line("let mut r = 0;");
+    w.open("for (k, x) in full.iter().enumerate() {");
+    w.open("if !MIMICS.iter().any(|m| IDX_V[m.follower] == k) {");
+    w.line("out[r] = *x;");
+    w.line("r += 1;");
+    w.close("}");
+    w.close("}");
+    w.open("if let Some(index) = out.iter().position(|x| !x.is_finite()) {");
+    w.line("return Err(rodyn::Error::NonFiniteResult { quantity: rodyn::error::Quantity::Torque, index });");
+    w.close("}");
+    w.line("Ok(out)");
     w.close("}");
     w.blank();
 }
@@ -576,6 +865,91 @@ fn endpoints(w: &mut Writer, model: &ModelDescription) {
         w.line(&format!("/// The endpoints in `{s}`."));
         w.line(&format!(
             "pub const ENDPOINTS_{}: [Endpoint<{s}{geometry}>; NE] = endpoints!({s});",
+            s.to_uppercase()
+        ));
+    }
+    w.blank();
+}
+
+/// The frames the generated module carries: every frame fixed to a moving
+/// body (a URDF link, moving or merged by fixed joints, and a rodyn file's
+/// bodies), in the file's order, with its constant name. A frame fixed to
+/// the world (a fixed root link and the links welded to it) never moves
+/// and has no body for `rodyn::Frame`; a planar model keeps only the frames
+/// in its plane.
+#[must_use]
+pub fn generated_frames(
+    model: &ModelDescription,
+) -> Vec<(&crate::description::Frame, usize, String)> {
+    let tol = 1e-12;
+    let kept: Vec<(&crate::description::Frame, usize)> = model
+        .frames
+        .iter()
+        .filter_map(|f| f.body.map(|b| (f, b)))
+        .filter(|(f, _)| {
+            let (r, t) = (&f.pose.rot, &f.pose.trans);
+            !model.planar
+                || ((r[2][2] - 1.0).abs() <= tol
+                    && r[0][2].abs() <= tol
+                    && r[1][2].abs() <= tol
+                    && r[2][0].abs() <= tol
+                    && r[2][1].abs() <= tol
+                    && t[2].abs() <= tol)
+        })
+        .collect();
+    let names = unique_constant_names(kept.iter().map(|(f, _)| f.name.as_str()));
+    kept.into_iter()
+        .zip(names)
+        .map(|((f, b), n)| (f, b, n))
+        .collect()
+}
+
+/// Frames (placement and orientation) fixed to bodies, as `rodyn::Frame`
+/// constants: Pinocchio's `BODY` frames of the links, whose world
+/// placements `frame_placement` gives (Pinocchio's `oMf`).
+fn frames(w: &mut Writer, model: &ModelDescription) {
+    let frames = generated_frames(model);
+    let geometry = if model.planar { ", Planar" } else { "" };
+    w.line("/// Number of frames.");
+    w.line(&format!("pub const NF: usize = {};", frames.len()));
+    w.line("/// Frame indices into `FRAMES_F64`, `FRAMES_F32` and `FRAME_NAMES`: every link");
+    w.line("/// (or body) fixed to a moving body, merged links included, with its full");
+    w.line("/// placement in that body. Links fixed to the world are not frames here.");
+    w.open("pub mod frame {");
+    for (k, (f, b, constant)) in frames.iter().enumerate() {
+        w.line(&format!("/// `{}` on `{}`.", f.name, model.bodies[*b].name));
+        w.line(&format!("pub const {constant}: usize = {k};"));
+    }
+    w.close("}");
+    w.blank();
+    w.line("/// Frame names, by frame index.");
+    w.line(&format!(
+        "pub const FRAME_NAMES: [&str; NF] = [{}];",
+        frames
+            .iter()
+            .map(|(f, _, _)| string_literal(&f.name))
+            .collect::<Vec<_>>()
+            .join(", ")
+    ));
+    w.line("/// The frames in scalar type `$S`, indexed by the constants of [`frame`].");
+    w.open("macro_rules! frames {");
+    w.open("($S:ty) => {");
+    w.open("[");
+    for (f, b, _) in &frames {
+        w.line(&format!("// {} on {}", f.name, model.bodies[*b].name));
+        w.line(&format!(
+            "Frame::<$S{geometry}>::new({b}, {}),",
+            placement(model.planar, &f.pose, model.snap_tolerance())
+        ));
+    }
+    w.close("]");
+    w.close("};");
+    w.close("}");
+    w.blank();
+    for s in ["f64", "f32"] {
+        w.line(&format!("/// The frames in `{s}`."));
+        w.line(&format!(
+            "pub const FRAMES_{}: [Frame<{s}{geometry}>; NF] = frames!({s});",
             s.to_uppercase()
         ));
     }

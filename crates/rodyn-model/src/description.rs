@@ -88,6 +88,9 @@ pub struct Body {
     pub parent: Option<usize>,
     /// The joint.
     pub joint: JointType,
+    /// A `continuous` joint (a revolute joint without limits): one angle in
+    /// rodyn's `q`, `(cos θ, sin θ)` in Pinocchio's.
+    pub continuous: bool,
     /// The joint frame at `q = 0` in the parent body's frame.
     pub placement: Pose,
     /// The body's inertia in its own frame, merged links included.
@@ -107,6 +110,23 @@ pub struct Frame {
     pub body: Option<usize>,
     /// The frame in the body's frame.
     pub pose: Pose,
+}
+
+/// A URDF `<mimic>`: a follower joint that moves with its leader,
+/// `q_f = multiplier q_l + offset` (both one-degree-of-freedom joints). The
+/// model keeps the follower as a joint of its own; the generated module's
+/// `MIMICS` and its `*_mimic` functions couple the two (Pinocchio's
+/// `buildModelFromUrdf(..., mimic=True)` layout).
+#[derive(Clone, Debug)]
+pub struct MimicDef {
+    /// The follower's body (joint) index.
+    pub follower: usize,
+    /// The leader's body (joint) index.
+    pub leader: usize,
+    /// `multiplier` (default 1).
+    pub multiplier: f64,
+    /// `offset` (default 0), rad or m.
+    pub offset: f64,
 }
 
 /// A named point on a body or in the world where forces, contacts and
@@ -244,6 +264,8 @@ pub struct ModelDescription {
     pub motors: Vec<Motor>,
     /// Contacts.
     pub contacts: Vec<Contact>,
+    /// Mimic joints (URDF `<mimic>`).
+    pub mimics: Vec<MimicDef>,
     /// What was ignored or adjusted while reading.
     pub warnings: Vec<Diagnostic>,
     /// Every file read to build the model (the model file and its includes).

@@ -36,7 +36,7 @@ pub mod tree;
 pub mod urdf;
 
 pub use description::ModelDescription;
-pub use diagnostic::{Diagnostic, Location, Severity};
+pub use diagnostic::{Diagnostic, Location, Severity, WarningKind, WarningKinds};
 
 use std::path::Path;
 
@@ -59,6 +59,12 @@ pub struct LoadOptions {
     /// `round_quarter_turns = true` in `[model]`; the CLI with
     /// `--round-quarter-turns`.
     pub round_quarter_turns: bool,
+    /// Kinds of warning not to report, nor to refuse in strict mode
+    /// (`WarningKinds::NONE.with(WarningKind::Limit)`). The others are
+    /// reported once per kind and file, with a count. A rodyn file adds
+    /// its own with `silence = ["limit", "geometry"]` in `[model]`; the
+    /// CLI with `--silence limit,geometry` (or `all`).
+    pub silence: WarningKinds,
 }
 
 /// The largest model file read, bytes: far above any robot's (a 16,000-link
@@ -121,9 +127,10 @@ fn load_file(path: &Path, options: LoadOptions) -> diagnostic::Result<ModelDescr
             urdf::UrdfOptions {
                 floating_base: options.floating_base,
                 strict: options.strict,
+                silence: options.silence,
             },
         ),
-        Some("toml") => rodyn_file::read_rodyn_file(path, &text, options.strict),
+        Some("toml") => rodyn_file::read_rodyn_file_with(path, &text, options),
         other => Err(Diagnostic::error(
             Location::start_of(path),
             format!(

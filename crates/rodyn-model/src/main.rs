@@ -3,6 +3,9 @@
 //! ```text
 //! rodyn-model rust   <file> [--module NAME] [--floating-base] [--strict]   print the generated Rust
 //! rodyn-model check  <file> [--floating-base] [--strict]                   check the file, print warnings
+//!
+//! Every command also takes `--round-quarter-turns` and `--silence KINDS`
+//! (comma-separated kinds of warning, such as `limit,geometry`, or `all`).
 //! rodyn-model tree   <file> [--floating-base] [--strict]                   bodies, joints, endpoints, drives
 //! rodyn-model render <file> [--q a,b,...] [--view xy|xz|yz|iso] [-o out.svg]   stick figure
 //! ```
@@ -10,7 +13,7 @@
 use rodyn_model::render::{render_svg, View};
 use rodyn_model::runtime::RuntimeModel;
 use rodyn_model::tree::render_tree;
-use rodyn_model::{build::generate_source, LoadOptions};
+use rodyn_model::{build::generate_source, LoadOptions, WarningKinds};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -19,7 +22,8 @@ const USAGE: &str = "usage:
   rodyn-model check <file> [--floating-base] [--strict]                   check a model file and print its warnings
   rodyn-model tree  <file> [--floating-base] [--strict]                   print bodies, joints, endpoints, drives, nq and nv
   rodyn-model render <file> [--floating-base] [--strict] [--q a,b,...] [--view xy|xz|yz|iso] [--width PX] [-o out.svg]
-                                                               draw a stick figure at q (default: zeros; planar models view xy, others iso)";
+                                                               draw a stick figure at q (default: zeros; planar models view xy, others iso)
+options for every command: --round-quarter-turns, --silence KINDS (comma-separated kinds of warning, or all: limit, dynamics, mimic, geometry, transmission, gazebo, calibration, unknown-element, unnamed-robot, fixed-root-inertia, massless-tensor, link-tensor, body-tensor)";
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -48,6 +52,14 @@ fn run(args: &[String]) -> Result<(), String> {
             "--floating-base" => options.floating_base = true,
             "--strict" => options.strict = true,
             "--round-quarter-turns" => options.round_quarter_turns = true,
+            "--silence" => {
+                let list = it
+                    .next()
+                    .ok_or("--silence needs kinds of warning, such as limit,geometry")?;
+                options.silence = options
+                    .silence
+                    .union(WarningKinds::parse(list).map_err(|e| format!("--silence: {e}"))?);
+            }
             "--q" => {
                 let list = it.next().ok_or("--q needs comma-separated numbers")?;
                 q = list

@@ -43,7 +43,8 @@ fn code_point_name(name: &str) -> String {
 /// Constants a generated module defines itself as `<NAME>_F64` and
 /// `<NAME>_F32`, which a drive's constants of the same form must not
 /// repeat.
-pub const RESERVED_CONSTANTS: &[&str] = &["MODEL", "ENDPOINTS", "CONTACTS", "CONTACT_POINTS"];
+pub const RESERVED_CONSTANTS: &[&str] =
+    &["MODEL", "ENDPOINTS", "CONTACTS", "CONTACT_POINTS", "FRAMES"];
 
 /// Checks that no name becomes one of the module's own constants
 /// ([`RESERVED_CONSTANTS`]).
@@ -123,4 +124,46 @@ pub fn check_distinct<'a>(
         }
     }
     Ok(())
+}
+
+/// Distinct constants for `names`, in order: [`constant_name`] of each, and
+/// for a name whose constant an earlier name already took, that constant
+/// with the first free suffix `_2`, `_3`, ... (`a.b` and `a_b` →
+/// `A_B`, `A_B_2`). For a namespace whose names the file does not keep
+/// distinct after sanitising, such as the frames (a moving link and a
+/// merged link), where refusing the file would be unhelpful.
+#[must_use]
+pub fn unique_constant_names<'a>(names: impl IntoIterator<Item = &'a str>) -> Vec<String> {
+    let names: Vec<String> = names.into_iter().map(constant_name).collect();
+    let mut taken: std::collections::HashSet<String> = names.iter().cloned().collect();
+    let mut first: std::collections::HashSet<&str> = std::collections::HashSet::new();
+    let mut out = Vec::with_capacity(names.len());
+    for name in &names {
+        if first.insert(name.as_str()) {
+            out.push(name.clone());
+            continue;
+        }
+        let mut k = 2_usize;
+        let unique = loop {
+            let candidate = format!("{name}_{k}");
+            if !taken.contains(&candidate) {
+                break candidate;
+            }
+            k += 1;
+        };
+        taken.insert(unique.clone());
+        out.push(unique);
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::unique_constant_names;
+
+    #[test]
+    fn near_collisions_get_suffixes_that_collide_with_nothing() {
+        let names = unique_constant_names(["a.b", "a_b", "A_B_2", "a-b", "c"]);
+        assert_eq!(names, ["A_B", "A_B_3", "A_B_2", "A_B_4", "C"]);
+    }
 }

@@ -11,7 +11,7 @@ use crate::codegen::fits_f32;
 use crate::description::{
     Body, Contact, EndpointDef, ForceElement, ForceLaw, Frame, JointType, ModelDescription, Motor,
 };
-use crate::diagnostic::{Diagnostic, LineIndex, Location, Result};
+use crate::diagnostic::{Diagnostic, LineIndex, Location, Result, WarningKinds};
 use crate::geometry::{norm, scale, Pose, RigidInertia, Vec3};
 use crate::names::{check_distinct, check_not_reserved};
 use crate::physics::{check_mass, check_rotational_inertia, check_subtrees_have_mass};
@@ -33,6 +33,8 @@ struct File {
     body: Vec<BodyDecl>,
     #[serde(default)]
     endpoint: Vec<EndpointDecl>,
+    #[serde(default)]
+    frame: Vec<FrameDecl>,
     #[serde(default)]
     spring: Vec<SpringDecl>,
     #[serde(default)]
@@ -61,6 +63,9 @@ struct ModelSection {
     /// Placements within 1e-10 of a quarter turn become exact ones.
     #[serde(default)]
     round_quarter_turns: bool,
+    /// Kinds of warning not to report (`WarningKind` names).
+    #[serde(default)]
+    silence: Vec<S<String>>,
 }
 
 #[derive(Deserialize, Default)]
@@ -95,6 +100,17 @@ struct EndpointDecl {
     name: S<String>,
     body: S<String>,
     position: S<Vec<f64>>,
+}
+
+/// A named frame (placement and orientation) on a body or URDF link.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FrameDecl {
+    name: S<String>,
+    body: S<String>,
+    position: Option<S<Vec<f64>>>,
+    rpy: Option<S<Vec<f64>>>,
+    angle: Option<S<f64>>,
 }
 
 #[derive(Deserialize)]
@@ -169,6 +185,28 @@ struct Scale {
 /// The first problem found, with its position in `file` (or in an included
 /// URDF).
 pub fn read_rodyn_file(file: &Path, text: &str, strict: bool) -> Result<ModelDescription> {
+    read_rodyn_file_with(
+        file,
+        text,
+        crate::LoadOptions {
+            strict,
+            ..crate::LoadOptions::default()
+        },
+    )
+}
+
+/// [`read_rodyn_file`] with the caller's options: strict mode and the
+/// silenced kinds of warning (the file's `silence` adds to them).
+///
+/// # Errors
+/// As [`read_rodyn_file`]; also a `silence` entry that is no kind of warning.
+pub fn read_rodyn_file_with(
+    file: &Path,
+    text: &str,
+    options: crate::LoadOptions,
+) -> Result<ModelDescription> {
+    let strict = options.strict;
+    let silence = options.silence;
     let parsed: File = toml::from_str(text).map_err(|e| {
         let at = e.span().map_or(0, |s| s.start);
         Diagnostic::error(
@@ -181,6 +219,7 @@ pub fn read_rodyn_file(file: &Path, text: &str, strict: bool) -> Result<ModelDes
         text,
         lines: LineIndex::new(text),
         strict,
+        silence,
     }
     .read(parsed)
 }
@@ -191,6 +230,8 @@ struct Reader<'a> {
     lines: LineIndex,
     /// Strict mode asked by the caller (the file may ask too).
     strict: bool,
+    /// Kinds of warning the caller silenced (the file may add some).
+    silence: WarningKinds,
 }
 
 impl Reader<'_> {
@@ -292,6 +333,7 @@ impl Reader<'_> {
             )?,
         };
         let planar = f.model.planar;
+        let silence = self.silence.union(self.silenced_by_file(&f.model)?);
         let mut model = match &f.model.include {
             Some(include) => {
                 let path = self
@@ -308,6 +350,7 @@ impl Reader<'_> {
                 let options = UrdfOptions {
                     floating_base: f.model.floating_base,
                     strict: self.strict || f.model.strict,
+                    silence,
                 };
                 let mut m = read_urdf(&path, &text, options)?;
                 m.included_files.insert(0, self.file.to_path_buf());
@@ -323,6 +366,7 @@ impl Reader<'_> {
                 force_elements: Vec::new(),
                 motors: Vec::new(),
                 contacts: Vec::new(),
+                mimics: Vec::new(),
                 warnings: Vec::new(),
                 included_files: vec![self.file.to_path_buf()],
                 round_quarter_turns: false,
@@ -359,6 +403,9 @@ impl Reader<'_> {
         for e in &f.endpoint {
             self.add_endpoint(&mut model, e, &scale_to_si)?;
         }
+        for fr in &f.frame {
+            self.add_frame(&mut model, fr, &scale_to_si)?;
+        }
         check_distinct(
             "endpoint",
             model
@@ -368,6 +415,18 @@ impl Reader<'_> {
         )?;
         self.add_drives(&mut model, &f, &scale_to_si)?;
         Ok(model)
+    }
+
+    /// The kinds of warning the file's `silence` names.
+    fn silenced_by_file(&self, model: &ModelSection) -> Result<WarningKinds> {
+        let mut set = WarningKinds::NONE;
+        for name in &model.silence {
+            set = set.union(
+                WarningKinds::parse_one(name.get_ref())
+                    .map_err(|why| Diagnostic::error(self.at(name.span()), why))?,
+            );
+        }
+        Ok(set)
     }
 
     /// The body a frame name is fixed to and the frame's pose in it.
@@ -444,24 +503,7 @@ impl Reader<'_> {
             Some(o) => self.vector(o, "the origin", planar, si.length)?,
             None => [0.0; 3],
         };
-        let rpy = match (&b.rpy, &b.angle) {
-            (Some(_), Some(a)) => return self.error(a, "give either `rpy` or `angle`, not both"),
-            (Some(r), None) if planar => {
-                return self.error(
-                    r,
-                    "a planar model rotates placements about z only: use `angle`",
-                )
-            }
-            (Some(r), None) => {
-                let x = r.get_ref();
-                if x.len() != 3 || x.iter().any(|c| !c.is_finite()) {
-                    return self.error(r, "`rpy` needs 3 finite angles (roll, pitch, yaw)");
-                }
-                scale(&[x[0], x[1], x[2]], si.angle)
-            }
-            (None, Some(a)) => [0.0, 0.0, self.number(a, "the angle", Sign::Any)? * si.angle],
-            (None, None) => [0.0; 3],
-        };
+        let rpy = self.rpy(b.rpy.as_ref(), b.angle.as_ref(), planar, si)?;
         let placement = parent_pose.compose(&Pose::from_xyz_rpy(&translation, &rpy));
         let what = format!("body `{name}`");
         let mass = *b.mass.get_ref() * si.mass;
@@ -479,6 +521,7 @@ impl Reader<'_> {
             joint_name: b.joint.get_ref().clone(),
             parent,
             joint,
+            continuous: b.kind.get_ref() == "continuous",
             placement,
             inertia: RigidInertia { mass, com, inertia },
             location: self.at(b.name.span()),
@@ -548,6 +591,69 @@ impl Reader<'_> {
             }
             None => m,
         })
+    }
+
+    /// Roll, pitch and yaw in radians from `rpy` (3-D) or `angle` (planar,
+    /// about z), in the file's angle unit.
+    fn rpy(
+        &self,
+        rpy: Option<&S<Vec<f64>>>,
+        angle: Option<&S<f64>>,
+        planar: bool,
+        si: &Scale,
+    ) -> Result<Vec3> {
+        Ok(match (rpy, angle) {
+            (Some(_), Some(a)) => return self.error(a, "give either `rpy` or `angle`, not both"),
+            (Some(r), None) if planar => {
+                return self.error(
+                    r,
+                    "a planar model rotates placements about z only: use `angle`",
+                )
+            }
+            (Some(r), None) => {
+                let x = r.get_ref();
+                if x.len() != 3 || x.iter().any(|c| !c.is_finite()) {
+                    return self.error(r, "`rpy` needs 3 finite angles (roll, pitch, yaw)");
+                }
+                scale(&[x[0], x[1], x[2]], si.angle)
+            }
+            (None, Some(a)) => [0.0, 0.0, self.number(a, "the angle", Sign::Any)? * si.angle],
+            (None, None) => [0.0; 3],
+        })
+    }
+
+    /// A `[[frame]]`: a placement on a body or URDF link, kept in the
+    /// generated module's frames.
+    fn add_frame(&self, model: &mut ModelDescription, f: &FrameDecl, si: &Scale) -> Result<()> {
+        let name = f.name.get_ref();
+        if model.frames.iter().any(|fr| &fr.name == name) || name == "world" {
+            return self.error(
+                &f.name,
+                format!("a body, link or frame named `{name}` already exists"),
+            );
+        }
+        let (body, pose) = self.frame(model, &f.body)?;
+        if body.is_none() {
+            return self.error(
+                &f.body,
+                format!(
+                    "frame `{name}` is fixed to the world (`{}`), which never moves; a frame \
+                     needs a moving body",
+                    f.body.get_ref()
+                ),
+            );
+        }
+        let position = match &f.position {
+            Some(p) => self.vector(p, "the position", model.planar, si.length)?,
+            None => [0.0; 3],
+        };
+        let rpy = self.rpy(f.rpy.as_ref(), f.angle.as_ref(), model.planar, si)?;
+        model.frames.push(Frame {
+            name: name.clone(),
+            body,
+            pose: pose.compose(&Pose::from_xyz_rpy(&position, &rpy)),
+        });
+        Ok(())
     }
 
     fn add_endpoint(

@@ -19,8 +19,10 @@
 //! dynamics; each is reported once as a warning.
 
 use crate::codegen::fits_f32;
-use crate::description::{Body, EndpointDef, Frame, JointType, ModelDescription};
-use crate::diagnostic::{Diagnostic, LineIndex, Location, Result};
+use crate::description::{Body, EndpointDef, Frame, JointType, MimicDef, ModelDescription};
+use crate::diagnostic::{
+    settle_warnings, Diagnostic, LineIndex, Location, Result, WarningKind, WarningKinds,
+};
 use crate::geometry::{norm, scale, Pose, RigidInertia, Vec3};
 use crate::physics::{check_mass, check_subtrees_have_mass, tensor_problem, TensorProblem};
 use roxmltree::{Document, Node};
@@ -40,6 +42,8 @@ pub struct UrdfOptions {
     /// rounding level or before a fixed joint merges it, a massless link
     /// with a tensor, a robot without a name.
     pub strict: bool,
+    /// Kinds of warning not to report (nor to refuse in strict mode).
+    pub silence: WarningKinds,
 }
 
 /// Reads URDF `text` (the content of `file`) into a checked model.
@@ -152,6 +156,10 @@ struct Link {
 struct JointDecl<'a> {
     name: &'a str,
     kind: JointKind,
+    /// Declared `continuous`.
+    continuous: bool,
+    /// Its `<mimic>`: the leader joint's name, multiplier and offset.
+    mimic: Option<(&'a str, f64, f64)>,
     parent: &'a str,
     child: &'a str,
     origin: Pose,
@@ -167,23 +175,27 @@ enum JointKind {
 /// Elements that do not enter the dynamics: counted, then reported once each.
 #[derive(Default)]
 struct Ignored {
-    first: BTreeMap<&'static str, (Location, usize)>,
+    first: BTreeMap<&'static str, (WarningKind, Location, usize)>,
 }
 
 impl Ignored {
-    fn note(&mut self, what: &'static str, location: Location) {
-        self.first.entry(what).or_insert((location, 0)).1 += 1;
+    fn note(&mut self, kind: WarningKind, what: &'static str, location: Location) {
+        self.first.entry(what).or_insert((kind, location, 0)).2 += 1;
     }
     fn into_warnings(self) -> Vec<Diagnostic> {
         self.first
             .into_iter()
-            .map(|(what, (location, count))| {
+            .map(|(what, (kind, location, count))| {
                 let times = if count == 1 {
                     "once".to_string()
                 } else {
                     format!("{count} times")
                 };
-                Diagnostic::warning(location, format!("ignored {what} ({times} in this file)"))
+                Diagnostic::warning_of(
+                    kind,
+                    location,
+                    format!("ignored {what} ({times} in this file)"),
+                )
             })
             .collect()
     }
@@ -286,7 +298,8 @@ impl<'a> Reader<'a> {
                     .file
                     .file_stem()
                     .map_or_else(|| "robot".into(), |s| s.to_string_lossy().into_owned());
-                self.lenient(Diagnostic::warning(
+                self.lenient(Diagnostic::warning_of(
+                    WarningKind::UnnamedRobot,
                     self.at_node(robot),
                     format!("<robot> has no `name` attribute; the model is named `{stem}` after the file"),
                 ));
@@ -331,12 +344,18 @@ impl<'a> Reader<'a> {
                     joints.push(joint);
                 }
                 "transmission" => ignored.note(
+                    WarningKind::Transmission,
                     "<transmission> (rodyn models motors in its own file)",
                     self.at_node(node),
                 ),
-                "gazebo" => ignored.note("<gazebo> (simulator settings)", self.at_node(node)),
+                "gazebo" => ignored.note(
+                    WarningKind::Gazebo,
+                    "<gazebo> (simulator settings)",
+                    self.at_node(node),
+                ),
                 "material" => {}
                 other => ignored.note(
+                    WarningKind::UnknownElement,
                     if other.is_empty() {
                         "an unnamed element"
                     } else {
@@ -352,6 +371,7 @@ impl<'a> Reader<'a> {
         let joint_of_child = self.check_tree(&links, &joints)?;
         let root = self.find_root(robot, &links, &link_order, &joint_of_child, &joints)?;
         let mut model = self.assemble(name, root, &links, &joints, options)?;
+        self.resolve_mimics(&mut model, &joints);
         check_subtrees_have_mass(&model)?;
         // The bodies the dynamics use, after fixed joints merged their links.
         for body in &model.bodies {
@@ -366,7 +386,8 @@ impl<'a> Reader<'a> {
                         ),
                     ));
                 }
-                Some(p) => self.lenient(Diagnostic::warning(
+                Some(p) => self.lenient(Diagnostic::warning_of(
+                    WarningKind::BodyTensor,
                     body.location.clone(),
                     format!(
                         "body `{}` (its link and the links fixed to it) {}; no real body has such a tensor, but the dynamics are defined",
@@ -377,7 +398,8 @@ impl<'a> Reader<'a> {
                 None => {}
             }
         }
-        let lenient = self.lenient.take();
+        let mut lenient = self.lenient.take();
+        lenient.retain(|w| !w.kind.is_some_and(|k| options.silence.contains(k)));
         if options.strict {
             if let Some(first) = lenient.into_iter().next() {
                 return Err(Diagnostic::error(
@@ -389,6 +411,7 @@ impl<'a> Reader<'a> {
             model.warnings.extend(lenient);
         }
         model.warnings.extend(ignored.into_warnings());
+        model.warnings = settle_warnings(std::mem::take(&mut model.warnings), options.silence);
         Ok(model)
     }
 
@@ -404,10 +427,15 @@ impl<'a> Reader<'a> {
             match element.tag_name().name() {
                 "inertial" => inertia = Some(self.read_inertial(node, element)?),
                 "visual" | "collision" => ignored.note(
+                    WarningKind::Geometry,
                     "<visual> and <collision> geometry (meshes and shapes do not enter the dynamics)",
                     self.at_node(element),
                 ),
-                _ => ignored.note("an unknown element in <link>", self.at_node(element)),
+                _ => ignored.note(
+                    WarningKind::UnknownElement,
+                    "an unknown element in <link>",
+                    self.at_node(element),
+                ),
             }
         }
         Ok(Link { inertia, location })
@@ -441,7 +469,8 @@ impl<'a> Reader<'a> {
             // Pinocchio keeps such a link's tensor, and so does rodyn; a
             // moving link with neither mass nor tensor is refused below.
             if inertia.iter().flatten().any(|x| *x != 0.0) {
-                self.lenient(Diagnostic::warning(
+                self.lenient(Diagnostic::warning_of(
+                    WarningKind::MasslessTensor,
                     mass_at,
                     format!("{what} has mass 0 but a non-zero inertia tensor; the tensor is kept"),
                 ));
@@ -453,7 +482,8 @@ impl<'a> Reader<'a> {
         // joint may merge it into a body that is fine; the merged bodies
         // are checked after assembly.
         if let Some(problem) = tensor_problem(&inertia) {
-            self.lenient(Diagnostic::warning(
+            self.lenient(Diagnostic::warning_of(
+                WarningKind::LinkTensor,
                 self.at_node(i),
                 format!(
                     "{what} {} (the body it belongs to is checked after fixed joints merge links)",
@@ -536,21 +566,55 @@ impl<'a> Reader<'a> {
             let at = self.at_node(element);
             match element.tag_name().name() {
                 "origin" | "parent" | "child" | "axis" => {}
-                "limit" => ignored.note("<limit> (rodyn does not enforce joint limits)", at),
+                "limit" => ignored.note(
+                    WarningKind::Limit,
+                    "<limit> (rodyn does not enforce joint limits)",
+                    at,
+                ),
                 "dynamics" => ignored.note(
+                    WarningKind::Dynamics,
                     "<dynamics> damping and friction (model them as drives in a rodyn file)",
                     at,
                 ),
-                "mimic" => ignored.note("<mimic> (mimicking joints become independent joints)", at),
-                "calibration" | "safety_controller" => {
-                    ignored.note("<calibration> and <safety_controller>", at)
-                }
-                _ => ignored.note("an unknown element in <joint>", at),
+                "mimic" => ignored.note(
+                    WarningKind::Mimic,
+                    "<mimic> in the model's dynamics (MODEL_* keeps each mimicking joint as \
+                     an independent joint, as Pinocchio's buildModel without mimic=True; the \
+                     generated MIMICS and *_mimic functions give Pinocchio's mimic=True \
+                     coordinates and torques)",
+                    at,
+                ),
+                "calibration" | "safety_controller" => ignored.note(
+                    WarningKind::Calibration,
+                    "<calibration> and <safety_controller>",
+                    at,
+                ),
+                _ => ignored.note(
+                    WarningKind::UnknownElement,
+                    "an unknown element in <joint>",
+                    at,
+                ),
             }
         }
+        let mimic = match child(node, "mimic") {
+            Some(m) => Some((
+                self.required_attribute(m, "joint")?,
+                match m.attribute("multiplier") {
+                    Some(t) => self.number(m, "multiplier", t)?,
+                    None => 1.0,
+                },
+                match m.attribute("offset") {
+                    Some(t) => self.number(m, "offset", t)?,
+                    None => 0.0,
+                },
+            )),
+            None => None,
+        };
         Ok(JointDecl {
             name,
             kind,
+            mimic,
+            continuous: kind_text == "continuous",
             parent,
             child: child_link,
             origin: self.origin(node)?,
@@ -658,6 +722,77 @@ impl<'a> Reader<'a> {
         }
     }
 
+    /// Each moving joint's `<mimic>` as a [`MimicDef`] between bodies. A
+    /// mimic that cannot be coupled (an unknown leader, a continuous or
+    /// floating joint, a chain of mimics) is a warning, and its follower
+    /// stays an independent joint.
+    fn resolve_mimics(&self, model: &mut ModelDescription, joints: &[JointDecl<'_>]) {
+        let body_of: HashMap<&str, usize> = model
+            .bodies
+            .iter()
+            .enumerate()
+            .map(|(i, b)| (b.joint_name.as_str(), i))
+            .collect();
+        let one_dof = |i: usize| {
+            matches!(
+                model.bodies[i].joint,
+                JointType::Revolute { .. } | JointType::Prismatic { .. }
+            ) && !model.bodies[i].continuous
+        };
+        let mut mimics = Vec::new();
+        for j in joints {
+            let (Some((leader, multiplier, offset)), Some(&follower)) =
+                (j.mimic, body_of.get(j.name))
+            else {
+                continue;
+            };
+            let why = match body_of.get(leader) {
+                None => Some("which is not a moving joint of the robot"),
+                Some(&l) if !(one_dof(follower) && one_dof(l)) || follower == l => Some(
+                    "but a mimic couples two distinct revolute or prismatic joints (not \
+                     continuous, floating or itself)",
+                ),
+                Some(&l) => {
+                    mimics.push(MimicDef {
+                        follower,
+                        leader: l,
+                        multiplier,
+                        offset,
+                    });
+                    None
+                }
+            };
+            if let Some(why) = why {
+                self.lenient(Diagnostic::warning_of(
+                    WarningKind::Mimic,
+                    j.location.clone(),
+                    format!(
+                        "joint `{}` mimics `{leader}`, {why}; it stays an independent joint",
+                        j.name
+                    ),
+                ));
+            }
+        }
+        let followers: Vec<usize> = mimics.iter().map(|m: &MimicDef| m.follower).collect();
+        mimics.retain(|m| {
+            if !followers.contains(&m.leader) {
+                return true;
+            }
+            let j = &model.bodies[m.follower];
+            self.lenient(Diagnostic::warning_of(
+                WarningKind::Mimic,
+                j.location.clone(),
+                format!(
+                    "joint `{}` mimics `{}`, which mimics another joint itself; it stays an \
+                     independent joint (make it mimic that joint directly)",
+                    j.joint_name, model.bodies[m.leader].joint_name
+                ),
+            ));
+            false
+        });
+        model.mimics = mimics;
+    }
+
     /// Walks the tree depth-first in Pinocchio's order, merging fixed joints.
     fn assemble(
         &self,
@@ -684,6 +819,7 @@ impl<'a> Reader<'a> {
             force_elements: Vec::new(),
             motors: Vec::new(),
             contacts: Vec::new(),
+            mimics: Vec::new(),
             warnings: Vec::new(),
             included_files: vec![self.file.to_path_buf()],
             round_quarter_turns: false,
@@ -695,6 +831,7 @@ impl<'a> Reader<'a> {
                 joint_name: "root_joint".to_string(),
                 parent: None,
                 joint: JointType::FreeFlyer,
+                continuous: false,
                 placement: Pose::IDENTITY,
                 inertia: root_link.inertia.unwrap_or(RigidInertia::ZERO),
                 location: root_link.location.clone(),
@@ -702,7 +839,8 @@ impl<'a> Reader<'a> {
             Some(0)
         } else {
             if root_link.inertia.is_some_and(|i| i.mass > 0.0) {
-                model.warnings.push(Diagnostic::warning(
+                model.warnings.push(Diagnostic::warning_of(
+                    WarningKind::FixedRootInertia,
                     root_link.location.clone(),
                     format!("the root link `{root}` is fixed to the world, so its inertia never moves and is dropped (as in Pinocchio); ask for a floating base to keep it"),
                 ));
@@ -755,6 +893,7 @@ impl<'a> Reader<'a> {
                         joint_name: j.name.to_string(),
                         parent: body,
                         joint,
+                        continuous: j.continuous,
                         placement,
                         inertia: child_inertia,
                         location: j.location.clone(),

@@ -17,6 +17,7 @@ const STRICT: LoadOptions = LoadOptions {
     floating_base: false,
     strict: true,
     round_quarter_turns: false,
+    silence: rodyn_model::WarningKinds::NONE,
 };
 
 /// A link `name` with `mass` and the tensor entries `(ixx, iyy, izz, ixy)`.

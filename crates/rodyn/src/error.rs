@@ -222,6 +222,10 @@ impl fmt::Display for Error {
                     f,
                     "joint {joint}: quaternion norm {norm} is not 1 (normalise q first)"
                 ),
+                ConfigurationError::AngleNotUnit { norm } => write!(
+                    f,
+                    "joint {joint}: (cos, sin) of norm {norm} is not on the unit circle"
+                ),
             },
             Self::SingularArticulatedInertia {
                 joint,
@@ -397,6 +401,12 @@ pub enum ConfigurationError {
     NonFinite,
     /// A unit quaternion whose norm is too far from one.
     QuaternionNotUnit {
+        /// The norm found.
+        norm: f64,
+    },
+    /// A continuous joint's `(cos θ, sin θ)` in Pinocchio's layout whose
+    /// norm is too far from one ([`angle_from_cos_sin`](crate::joint::angle_from_cos_sin)).
+    AngleNotUnit {
         /// The norm found.
         norm: f64,
     },

@@ -18,12 +18,14 @@
 //! | [`FreeFlyer`]         | 7  | 6  | `[x y z qx qy qz qw]`     | `[vx vy vz ωx ωy ωz]` in the body frame |
 
 mod axis;
+mod continuous;
 mod custom;
 mod free_flyer;
 mod prismatic;
 mod revolute;
 
 pub use axis::Axis;
+pub use continuous::{angle_from_cos_sin, cos_sin_from_angle};
 pub use custom::{CustomJoint, JointBehaviour};
 pub use free_flyer::FreeFlyer;
 pub use prismatic::Prismatic;
