@@ -447,9 +447,10 @@ pub(crate) fn solve_lower<
     }
 }
 
-/// `Lᵀ y = b` for a `b` that is zero outside the coordinates of `body` and
-/// its ancestors (a contact's Jacobian row): `y` is zero there too, and
-/// only that path is swept: `y[k] = b[k] − Σ L[s][k] y[s]` over the path's
+/// `Lᵀ y = b` for each row `b` of `rows`, each zero outside the
+/// coordinates of `body` and its ancestors (the rows of one contact's
+/// Jacobian): each `y` is zero there too, and only that path is swept, once
+/// for all the rows: `y[k] = b[k] − Σ L[s][k] y[s]` over the path's
 /// coordinates `s` below `k`. Reads only entries of `L` the sparsity keeps,
 /// so it holds for any tree numbering.
 pub(crate) fn solve_transposed_on_path<
@@ -462,7 +463,7 @@ pub(crate) fn solve_transposed_on_path<
     model: &Model<S, NB, NQ, NV, G>,
     data: &Data<S, NB, NV, G>,
     body: usize,
-    b: &mut [S; NV],
+    rows: &mut [[S; NV]],
 ) {
     let t = model.topology();
     let h = &data.ltdl;
@@ -478,10 +479,11 @@ pub(crate) fn solve_transposed_on_path<
         i = t.parents[j];
     }
     for (n, &k) in path[..len].iter().enumerate() {
-        let below = path[..n]
-            .iter()
-            .fold(S::ZERO, |acc, &s| acc + h[k][s] * b[s]);
-        b[k] -= below;
+        let l = &h[k];
+        for b in rows.iter_mut() {
+            let below = path[..n].iter().fold(S::ZERO, |acc, &s| acc + l[s] * b[s]);
+            b[k] -= below;
+        }
     }
 }
 

@@ -13,7 +13,9 @@ use crate::algorithm::dense::cholesky_solve;
 use crate::algorithm::jacobian::{
     frame_jacobian, joint_jacobians, joint_jacobians_from_transforms,
 };
-use crate::algorithm::ltdl::{ltdl_factor, ltdl_solve, solve_lower, solve_transposed_on_path};
+use crate::algorithm::ltdl::{
+    ltdl_factor, solve_lower, solve_transposed, solve_transposed_on_path,
+};
 use crate::algorithm::rnea::nonlinear_effects;
 use crate::data::Data;
 use crate::error::Result;
@@ -40,8 +42,8 @@ pub(super) fn kkt_solve<
     contacts: &[Contact<S>],
     settings: &ConstraintSettings<S>,
 ) -> Result<()> {
-    // Unconstrained: M x₀ = τ − h; then J_c, M⁻¹ J_cᵀ and the Delassus
-    // matrix's factor.
+    // J_c, W = D⁻¹ L⁻ᵀ J_cᵀ and the Delassus matrix's factor; z = L⁻ᵀ (τ −
+    // h), half of the unconstrained solve x₀ = M⁻¹ (τ − h) = L⁻¹ D⁻¹ z.
     let h = *nonlinear_effects(model, data, q, v, None)?;
     prepare(
         model,
@@ -53,13 +55,13 @@ pub(super) fn kkt_solve<
         Poses::FromJointTransforms,
     )?;
     let rows = cdata.rows;
-    let mut x0: [S; NV] = core::array::from_fn(|k| tau[k] - h[k]);
-    ltdl_solve(model, data, &mut x0)?;
+    let mut z: [S; NV] = core::array::from_fn(|k| tau[k] - h[k]);
+    solve_transposed(model, data, &mut z);
 
     // The right-hand side: the Baumgarte term less the drift J̇_c q̇ and
-    // J_c x₀. The bodies' accelerations at q̈ = 0 are RNEA's, which leaves
-    // them less gravity (a − ⁱX₀ g) in `a_gf`; CRBA and the Jacobians
-    // (poses) left that and the velocities alone.
+    // J_c x₀ = Wᵀ z. The bodies' accelerations at q̈ = 0 are RNEA's, which
+    // leaves them less gravity (a − ⁱX₀ g) in `a_gf`; CRBA and the
+    // Jacobians (poses) left that and the velocities alone.
     let gravity = *model.gravity();
     for i in 0..NB {
         data.a[i] = data.a_gf[i] + data.o_m_i[i].act_inv_motion(&gravity);
@@ -70,15 +72,19 @@ pub(super) fn kkt_solve<
         let n = contact.rows();
         baumgarte_less_drift(data, contact, settings, &mut rhs[row..row + n])?;
         for (r, value) in rhs[row..row + n].iter_mut().enumerate() {
-            *value -= dot(&cdata.jc[row + r], &x0);
+            *value -= dot(&cdata.responses[row + r], &z);
         }
         row += n;
     }
     cdata.lambda = rhs;
     cholesky_solve(&cdata.delassus, rows, &mut cdata.lambda);
 
-    // q̈ = x₀ + M⁻¹ J_cᵀ λ.
-    add_response(model, data, cdata, &x0);
+    // q̈ = L⁻¹ (D⁻¹ z + W λ): one sweep for the free motion and the
+    // contacts' together.
+    for (k, zk) in z.iter_mut().enumerate() {
+        *zk /= data.ltdl[k][k];
+    }
+    sweep_with_response(model, data, cdata, z);
     data.tau = h;
     Ok(())
 }
@@ -176,10 +182,10 @@ pub(crate) fn form_delassus<
     let mut row = 0;
     for contact in contacts {
         let body = contact.held_frame().body;
-        for r in row..row + contact.rows() {
-            let w = &mut cdata.responses[r];
-            *w = cdata.jc[r];
-            solve_transposed_on_path(model, data, body, w);
+        let rows = row..row + contact.rows();
+        cdata.responses[rows.clone()].copy_from_slice(&cdata.jc[rows.clone()]);
+        solve_transposed_on_path(model, data, body, &mut cdata.responses[rows.clone()]);
+        for w in &mut cdata.responses[rows] {
             for (wk, dk) in w.iter_mut().zip(&d_inv) {
                 *wk *= *dk;
             }
@@ -224,8 +230,27 @@ pub(crate) fn add_response<
     cdata: &mut ConstraintData<S, NV, NC>,
     base: &[S; NV],
 ) {
-    let mut z = [S::ZERO; NV];
+    sweep_with_response(model, data, cdata, [S::ZERO; NV]);
+    for (a, b) in cdata.ddq.iter_mut().zip(base) {
+        *a += *b;
+    }
+}
+
+/// `cdata.ddq = L⁻¹ (z + W λ)`: a motion given by its `D⁻¹ L⁻ᵀ` half and
+/// the contacts' response, in one sweep.
+fn sweep_with_response<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    const NC: usize,
+>(
+    model: &Model<S, NB, NQ, NV, Spatial>,
+    data: &Data<S, NB, NV, Spatial>,
+    cdata: &mut ConstraintData<S, NV, NC>,
+    mut z: [S; NV],
+) {
     weighted_rows(&cdata.responses, &cdata.lambda, cdata.rows, &mut z);
     solve_lower(model, data, &mut z);
-    cdata.ddq = core::array::from_fn(|k| base[k] + z[k]);
+    cdata.ddq = z;
 }
