@@ -212,6 +212,18 @@ pub const ROWS: &[(&str, &str, &str, &str)] = &[
         "control-tick(4-feet)",
         "probe_quadruped_contacts::{closure_env#8}>",
     ),
+    (
+        "contact_cost_probe",
+        "quadruped-floating",
+        "joint-Jacobians",
+        "probe_quadruped_kinematics::{closure_env#1}>",
+    ),
+    (
+        "contact_cost_probe",
+        "quadruped-floating",
+        "CCRBA",
+        "probe_quadruped_kinematics::{closure_env#2}>",
+    ),
 ];
 
 /// A call from one function to another.

@@ -1,7 +1,10 @@
 //! What rigid contacts cost on a Cortex-M4F: the quadruped's constrained
 //! forward dynamics with four feet held, their plastic impact, one
 //! rigid-contact time step of the plant, and one tick of
-//! `quadruped_rigid`'s trunk controller (inverse dynamics with contacts).
+//! `quadruped_rigid`'s trunk controller (inverse dynamics with contacts);
+//! and the legged robot's kinematics they build on: all the quadruped's
+//! joint Jacobians and its centroidal map with the centroidal inertia
+//! (CCRBA).
 //!
 //! Measured as `cost_probe` measures (seeded random inputs, instructions
 //! by QEMU `-icount` and SysTick, stack bytes from a painted window), in an
@@ -11,16 +14,18 @@
 #![no_main]
 
 use cortex_m_rt::entry;
+use rodyn::algorithm::centroidal::{centroidal_map, CentroidalData};
 use rodyn::algorithm::constrained_dynamics::{
     constrained_forward_dynamics, constrained_forward_dynamics_with, impulse_dynamics,
     ConstraintData, ConstraintMethod, ConstraintSettings, Contact,
 };
 use rodyn::algorithm::frames::frame_placement;
+use rodyn::algorithm::jacobian::{joint_jacobians, JacobianData};
 use rodyn::algorithm::kinematics::forward_kinematics;
 use rodyn::sim::time_stepping::time_step;
 use rodyn::sim::State;
 use rodyn::spatial::Vec3;
-use rodyn::Data;
+use rodyn::{Data, Scalar};
 use rodyn_firmware::exit::{exit, exit_with, CHECK_FAILED};
 use rodyn_firmware::measure::{probe_scene, InstructionCounter, STATES};
 use rodyn_firmware::models::aibo::MODEL_F32;
@@ -174,6 +179,40 @@ fn probe_quadruped_contacts(counter: &InstructionCounter) -> bool {
     fd & fd_articulated & impulse & step_four & step_up & tick & tick_four
 }
 
+/// The quadruped's kinematics for control, at random configurations (a
+/// random unit quaternion, joints within ±π): all joint Jacobians
+/// (`joint_jacobians`, world columns) and the centroidal map `A_g` with
+/// the centroidal inertia (`centroidal_map`, Pinocchio's
+/// `computeCentroidalMap` and `ccrba`).
+fn probe_quadruped_kinematics(counter: &InstructionCounter) -> bool {
+    let draw = |rng: &mut XorShift32| {
+        let mut q = [0.0f32; NQ];
+        rng.fill_symmetric(&mut q, core::f32::consts::PI);
+        let mut quaternion = [0.0f32; 4];
+        rng.fill_symmetric(&mut quaternion, 1.0);
+        let squares: f32 = quaternion.iter().map(|x| x * x).sum();
+        let norm = Scalar::sqrt(squares).max(1e-3);
+        for (qi, x) in q[3..7].iter_mut().zip(quaternion) {
+            *qi = x / norm;
+        }
+        q
+    };
+    let mut data = Data::new();
+    let mut jac = JacobianData::new();
+    let jacobians = probe_scene(
+        "quadruped-floating",
+        "joint-Jacobians",
+        counter,
+        draw,
+        |q| joint_jacobians(&MODEL_F32, &mut data, &mut jac, q).is_ok(),
+    );
+    let mut cd = CentroidalData::new();
+    let ccrba = probe_scene("quadruped-floating", "CCRBA", counter, draw, |q| {
+        centroidal_map(&MODEL_F32, &mut data, &mut cd, q).is_ok()
+    });
+    jacobians & ccrba
+}
+
 #[entry]
 fn main() -> ! {
     let Some(mut peripherals) = cortex_m::Peripherals::take() else {
@@ -181,5 +220,5 @@ fn main() -> ! {
     };
     let counter = InstructionCounter::start(&mut peripherals.SYST);
     defmt::println!("contact_cost_probe: f32, {} random states per call", STATES);
-    exit_with(probe_quadruped_contacts(&counter))
+    exit_with(probe_quadruped_contacts(&counter) & probe_quadruped_kinematics(&counter))
 }
