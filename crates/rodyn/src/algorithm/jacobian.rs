@@ -121,8 +121,9 @@ pub fn joint_jacobians<
 
 /// [`joint_jacobians`] from the joint transforms already in `data.li_m_i`
 /// (left by RNEA or ABA at the same configuration): the world poses by
-/// composition only, without forming the joints' transforms again.
-/// Leaves valid `data.o_m_i` and `jac.j`.
+/// composition only, without forming the joints' transforms again, and
+/// the columns of the bodies in `columns_of` only (the others stale).
+/// Leaves valid `data.o_m_i` and those columns of `jac.j`.
 pub(crate) fn joint_jacobians_from_transforms<
     S: Scalar,
     const NB: usize,
@@ -133,6 +134,7 @@ pub(crate) fn joint_jacobians_from_transforms<
     model: &Model<S, NB, NQ, NV, G>,
     data: &mut Data<S, NB, NV, G>,
     jac: &mut JacobianData<S, NV, G>,
+    columns_of: &[bool; NB],
 ) {
     let t = model.topology();
     for i in 0..NB {
@@ -141,6 +143,9 @@ pub(crate) fn joint_jacobians_from_transforms<
             None => data.li_m_i[i],
         };
         data.o_m_i[i] = o_m_i;
+        if !columns_of[i] {
+            continue;
+        }
         let joint = model.joint(i);
         let iv = t.idx_v[i];
         for k in 0..t.nv[i] {

@@ -63,7 +63,8 @@ pub(super) fn kkt_solve<
     // leaves them less gravity (a − ⁱX₀ g) in `a_gf`; CRBA and the
     // Jacobians (poses) left that and the velocities alone.
     let gravity = *model.gravity();
-    for i in 0..NB {
+    for contact in contacts {
+        let i = contact.held_frame().body;
         data.a[i] = data.a_gf[i] + data.o_m_i[i].act_inv_motion(&gravity);
     }
     let mut rhs = [S::ZERO; NC];
@@ -150,7 +151,16 @@ pub(crate) fn form_delassus<
     match poses {
         Poses::Compute => joint_jacobians(model, data, &mut cdata.jacobians, q)?,
         Poses::FromJointTransforms => {
-            joint_jacobians_from_transforms(model, data, &mut cdata.jacobians);
+            // Only the contacts' paths have columns J_c reads.
+            let mut on_path = [false; NB];
+            for contact in contacts {
+                let mut body = Some(contact.held_frame().body);
+                while let Some(i) = body.filter(|&i| !on_path[i]) {
+                    on_path[i] = true;
+                    body = model.parent(i);
+                }
+            }
+            joint_jacobians_from_transforms(model, data, &mut cdata.jacobians, &on_path);
         }
     }
     let mut row = 0;

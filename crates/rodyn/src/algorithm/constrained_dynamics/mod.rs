@@ -102,7 +102,8 @@ impl<S: Scalar> Default for ConstraintSettings<S> {
 /// firmware without contacts pays nothing for them.
 #[derive(Clone, Debug)]
 pub struct ConstraintData<S: Scalar, const NV: usize, const NC: usize> {
-    /// The joint Jacobians of the last call.
+    /// The joint Jacobians of the last call (after the KKT method's
+    /// forward dynamics, only the columns of the contacts' paths).
     pub jacobians: JacobianData<S, NV, Spatial>,
     /// `J_c`, one row per constrained direction (the first [`rows`](Self::rows)).
     pub jc: [[S; NV]; NC],
@@ -151,10 +152,11 @@ impl<S: Scalar, const NV: usize, const NC: usize> Default for ConstraintData<S, 
 /// `contacts`' order: three entries per point contact, six per frame
 /// contact ([`Contact`] gives their axes and units).
 ///
-/// Leaves valid in `data`: what [`crba`](crate::algorithm::crba::crba),
-/// [`ltdl_factor`](crate::algorithm::ltdl::ltdl_factor) and
-/// [`joint_jacobians`](crate::algorithm::jacobian::joint_jacobians) leave, `o_m_i`, `v` and `a` at `(q, v, 0)`; `tau`
-/// holds the bias forces `h`. In `cdata`: every field.
+/// Leaves valid in `data`: what [`crba`](crate::algorithm::crba::crba)
+/// and [`ltdl_factor`](crate::algorithm::ltdl::ltdl_factor) leave,
+/// `li_m_i`, `o_m_i` and `v` at `(q, v)`, and `a` at `(q, v, 0)` for the
+/// contacts' bodies; `tau` holds the bias forces `h`. In `cdata`: every
+/// field (`jacobians`: the columns of the contacts' paths).
 ///
 /// # Errors
 /// [`Error::TooManyConstraints`] for more than `NC` rows,
