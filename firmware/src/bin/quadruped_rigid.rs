@@ -22,7 +22,7 @@ use cortex_m_rt::entry;
 use rodyn::sim::time_stepping::time_step;
 use rodyn::Data;
 use rodyn_firmware::exit::{exit, exit_with, CHECK_FAILED};
-use rodyn_firmware::models::aibo::MODEL_F32;
+use rodyn_firmware::models::aibo::{self, MODEL_F32};
 use rodyn_firmware::models::quadruped::{self, RigidContactData, LEGS};
 use rodyn_scenarios::quadruped_balance::{TrunkController, TrunkControllerData};
 
@@ -42,6 +42,24 @@ const MAX_HEIGHT_ERROR: f32 = 6.0e-3;
 const MIN_UPRIGHT: f32 = 0.99;
 /// Least forward distance (m); the host's runs cover 0.85 m in 3 s.
 const MIN_DISTANCE: f32 = 0.5;
+
+/// Logs `error` with the model file's name of what it is about (a joint,
+/// a coordinate, a body), when it names one.
+fn report(stage: &str, tick: u32, error: &rodyn::Error) {
+    match aibo::Named(error).subject() {
+        Some((kind, name)) => {
+            defmt::error!(
+                "{=str}, tick {}: {=str} {=str}: {}",
+                stage,
+                tick,
+                kind,
+                name,
+                error
+            )
+        }
+        None => defmt::error!("{=str}, tick {}: {}", stage, tick, error),
+    }
+}
 
 #[entry]
 fn main() -> ! {
@@ -75,7 +93,7 @@ fn main() -> ! {
         ) {
             Ok(tau) => *tau,
             Err(e) => {
-                defmt::error!("controller, tick {}: {}", tick, e);
+                report("controller", tick, &e);
                 exit(CHECK_FAILED)
             }
         };
@@ -90,7 +108,7 @@ fn main() -> ! {
             &ground,
             DT,
         ) {
-            defmt::error!("plant, tick {}: {}", tick, e);
+            report("plant", tick, &e);
             exit(CHECK_FAILED)
         }
         touching = contact.impulses.map(|i| i.z > 0.0);

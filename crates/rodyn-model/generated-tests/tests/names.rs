@@ -40,6 +40,12 @@ fn errors_print_with_names() {
     let text = two_link_muscles::Named(&error).to_string();
     assert!(text.starts_with("coordinate \"elbow\": "), "{text}");
     assert!(text.contains("index 1"), "{text}");
+    // The same subject for logs without core::fmt (defmt).
+    assert_eq!(
+        two_link_muscles::Named(&error).subject(),
+        Some(("coordinate", "elbow"))
+    );
     let body = rodyn::Error::BodyOutOfRange { body: 7 };
     assert_eq!(two_link_muscles::Named(&body).to_string(), body.to_string());
+    assert_eq!(two_link_muscles::Named(&body).subject(), None);
 }
