@@ -30,7 +30,6 @@ use crate::quadruped::{
     foot_frames, trunk_position, QuadrupedData, QuadrupedLoads, QuadrupedModel, LEGS, LEG_JOINTS,
     NV,
 };
-use core::f64::consts::PI;
 use rodyn::algorithm::constrained_dynamics::{ConstraintSettings, Contact};
 use rodyn::algorithm::contact_inverse_dynamics::{
     contact_inverse_dynamics, ContactInverseDynamicsData, ContactInverseDynamicsSettings,
@@ -84,20 +83,6 @@ impl<S: Scalar> TrunkController<S> {
             velocity_gain: f(10.0),
             joint_gains: [f(900.0), f(60.0)],
             settings: ContactInverseDynamicsSettings::floating_base(f(0.8)),
-        }
-    }
-
-    /// Whether the trot schedules `leg` on the ground at time `t` (s): its
-    /// pair's phase in the half period where the hip pushes back.
-    #[must_use]
-    pub fn scheduled_stance(&self, leg: usize, t: S) -> bool {
-        match self.gait.gait {
-            crate::quadruped::Gait::Stand => true,
-            crate::quadruped::Gait::Trot { frequency, .. } => {
-                let pair = if leg == 0 || leg == 3 { 0.0 } else { PI };
-                let phase = 2.0 * PI * (frequency * t).to_f64() + pair;
-                phase.cos() >= 0.0
-            }
         }
     }
 
