@@ -35,11 +35,13 @@
 //! **Solver**: projected Gauss–Seidel on the Delassus matrix `G = J_c M⁻¹
 //! J_cᵀ` with a fixed number of sweeps and a warm start from the last
 //! step's impulses: per contact, the normal impulse is projected on
-//! `Λ_z ≥ 0`, then the tangential impulse on the disc of radius `μ Λ_z`.
-//! The cost per step is one RNEA, one CRBA and factorisation, the joint
-//! Jacobians, one `Lᵀ D L` solve per constrained row and `sweeps × rows²`
-//! for the solver: constant for a given number of candidate points, as an
-//! MCU needs. Points farther than `margin` above the ground are left out
+//! `Λ_z ≥ 0`, then the tangential impulse on the disc of radius `μ Λ_z`
+//! (after the same slip direction: see `projected_gauss_seidel`). The
+//! cost per step is one forward-kinematics pass, one RNEA, one CRBA and
+//! factorisation, the Jacobians of the contacts' paths, the KKT method's
+//! half sweeps for the Delassus matrix, one `Lᵀ D L` solve, and `sweeps ×
+//! rows²` for the solver: constant for a given number of candidate points,
+//! as an MCU needs. Points farther than `margin` above the ground are left out
 //! (a foot in swing costs nothing).
 //!
 //! **What it conserves**: nothing is gained from the contacts: with the
