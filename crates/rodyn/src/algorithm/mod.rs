@@ -15,7 +15,7 @@
 //! | [`inverse_kinematics`] | damped least-squares steps to a frame pose     |               |
 //! | [`dense`]             | small dense Cholesky factor and solve           |               |
 //! | [`derivatives`]       | `∂τ/∂(q, v)`, `∂q̈/∂(q, v, τ)`                 | Carpentier 2018 |
-//! | [`constrained_dynamics`] | forward dynamics and impacts with rigid point and frame contacts | §8.2 |
+//! | [`constrained_dynamics`] | forward dynamics and impacts with rigid point and frame contacts | ch. 8 |
 //! | [`contact_inverse_dynamics`] | torques and contact forces for a wanted motion of a floating base | Mistry 2010 |
 //!
 //! The mass matrix of a two-link arm against its closed form (links 1 m,

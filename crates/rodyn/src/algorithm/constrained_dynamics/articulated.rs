@@ -1,8 +1,6 @@
 //! The articulated-body method for contacts: the Delassus matrix from test
 //! forces propagated through ABA's factorisation, never forming `M` (after
-//! Kokkevis 2004, the method of RBDL's `ForwardDynamicsContactsKokkevis`;
-//! Featherstone, *Rigid Body Dynamics Algorithms*, §8.3's use of the
-//! articulated-body inertias as a "test-force" solver).
+//! Kokkevis 2004, the method of RBDL's `ForwardDynamicsContactsKokkevis`).
 //!
 //! 1. ABA gives the unconstrained `q̈₀` and leaves, per joint, `U = Iᴬ S`
 //!    and `D⁻¹ = (Sᵀ Iᴬ S)⁻¹`: the factorisation of `M` in articulated

@@ -20,7 +20,7 @@
 //!
 //! - [`ConstraintMethod::Kkt`], the default (`kkt.rs`): the KKT system by
 //!   its Schur complement (Featherstone, *Rigid Body Dynamics Algorithms*,
-//!   §8.2; Pinocchio's `constraintDynamics` solves the same system): CRBA
+//!   ch. 8; Pinocchio's `constraintDynamics` solves the same system): CRBA
 //!   and the branch-aware `M = Lᵀ D L`, the Delassus matrix `G = J_c M⁻¹
 //!   J_cᵀ`, `(G + μ I) λ = −(J_c M⁻¹ (τ − h) + J̇_c q̇ + K_p e + K_d J_c q̇)`
 //!   by a small Cholesky factorisation, and `q̈ = M⁻¹ (τ − h + J_cᵀ λ)`.
