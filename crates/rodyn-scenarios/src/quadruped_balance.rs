@@ -34,8 +34,6 @@ use rodyn::algorithm::constrained_dynamics::{ConstraintSettings, Contact};
 use rodyn::algorithm::contact_inverse_dynamics::{
     contact_inverse_dynamics, ContactInverseDynamicsData, ContactInverseDynamicsSettings,
 };
-use rodyn::algorithm::frames::frame_placement;
-use rodyn::algorithm::kinematics::forward_kinematics;
 use rodyn::spatial::{log3, Mat3, Vec3};
 use rodyn::{Result, Scalar};
 
@@ -105,13 +103,15 @@ impl<S: Scalar> TrunkController<S> {
     ) -> Result<&'d [S; NV]> {
         let wanted = self.wanted_acceleration(t, q, v);
 
-        forward_kinematics(model, data, q)?;
+        // The touching feet as contacts. Their anchors are not used: without
+        // Baumgarte gains the inverse dynamics keeps the feet's
+        // accelerations at zero, wherever they stand.
         let frames = foot_frames::<S>();
         let mut contacts = [Contact::point(frames[0], Vec3::ZERO); LEGS];
         let mut n = 0;
         for (leg, frame) in frames.iter().enumerate() {
             if touching[leg] {
-                contacts[n] = Contact::point(*frame, frame_placement(data, frame)?.trans);
+                contacts[n] = Contact::point(*frame, Vec3::ZERO);
                 n += 1;
             }
         }

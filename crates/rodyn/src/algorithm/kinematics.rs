@@ -70,7 +70,7 @@ pub fn forward_kinematics<
 
 /// `ᵒMᵢ = ᵒM_λ ˡⁱMᵢ` from the parent transforms already in `data.li_m_i`.
 #[inline]
-fn pose_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
+pub(crate) fn pose_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     model: &Model<S, NB, NQ, NV, G>,
     data: &mut Data<S, NB, NV, G>,
 ) {

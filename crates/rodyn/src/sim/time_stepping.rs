@@ -37,8 +37,7 @@
 //! step's impulses: per contact, the normal impulse is projected on
 //! `Λ_z ≥ 0`, then the tangential impulse on the disc of radius `μ Λ_z`
 //! (after the same slip direction: see `projected_gauss_seidel`). The
-//! cost per step is one forward-kinematics pass, one RNEA, one CRBA and
-//! factorisation, the Jacobians of the contacts' paths, the KKT method's
+//! cost per step is one RNEA, one CRBA and factorisation, the Jacobians of the contacts' paths, the KKT method's
 //! half sweeps for the Delassus matrix, one `Lᵀ D L` solve, and `sweeps ×
 //! rows²` for the solver: constant for a given number of candidate points,
 //! as an MCU needs. Points farther than `margin` above the ground are left out
@@ -55,7 +54,7 @@ use crate::algorithm::constrained_dynamics::{
     add_response, dot, form_delassus, ConstraintData, Contact, Poses,
 };
 use crate::algorithm::frames::frame_placement;
-use crate::algorithm::kinematics::forward_kinematics;
+use crate::algorithm::kinematics::pose_pass;
 use crate::algorithm::ltdl::ltdl_solve;
 use crate::algorithm::rnea::nonlinear_effects;
 use crate::data::Data;
@@ -214,9 +213,13 @@ pub fn time_step<
     check_finite(tau, Quantity::Torque)?;
     let (q, v) = (&state.q, &state.v);
 
+    // The bias forces first: RNEA leaves the joints' transforms, from
+    // which the poses are composed without forming them again.
+    let bias = *nonlinear_effects(model, data, q, v, None)?;
+    pose_pass(model, data);
+
     // The candidates within the margin become point contacts (their anchor
     // is not used: the gap term replaces Baumgarte's).
-    forward_kinematics(model, data, q)?;
     let mut contacts = [Contact::point(Frame::new(0, Transform::IDENTITY), Vec3::ZERO); NP];
     let mut index = [0; NP];
     let mut active = 0;
@@ -236,7 +239,6 @@ pub fn time_step<
     let rows = 3 * active;
 
     // J_c, M̃⁻¹ J_cᵀ and G; v_free = v + dt M̃⁻¹ (τ − b − D v).
-    let bias = *nonlinear_effects(model, data, q, v, None)?;
     let added: [S; NV] = core::array::from_fn(|k| dt * damping[k]);
     form_delassus(
         model,
