@@ -175,7 +175,10 @@ pub fn contact_inverse_dynamics<
     }
     check_finite(ddq_wanted, Quantity::Acceleration)?;
 
-    // 1. q̈ = q̈* + M⁻¹ J_cᵀ G⁻¹ (a_c* − J̇_c q̇ − J_c q̈*).
+    // 1. q̈ = q̈* + M⁻¹ J_cᵀ G⁻¹ (a_c* − J̇_c q̇ − J_c q̈*). The kinematics at
+    // q̈ = 0 first (the drift): the Jacobians then compose their poses from
+    // its joint transforms, which CRBA leaves alone.
+    forward_kinematics_acceleration(model, data, q, v, &[S::ZERO; NV])?;
     prepare(
         model,
         data,
@@ -183,9 +186,8 @@ pub fn contact_inverse_dynamics<
         q,
         contacts,
         constraint.damping,
-        Poses::Compute,
+        Poses::FromJointTransforms,
     )?;
-    forward_kinematics_acceleration(model, data, q, v, &[S::ZERO; NV])?;
     let cdata = &mut iddata.constraint;
     let rows = cdata.rows;
     let mut row = 0;

@@ -222,7 +222,8 @@ pub(crate) fn form_delassus<
 pub(crate) enum Poses {
     /// Forward kinematics at `q`.
     Compute,
-    /// Composed from `data.li_m_i`, valid at `q` (after RNEA there).
+    /// Composed from `data.li_m_i`, valid at `q` (after RNEA or a
+    /// forward-kinematics pass there).
     FromJointTransforms,
 }
 
