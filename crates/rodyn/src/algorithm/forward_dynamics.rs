@@ -120,18 +120,7 @@ impl ForwardDynamics for Crba {
         f_ext: Option<&[G::Force<S>; NB]>,
     ) -> Result<&'d [S; NV]> {
         check_finite(tau, Quantity::Torque)?;
-        // The factorisation reads the lower triangle only: no mirroring.
-        if FUSED_PASSES {
-            check_state(model, q, Some(v))?;
-            check_external(f_ext.map(|f| &f[..]))?;
-            crba::bias_and_mass_lower(model, data, q, v, f_ext);
-            data.h = data.tau;
-            check_result(&data.h, Quantity::Torque)?;
-        } else {
-            data.h = *nonlinear_effects(model, data, q, v, f_ext)?;
-            // RNEA left the joint transforms at q in `li_m_i`.
-            crba::crba_lower(model, data, None);
-        }
+        data.h = bias_and_mass(model, data, q, v, f_ext)?;
         ltdl::ltdl_factor(model, data)?;
         let mut rhs = [S::ZERO; NV];
         for (k, r) in rhs.iter_mut().enumerate() {
@@ -140,6 +129,42 @@ impl ForwardDynamics for Crba {
         ltdl::ltdl_solve(model, data, &mut rhs)?;
         data.ddq = rhs;
         Ok(&data.ddq)
+    }
+}
+
+/// The bias forces `h` (N m, N; also left in `data.tau`) and the lower
+/// triangle of `M` (diagonal included; what the factorisation reads) at
+/// `(q, v)`, by one fused pass where that pays ([`FUSED_PASSES`]) or RNEA
+/// and then CRBA on its joint transforms. Leaves valid what
+/// [`nonlinear_effects`] and [`crba::crba_lower`] leave (`li_m_i`, `v`,
+/// `a_gf`, the lower triangle of `mass_matrix`).
+///
+/// # Errors
+/// As [`nonlinear_effects`].
+pub(crate) fn bias_and_mass<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    q: &[S; NQ],
+    v: &[S; NV],
+    f_ext: Option<&[G::Force<S>; NB]>,
+) -> Result<[S; NV]> {
+    if FUSED_PASSES {
+        check_state(model, q, Some(v))?;
+        check_external(f_ext.map(|f| &f[..]))?;
+        crba::bias_and_mass_lower(model, data, q, v, f_ext);
+        check_result(&data.tau, Quantity::Torque)?;
+        Ok(data.tau)
+    } else {
+        let h = *nonlinear_effects(model, data, q, v, f_ext)?;
+        // RNEA left the joint transforms at q in `li_m_i`.
+        crba::crba_lower(model, data, None);
+        Ok(h)
     }
 }
 

@@ -53,10 +53,10 @@
 use crate::algorithm::constrained_dynamics::{
     add_response, dot, form_delassus, ConstraintData, Contact, Poses,
 };
+use crate::algorithm::forward_dynamics::bias_and_mass;
 use crate::algorithm::frames::frame_placement;
 use crate::algorithm::kinematics::pose_pass;
 use crate::algorithm::ltdl::ltdl_solve;
-use crate::algorithm::rnea::nonlinear_effects;
 use crate::data::Data;
 use crate::error::{Error, Quantity, Result};
 use crate::frame::Frame;
@@ -213,9 +213,10 @@ pub fn time_step<
     check_finite(tau, Quantity::Torque)?;
     let (q, v) = (&state.q, &state.v);
 
-    // The bias forces first: RNEA leaves the joints' transforms, from
-    // which the poses are composed without forming them again.
-    let bias = *nonlinear_effects(model, data, q, v, None)?;
+    // The bias forces and the mass matrix first: they leave the joints'
+    // transforms, from which the poses are composed without forming them
+    // again.
+    let bias = bias_and_mass(model, data, q, v, None)?;
     pose_pass(model, data);
 
     // The candidates within the margin become point contacts (their anchor
@@ -248,7 +249,7 @@ pub fn time_step<
         contacts,
         S::ZERO,
         Some(&added),
-        Poses::FromJointTransforms,
+        Poses::FromJointTransformsAndMass,
     )?;
     let mut v_free: [S; NV] = core::array::from_fn(|k| tau[k] - bias[k] - damping[k] * v[k]);
     ltdl_solve(model, data, &mut v_free)?;

@@ -10,13 +10,13 @@ use super::{
 };
 use crate::algorithm::crba::crba;
 use crate::algorithm::dense::cholesky_solve;
+use crate::algorithm::forward_dynamics::bias_and_mass;
 use crate::algorithm::jacobian::{
     frame_jacobian, joint_jacobians, joint_jacobians_from_transforms,
 };
 use crate::algorithm::ltdl::{
     ltdl_factor, solve_lower, solve_transposed, solve_transposed_on_path,
 };
-use crate::algorithm::rnea::nonlinear_effects;
 use crate::data::Data;
 use crate::error::Result;
 use crate::model::Model;
@@ -44,7 +44,7 @@ pub(super) fn kkt_solve<
 ) -> Result<()> {
     // J_c, W = D⁻¹ L⁻ᵀ J_cᵀ and the Delassus matrix's factor; z = L⁻ᵀ (τ −
     // h), half of the unconstrained solve x₀ = M⁻¹ (τ − h) = L⁻¹ D⁻¹ z.
-    let h = *nonlinear_effects(model, data, q, v, None)?;
+    let h = bias_and_mass(model, data, q, v, None)?;
     prepare(
         model,
         data,
@@ -52,7 +52,7 @@ pub(super) fn kkt_solve<
         q,
         contacts,
         settings.damping,
-        Poses::FromJointTransforms,
+        Poses::FromJointTransformsAndMass,
     )?;
     let rows = cdata.rows;
     let mut z: [S; NV] = core::array::from_fn(|k| tau[k] - h[k]);
@@ -136,7 +136,9 @@ pub(crate) fn form_delassus<
 ) -> Result<()> {
     let rows = constrained_rows(contacts);
     cdata.rows = rows;
-    crba(model, data, q)?;
+    if poses != Poses::FromJointTransformsAndMass {
+        crba(model, data, q)?;
+    }
     if let Some(added) = added_diagonal {
         for (k, d) in added.iter().enumerate() {
             data.mass_matrix[k][k] += *d;
@@ -150,7 +152,7 @@ pub(crate) fn form_delassus<
     // composed.
     match poses {
         Poses::Compute => joint_jacobians(model, data, &mut cdata.jacobians, q)?,
-        Poses::FromJointTransforms => {
+        Poses::FromJointTransforms | Poses::FromJointTransformsAndMass => {
             // Only the contacts' paths have columns J_c reads.
             let mut on_path = [false; NB];
             for contact in contacts {
@@ -217,14 +219,18 @@ pub(crate) fn form_delassus<
     Ok(())
 }
 
-/// Where [`form_delassus`] takes the bodies' poses from.
+/// What [`form_delassus`] finds in `data`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Poses {
-    /// Forward kinematics at `q`.
+    /// Nothing at `q`: it runs CRBA and forward kinematics.
     Compute,
-    /// Composed from `data.li_m_i`, valid at `q` (after RNEA or a
-    /// forward-kinematics pass there).
+    /// The joint transforms at `q` in `data.li_m_i` (left by RNEA or a
+    /// forward-kinematics pass): the poses are composed from them; CRBA
+    /// still runs.
     FromJointTransforms,
+    /// The joint transforms and `M`'s lower triangle at `q` (left by
+    /// `bias_and_mass`): neither is formed again.
+    FromJointTransformsAndMass,
 }
 
 /// `cdata.ddq = base + M⁻¹ J_cᵀ λ` after the KKT method's

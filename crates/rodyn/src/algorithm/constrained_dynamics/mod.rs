@@ -34,8 +34,9 @@
 //! contact; a damping `μ > 0` regularises it (Tikhonov: the `λ` of least
 //! norm among the near-solutions, the constraint then met to `O(μ)`).
 //!
-//! Cost of the KKT method: one RNEA, one CRBA and factorisation, the joint
-//! Jacobians, a half sweep of `Lᵀ D L` along its contact's path per
+//! Cost of the KKT method: the bias forces and CRBA in one pass (as CRBA
+//! forward dynamics runs them), the factorisation, the joint Jacobians of
+//! the contacts' paths, a half sweep of `Lᵀ D L` along its contact's path per
 //! constrained row, one sweep for the response, and a dense `m × m` solve
 //! for `m` rows; of the articulated-body method: one ABA, one kinematics
 //! pass, two sweeps per row and the same dense solve. `contact.rs` holds
@@ -152,11 +153,11 @@ impl<S: Scalar, const NV: usize, const NC: usize> Default for ConstraintData<S, 
 /// `contacts`' order: three entries per point contact, six per frame
 /// contact ([`Contact`] gives their axes and units).
 ///
-/// Leaves valid in `data`: what [`crba`](crate::algorithm::crba::crba)
-/// and [`ltdl_factor`](crate::algorithm::ltdl::ltdl_factor) leave,
-/// `li_m_i`, `o_m_i` and `v` at `(q, v)`, and `a` at `(q, v, 0)` for the
-/// contacts' bodies; `tau` holds the bias forces `h`. In `cdata`: every
-/// field (`jacobians`: the columns of the contacts' paths).
+/// Leaves valid in `data`: the lower triangle of `mass_matrix` (diagonal
+/// included) and what [`ltdl_factor`](crate::algorithm::ltdl::ltdl_factor)
+/// leaves, `li_m_i`, `o_m_i` and `v` at `(q, v)`, and `a` at `(q, v, 0)` for
+/// the contacts' bodies; `tau` holds the bias forces `h`. In `cdata`:
+/// every field (`jacobians`: the columns of the contacts' paths).
 ///
 /// # Errors
 /// [`Error::TooManyConstraints`] for more than `NC` rows,
