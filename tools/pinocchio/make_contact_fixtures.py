@@ -15,7 +15,9 @@ contacts, one sole alone, and one sole as a frame with the other as a
 point, with and without gains.
 
 Also `impulseDynamics` for the same contacts at the state's velocity,
-with restitution 0 and 0.5.
+with restitution 0 and 0.5; and, for Solo12 under "redundant", a
+rank-deficient contact set per state (a foot held twice beside another)
+solved by Pinocchio's proximal solver (mu 1e-4, 200 iterations).
 
 Writes host-tests/fixtures/contacts/solo12.json and talos.json: per state
 and case, the contacts (kind "point" or "frame"; rodyn body index =
@@ -62,13 +64,21 @@ TALOS_CASES = [
 ]
 TALOS_STATES = 6
 
+#: A redundant contact set (a rank-deficient J_c), solved by Pinocchio's
+#: proximal solver (mu, iterations): the same foot held twice beside
+#: another foot (Solo12).
+SOLO_REDUNDANT = ([("FL_FOOT", POINT), ("FL_FOOT", POINT), ("HR_FOOT", POINT)], 0.0, 0.0, False)
+PROXIMAL = (1e-4, 200)
+
 
 def placement(m):
     return {"rotation": m.rotation.flatten().tolist(), "translation": m.translation.tolist()}
 
 
-def solve_case(model, data, q, v, tau, feet, kp, kd, moved):
-    """constraintDynamics and impulseDynamics for one contact set."""
+def solve_case(model, data, q, v, tau, feet, kp, kd, moved, proximal=(0.0, 1)):
+    """constraintDynamics and impulseDynamics for one contact set; `proximal`
+    is (mu, iterations) of Pinocchio's proximal solver (mu = 0: the exact
+    KKT solve)."""
     pin.framesForwardKinematics(model, data, q)
     models = pin.StdVec_RigidConstraintModel()
     contacts = []
@@ -94,7 +104,9 @@ def solve_case(model, data, q, v, tau, feet, kp, kd, moved):
     for cm in models:
         datas.append(cm.createData())
     pin.initConstraintDynamics(model, data, models, datas)
-    ddq = pin.constraintDynamics(model, data, q, v, tau, models, datas, pin.ProximalSettings(1e-14, 0.0, 1))
+    mu, iterations = proximal
+    ddq = pin.constraintDynamics(model, data, q, v, tau, models, datas,
+                                 pin.ProximalSettings(1e-14, mu, iterations))
     lam = np.array(data.lambda_c).tolist()
     # The impact of the same contacts at this state's velocity: plastic,
     # and with restitution 0.5. The stacked Jacobian's rows are those of
@@ -111,12 +123,17 @@ def solve_case(model, data, q, v, tau, feet, kp, kd, moved):
             rows.append(pin.getFrameJacobian(model, data, fid, pin.ReferenceFrame.LOCAL_WORLD_ALIGNED)[:3])
     jc = np.vstack(rows)
     impacts = []
-    for e in (0.0, 0.5):
+    for e in ((0.0, 0.5) if proximal[0] == 0.0 else ()):
         v_after = pin.impulseDynamics(model, data, q, v, jc, e, 0.0)
         impacts.append({"restitution": e, "v_after": np.array(v_after).tolist(),
                         "impulse": np.array(data.impulse_c).tolist()})
-    return {"contacts": contacts, "kp": kp, "kd": kd, "ddq": np.array(ddq).tolist(), "lambda": lam,
-            "impacts": impacts}
+    out = {"contacts": contacts, "kp": kp, "kd": kd, "ddq": np.array(ddq).tolist(), "lambda": lam,
+           "impacts": impacts}
+    if mu > 0.0:
+        out["proximal_mu"] = mu
+        out["proximal_iterations"] = iterations
+        del out["impacts"]  # impulseDynamics has no proximal form here
+    return out
 
 
 def solo12():
@@ -127,7 +144,9 @@ def solo12():
     for state in states:
         q, v, tau = (np.array(state[k]) for k in ("q", "v", "tau"))
         cases = [solve_case(model, data, q, v, tau, *case) for case in SOLO_CASES]
-        out.append({"q": q.tolist(), "v": v.tolist(), "tau": tau.tolist(), "cases": cases})
+        redundant = [solve_case(model, data, q, v, tau, *SOLO_REDUNDANT, proximal=PROXIMAL)]
+        out.append({"q": q.tolist(), "v": v.tolist(), "tau": tau.tolist(), "cases": cases,
+                    "redundant": redundant})
     path = ROOT / "host-tests" / "fixtures" / "contacts" / "solo12.json"
     path.write_text(json.dumps({"generator": f"pinocchio {pin.__version__}", "states": out}) + "\n")
     print(f"wrote {path} ({len(out)} states x {len(SOLO_CASES)} cases)")
