@@ -8,7 +8,7 @@ use super::{
     baumgarte_less_drift, constrained_rows, dot, factor_delassus, weighted_rows, ConstraintData,
     ConstraintSettings, Contact,
 };
-use crate::algorithm::crba::crba;
+use crate::algorithm::crba::{crba, crba_lower};
 use crate::algorithm::dense::cholesky_solve;
 use crate::algorithm::forward_dynamics::bias_and_mass;
 use crate::algorithm::jacobian::{
@@ -136,8 +136,14 @@ pub(crate) fn form_delassus<
 ) -> Result<()> {
     let rows = constrained_rows(contacts);
     cdata.rows = rows;
-    if poses != Poses::FromJointTransformsAndMass {
-        crba(model, data, q)?;
+    // M's lower triangle, which is all the factorisation reads.
+    match poses {
+        Poses::Compute => {
+            crba(model, data, q)?;
+        }
+        // From the known joint transforms, as CRBA forward dynamics does.
+        Poses::FromJointTransforms => crba_lower(model, data, None),
+        Poses::FromJointTransformsAndMass => {}
     }
     if let Some(added) = added_diagonal {
         for (k, d) in added.iter().enumerate() {
@@ -225,8 +231,8 @@ pub(crate) enum Poses {
     /// Nothing at `q`: it runs CRBA and forward kinematics.
     Compute,
     /// The joint transforms at `q` in `data.li_m_i` (left by RNEA or a
-    /// forward-kinematics pass): the poses are composed from them; CRBA
-    /// still runs.
+    /// forward-kinematics pass): the poses are composed from them, and CRBA
+    /// runs on them.
     FromJointTransforms,
     /// The joint transforms and `M`'s lower triangle at `q` (left by
     /// `bias_and_mass`): neither is formed again.
