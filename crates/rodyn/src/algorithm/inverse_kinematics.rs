@@ -13,6 +13,13 @@
 //! `λ` keeps the step bounded near singular configurations and for
 //! unreachable targets, where the iteration then settles at the closest
 //! reachable pose and reports [`Error::NotConverged`].
+//!
+//! Damped least squares is a local method: from a start in another basin
+//! (the elbow on the wrong side, the arm stretched straight, a singular
+//! wrist) it stalls short of a reachable target. [`solve_with_fallback`]
+//! then falls back to joint space: it restarts from a configuration the
+//! caller names (a home posture, the last solution of a control loop) for
+//! what is left of the same budget, so the worst case stays one budget.
 
 use super::dense::{cholesky_in_place, cholesky_solve};
 use super::frames::{frame_placement, ReferenceFrame};
@@ -36,16 +43,22 @@ pub struct IkSettings<S> {
     pub tolerance: S,
     /// The iteration budget (each iteration: one Jacobian and one 6×6 solve).
     pub max_iterations: usize,
+    /// [`solve_with_fallback`]: a start counts as stalled when a window of
+    /// this many steps leaves the error's largest component above 99 % of
+    /// its value when the window began.
+    pub stall_iterations: usize,
 }
 
 impl<S: Scalar> IkSettings<S> {
-    /// λ = 1e-3, tolerance 1e-6 (f64) or 1e-4 (f32), 100 iterations.
+    /// λ = 1e-3, tolerance 1e-6 (f64) or 1e-4 (f32), 100 iterations, a
+    /// start stalled after 10 iterations without progress.
     #[must_use]
     pub fn new() -> Self {
         Self {
             damping: S::from_f64(1e-3),
             tolerance: S::from_f64(if S::EPSILON < 1e-10 { 1e-6 } else { 1e-4 }),
             max_iterations: 100,
+            stall_iterations: 10,
         }
     }
 }
@@ -171,21 +184,157 @@ pub fn solve<S: Scalar, const NB: usize, const NQ: usize, const NV: usize>(
     settings: &IkSettings<S>,
     q: &mut [S; NQ],
 ) -> Result<usize> {
-    let mut residual = f64::INFINITY;
-    for iteration in 0..settings.max_iterations {
-        let before = *q;
-        let e = step(model, data, ws, frame, target, settings.damping, q)?;
-        let size = column(&e).iter().fold(S::ZERO, |m, x| m.max(x.abs()));
-        residual = size.to_f64();
-        if size <= settings.tolerance {
-            *q = before;
-            return Ok(iteration);
+    let problem = Problem {
+        model,
+        frame,
+        target,
+        settings,
+    };
+    match problem.iterate(data, ws, q, settings.max_iterations, None)? {
+        Outcome::Converged(iterations) => Ok(iterations),
+        Outcome::Stopped { residual, .. } => Err(Error::NotConverged {
+            iterations: settings.max_iterations,
+            residual,
+        }),
+    }
+}
+
+/// [`solve`] from `q`, falling back to joint space when that start stalls
+/// (a window of `settings.stall_iterations` steps leaves the error's
+/// largest component above 99 % of its value when the window began): the
+/// iteration restarts from `fallback` (a home posture, or the last
+/// solution of a control loop) with the steps left of
+/// `settings.max_iterations`. Returns the steps taken from both starts;
+/// `q` is then the configuration within tolerance. The worst case is one
+/// budget of [`step`]s, as for [`solve`].
+///
+/// # Errors
+/// [`Error::NotConverged`] when neither start converges within the budget,
+/// with the steps taken and the smaller of the two final residuals, `q`
+/// then holding that iterate; and those of [`step`].
+#[allow(clippy::too_many_arguments)]
+pub fn solve_with_fallback<S: Scalar, const NB: usize, const NQ: usize, const NV: usize>(
+    model: &Model<S, NB, NQ, NV, Spatial>,
+    data: &mut Data<S, NB, NV, Spatial>,
+    ws: &mut IkData<S, NV>,
+    frame: &Frame<S>,
+    target: &Transform<S>,
+    settings: &IkSettings<S>,
+    fallback: &[S; NQ],
+    q: &mut [S; NQ],
+) -> Result<usize> {
+    let problem = Problem {
+        model,
+        frame,
+        target,
+        settings,
+    };
+    let budget = settings.max_iterations;
+    let (used, first_residual) =
+        match problem.iterate(data, ws, q, budget, Some(settings.stall_iterations))? {
+            Outcome::Converged(iterations) => return Ok(iterations),
+            Outcome::Stopped {
+                iterations,
+                residual,
+            } => (iterations, residual),
+        };
+    let mut restart = *fallback;
+    match problem.iterate(data, ws, &mut restart, budget - used, None)? {
+        Outcome::Converged(iterations) => {
+            *q = restart;
+            Ok(used + iterations)
+        }
+        Outcome::Stopped { residual, .. } => {
+            if residual < first_residual {
+                *q = restart;
+            }
+            Err(Error::NotConverged {
+                iterations: budget,
+                residual: residual.min(first_residual),
+            })
         }
     }
-    Err(Error::NotConverged {
-        iterations: settings.max_iterations,
-        residual,
-    })
+}
+
+/// A window of steps makes progress when it ends with the error below
+/// this fraction of what it was when the window began.
+const STALL_PROGRESS: f64 = 0.99;
+
+/// What one start of the iteration came to.
+enum Outcome {
+    /// Within tolerance after this many steps.
+    Converged(usize),
+    /// Out of budget, or stalled: steps taken and the last error's largest
+    /// component.
+    Stopped { iterations: usize, residual: f64 },
+}
+
+/// The fixed inputs of an inverse-kinematics solve.
+struct Problem<'a, S: Scalar, const NB: usize, const NQ: usize, const NV: usize> {
+    model: &'a Model<S, NB, NQ, NV, Spatial>,
+    frame: &'a Frame<S>,
+    target: &'a Transform<S>,
+    settings: &'a IkSettings<S>,
+}
+
+impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Problem<'_, S, NB, NQ, NV> {
+    /// Damped least-squares steps from `q`, at most `budget` of them, and,
+    /// with `stall = Some(n)`, stopping at the end of a window of `n` steps
+    /// that brought the error no lower than 99 % of its value when the
+    /// window began. On
+    /// convergence `q` is the configuration within tolerance, otherwise
+    /// the last iterate.
+    fn iterate(
+        &self,
+        data: &mut Data<S, NB, NV, Spatial>,
+        ws: &mut IkData<S, NV>,
+        q: &mut [S; NQ],
+        budget: usize,
+        stall: Option<usize>,
+    ) -> Result<Outcome> {
+        let mut residual = f64::INFINITY;
+        // The error when the current window of `stall` steps began.
+        let mut window_start = f64::INFINITY;
+        for iteration in 0..budget {
+            let before = *q;
+            let e = step(
+                self.model,
+                data,
+                ws,
+                self.frame,
+                self.target,
+                self.settings.damping,
+                q,
+            )?;
+            let size = largest_component(&e);
+            residual = size.to_f64();
+            if size <= self.settings.tolerance {
+                *q = before;
+                return Ok(Outcome::Converged(iteration));
+            }
+            // Compared window by window, not step by step: near a singular
+            // configuration a step can throw the error up before the next
+            // ones bring it down.
+            if stall.is_some_and(|n| n > 0 && iteration % n == 0) {
+                if iteration > 0 && residual >= STALL_PROGRESS * window_start {
+                    return Ok(Outcome::Stopped {
+                        iterations: iteration + 1,
+                        residual,
+                    });
+                }
+                window_start = residual;
+            }
+        }
+        Ok(Outcome::Stopped {
+            iterations: budget,
+            residual,
+        })
+    }
+}
+
+/// The largest component of a pose error (rad or m).
+fn largest_component<S: Scalar>(e: &Motion<S>) -> S {
+    column(e).iter().fold(S::ZERO, |m, x| m.max(x.abs()))
 }
 
 /// A motion's six components, angular first.
