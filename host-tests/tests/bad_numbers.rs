@@ -197,20 +197,28 @@ fn setters_name_what_is_wrong() {
         Err(invalid(ModelProblem::NonFiniteParameter))
     );
 
-    // A far placement is finite and accepted; the algorithms then report
-    // the overflow instead of returning NaN.
+    // A placement 1e300 m away: its |p|⁴ overflows, so the setter names the
+    // body (ABA would read the overflow as a singular joint).
     let mut far_placement = *model.placement(2);
     far_placement.trans.x = 1e300;
+    assert_eq!(
+        model.set_placement(2, far_placement),
+        Err(invalid(ModelProblem::Overflow))
+    );
+    // Just inside that bound (1e76 m) the placement is accepted, and every
+    // algorithm returns a finite result, names an overflow, or reports the
+    // mass matrix or an articulated inertia as numerically singular (its
+    // pivots span more than 1e150): a true cause at that scale.
+    far_placement.trans.x = 1e76;
     model.set_placement(2, far_placement).unwrap();
     let mut data = Data::new();
-    let error = assert_err(
-        "rnea far",
-        rnea(&model, &mut data, &Q, &[1.0; NV], &[0.0; NV], None).copied(),
-    );
-    assert!(matches!(error, Error::NonFiniteResult { .. }), "{error:?}");
     let v = [1.0; NV];
     let zero = [0.0; NV];
     for (what, result) in [
+        (
+            "rnea far",
+            rnea(&model, &mut data, &Q, &v, &zero, None).map(|t| t.to_vec()),
+        ),
         (
             "kinetic energy far",
             kinetic_energy(&model, &mut data, &Q, &v).map(|e| vec![e]),
@@ -218,6 +226,10 @@ fn setters_name_what_is_wrong() {
         (
             "crba fd far",
             Crba::forward_dynamics(&model, &mut data, &Q, &v, &zero, None).map(|a| a.to_vec()),
+        ),
+        (
+            "aba far",
+            Aba::forward_dynamics(&model, &mut data, &Q, &v, &zero, None).map(|a| a.to_vec()),
         ),
         (
             "nle far",
@@ -228,26 +240,70 @@ fn setters_name_what_is_wrong() {
             crba(&model, &mut data, &Q).map(|m| m.iter().flatten().copied().collect()),
         ),
     ] {
-        let error = assert_err(what, result);
-        assert!(
-            matches!(error, Error::NonFiniteResult { .. }),
-            "{what}: {error:?}"
-        );
+        match result {
+            Ok(values) => assert!(values.iter().all(|x| x.is_finite()), "{what}: {values:?}"),
+            Err(error) => assert!(
+                match error {
+                    Error::NonFiniteResult { .. } => true,
+                    Error::MassMatrixNotPositiveDefinite { relative_pivot, .. } =>
+                        relative_pivot.is_finite(),
+                    Error::SingularArticulatedInertia { relative_pivot, .. } => {
+                        relative_pivot.is_finite()
+                    }
+                    _ => false,
+                },
+                "{what}: {error:?}"
+            ),
+        }
     }
-    // ABA's articulated inertia overflows. An error, but still named as a
-    // singular joint with a NaN pivot: naming it a non-finite result in
-    // `check_pivot` or `aba` cost a firmware image a panic call site.
-    let error = assert_err(
-        "aba far",
-        Aba::forward_dynamics(&model, &mut data, &Q, &v, &zero, None).copied(),
-    );
-    assert!(
-        matches!(
-            error,
-            Error::NonFiniteResult { .. } | Error::SingularArticulatedInertia { .. }
-        ),
-        "{error:?}"
-    );
+    // Bodies of 1e100 and 1e150 kg among 1 kg ones are accepted (m² is
+    // finite): RNEA stays finite, and the mass ratio makes the mass matrix
+    // and joint 0's articulated inertia numerically singular, which
+    // forward dynamics reports as such with a finite relative pivot.
+    let mut heavy_model = panda::MODEL_F64;
+    for mass in [1e100, 1e150] {
+        let heavy = Inertia::new(mass, base.com, base.rot_inertia);
+        heavy_model.set_inertia(2, heavy).unwrap();
+        let tau = rnea(&heavy_model, &mut data, &Q, &v, &zero, None).unwrap();
+        assert!(tau.iter().all(|t| t.is_finite()), "{mass} kg: {tau:?}");
+        match Aba::forward_dynamics(&heavy_model, &mut data, &Q, &v, &zero, None) {
+            Ok(a) => assert!(a.iter().all(|x| x.is_finite())),
+            Err(Error::SingularArticulatedInertia { relative_pivot, .. }) => {
+                assert!(relative_pivot.is_finite() && relative_pivot < 1e-12);
+            }
+            Err(other) => panic!("aba, {mass} kg: {other:?}"),
+        }
+        match Crba::forward_dynamics(&heavy_model, &mut data, &Q, &v, &zero, None) {
+            Ok(a) => assert!(a.iter().all(|x| x.is_finite())),
+            Err(Error::MassMatrixNotPositiveDefinite { relative_pivot, .. }) => {
+                assert!(relative_pivot.is_finite() && relative_pivot < 1e-12);
+            }
+            Err(other) => panic!("crba fd, {mass} kg: {other:?}"),
+        }
+    }
+    {
+        let mut model = panda::MODEL_F64;
+        let mut data = Data::new();
+        for mass in [1e100, 1e150, 1e154] {
+            let heavy = Inertia::new(mass, base.com, base.rot_inertia);
+            let set = model.set_inertia(2, heavy);
+            println!("mass {mass}: {set:?}");
+            if set.is_ok() {
+                println!(
+                    "  aba {:?}",
+                    Aba::forward_dynamics(&model, &mut data, &Q, &v, &zero, None).map(|a| a[0])
+                );
+                println!(
+                    "  crbafd {:?}",
+                    Crba::forward_dynamics(&model, &mut data, &Q, &v, &zero, None).map(|a| a[0])
+                );
+                println!(
+                    "  rnea {:?}",
+                    rnea(&model, &mut data, &Q, &v, &zero, None).map(|a| a[0])
+                );
+            }
+        }
+    }
     // The potential energy stays finite there (m g z of about 1e301 J):
     // whatever is returned is finite or an error.
     match potential_energy(&model, &mut data, &Q) {

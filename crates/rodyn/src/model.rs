@@ -289,8 +289,9 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
     ///
     /// # Errors
     /// [`Error::BodyOutOfRange`] for `i ≥ NB`; [`Error::InvalidModel`] for a
-    /// non-finite placement, a rotation that is not orthonormal, or a
-    /// reflection; the model is then unchanged.
+    /// non-finite placement, a translation whose `|p|⁴` overflows, a
+    /// rotation that is not orthonormal, or a reflection; the model is then
+    /// unchanged.
     pub fn set_placement(&mut self, i: usize, placement: G::Transform<S>) -> Result<()> {
         if i >= NB {
             return Err(Error::BodyOutOfRange { body: i });

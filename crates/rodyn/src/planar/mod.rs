@@ -84,6 +84,9 @@ impl Space for Planar {
         let n = (x.cos * x.cos + x.sin * x.sin).to_f64();
         if !x.is_finite() {
             Err(ModelProblem::NonFiniteParameter)
+        } else if !x.trans.norm_squared().squared().is_finite() {
+            // As the 3-D placements: ABA multiplies two m |p|² entries.
+            Err(ModelProblem::Overflow)
         } else if (n - 1.0).abs() <= 1e3 * S::EPSILON {
             Ok(())
         } else {

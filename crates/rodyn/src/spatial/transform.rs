@@ -112,12 +112,13 @@ impl<S: Scalar> RigidTransform<S> for Transform<S> {
 }
 
 impl<S: Scalar> Transform<S> {
-    /// Checks a placement: finite, with a proper rotation: orthonormal to
-    /// 10³ ε (`RᵀR = 1`) and not a reflection (`det R = +1`). Used by
+    /// Checks a placement: finite, with a translation whose `|p|⁴` is
+    /// finite, and a proper rotation: orthonormal to 10³ ε (`RᵀR = 1`) and
+    /// not a reflection (`det R = +1`). Used by
     /// [`Model::validate`](crate::Model::validate) and the setters.
     ///
     /// # Errors
-    /// [`ModelProblem::NonFiniteParameter`],
+    /// [`ModelProblem::NonFiniteParameter`], [`ModelProblem::Overflow`],
     /// [`ModelProblem::RotationNotOrthonormal`] or
     /// [`ModelProblem::Reflection`].
     ///
@@ -136,6 +137,13 @@ impl<S: Scalar> Transform<S> {
     pub fn validate(&self) -> Result<(), ModelProblem> {
         if !self.is_finite() {
             return Err(ModelProblem::NonFiniteParameter);
+        }
+        // Moving an inertia by p forms m |p|², and ABA multiplies two such
+        // entries: a translation whose |p|⁴ overflows (beyond 1e77 m in
+        // f64, 1e9 m in f32) is refused here, naming the body, rather than
+        // read later as a singular joint.
+        if !self.trans.norm_squared().squared().is_finite() {
+            return Err(ModelProblem::Overflow);
         }
         let rtr = self.rot.tr_mul_mat(&self.rot);
         let tol = 1e3 * S::EPSILON;
