@@ -63,6 +63,7 @@ pub mod sim;
 pub mod space;
 pub mod spatial;
 pub mod topology;
+mod tuning;
 
 pub use data::Data;
 pub use endpoint::Endpoint;
