@@ -98,7 +98,9 @@ fn compare<S: Scalar, const NB: usize, const NQ: usize, const NV: usize>(name: &
 /// f32 bounds `[RNEA derivatives, ABA derivatives]`: the worst measured
 /// (printed by the test), about doubled. Forward-dynamics derivatives carry
 /// `M⁻¹`, so they degrade with its condition number on long chains, as
-/// forward dynamics do (see `f32_accuracy.rs`).
+/// forward dynamics do (see `f32_accuracy.rs`). The bounds hold in both
+/// tuning profiles (`cargo xtask test` runs both), whose orders of
+/// summation round differently.
 fn f32_bounds(name: &str) -> [f64; 2] {
     match name {
         "ur5" => [1e-6, 4e-6],
@@ -110,7 +112,8 @@ fn f32_bounds(name: &str) -> [f64; 2] {
         "planar_chain_3" => [3e-6, 7e-6],
         "planar_chain_5" => [1e-6, 5e-6],
         "planar_chain_10" => [1e-6, 2e-4],
-        "planar_chain_20" => [1.2e-6, 4e-4],
+        // ABA derivatives: 2.0e-4 out of order, 4.1e-4 in order.
+        "planar_chain_20" => [1.2e-6, 8e-4],
         "planar_chain_40" => [2e-6, 3e-3],
         "planar_chain_60" => [3e-6, 5e-3],
         "spatial_chain_5" => [3e-6, 4e-6],

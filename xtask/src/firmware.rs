@@ -61,7 +61,7 @@ pub const EXAMPLES: &[Example] = &[
     },
     Example {
         name: "agreement",
-        about: "RNEA and ABA on seeded random states, for the host to recompute in f64",
+        about: "RNEA, ABA, CRBA and CRBA forward dynamics on seeded random states, for the host to recompute in f64",
     },
 ];
 

@@ -4,7 +4,7 @@
 //! | command                  | does                                                              |
 //! |--------------------------|-------------------------------------------------------------------|
 //! | `run [example]`          | builds the firmware, runs `example` (default: the arm controller) in QEMU, prints the decoded defmt log |
-//! | `test`                   | host tests, the no_std core for thumbv7em, every firmware example in QEMU against its expected output, sizes, panic sites, stack bounds, lint |
+//! | `test`                   | host tests (the core's and `rodyn-host-tests`' also in the in-order tuning profile), the no_std core for thumbv7em, every firmware example in QEMU against its expected output, sizes, panic sites, stack bounds, lint |
 //! | `lint`                   | rustfmt, clippy and rustdoc, warnings as errors, host and firmware; the core without float features stops at one error; `cargo package` of the published crates |
 //! | `costs`                  | runs the cost probe, measures sizes and bounds the stack, rewrites the tables in `docs/sections/firmware.md` and `firmware/expected/sizes.txt` |
 //! | `stack [image] [words]`  | worst-case stack per image and per cost-table row from a static call graph, checked against the painted figures (`--check-frames`: the frame reading against LLVM's `-Z emit-stack-sizes`) |
@@ -88,6 +88,7 @@ fn test() -> Result<()> {
     setup::ensure_ipopt()?;
 
     shell::cargo(&["test", "--workspace"])?;
+    test_in_order_profile()?;
     shell::cargo(&[
         "build",
         "-p",
@@ -129,6 +130,47 @@ fn test() -> Result<()> {
     Ok(())
 }
 
+/// The tuning profile that hosts do not compile by default
+/// (`crates/rodyn/src/tuning.rs`): `RODYN_TUNING=in-order`.
+const IN_ORDER: (&str, &str) = ("RODYN_TUNING", "in-order");
+
+/// Where the in-order profile builds: a target directory of its own, so
+/// that switching profiles does not rebuild the core and everything above
+/// it in the default one.
+fn in_order_target_dir() -> String {
+    shell::target_dir()
+        .join("in-order")
+        .to_string_lossy()
+        .into_owned()
+}
+
+/// The core's tests and `rodyn-host-tests` (the Pinocchio fixtures, the
+/// identities, f32 accuracy, the firmware agreement) again in the in-order
+/// profile, whose forms hosts otherwise never run. The compile-fail test is
+/// skipped: it checks the type-level model, which no profile changes.
+fn test_in_order_profile() -> Result<()> {
+    let started = Instant::now();
+    let dir = in_order_target_dir();
+    shell::cargo_env(
+        &[
+            "test",
+            "-p",
+            "rodyn",
+            "-p",
+            "rodyn-host-tests",
+            "--",
+            "--skip",
+            "inconsistent_models_fail_to_compile",
+        ],
+        &[IN_ORDER, ("CARGO_TARGET_DIR", &dir)],
+    )?;
+    println!(
+        "xtask test: in-order profile passed in {:.0} s",
+        started.elapsed().as_secs_f64()
+    );
+    Ok(())
+}
+
 /// Formatting, clippy and rustdoc with warnings as errors.
 fn lint() -> Result<()> {
     let started = Instant::now();
@@ -143,6 +185,21 @@ fn lint() -> Result<()> {
         "-D",
         "warnings",
     ])?;
+    // The core's host build in the other profile (the firmware's clippy
+    // below covers it without `std`).
+    let in_order_dir = in_order_target_dir();
+    shell::cargo_env(
+        &[
+            "clippy",
+            "-p",
+            "rodyn",
+            "--all-targets",
+            "--",
+            "-D",
+            "warnings",
+        ],
+        &[IN_ORDER, ("CARGO_TARGET_DIR", &in_order_dir)],
+    )?;
     shell::cargo_in(
         firmware::dir(),
         &["clippy", "--release", "--", "-D", "warnings"],

@@ -57,9 +57,20 @@ pub fn cargo_command(dir: &Path) -> Command {
     command
 }
 
-/// `program arg arg ...` for messages.
+/// `[VAR=value ...] program arg arg ...` for messages (the variables set
+/// for this command, such as the tuning profile's).
 pub fn describe(command: &Command) -> String {
-    let mut text = command.get_program().to_string_lossy().into_owned();
+    let mut text = String::new();
+    for (name, value) in command.get_envs() {
+        if let Some(value) = value {
+            text.push_str(&format!(
+                "{}={} ",
+                name.to_string_lossy(),
+                value.to_string_lossy()
+            ));
+        }
+    }
+    text.push_str(&command.get_program().to_string_lossy());
     for arg in command.get_args() {
         text.push(' ');
         text.push_str(&arg.to_string_lossy());

@@ -41,6 +41,15 @@
 //! * `std` (default): float functions from the standard library.
 //! * `libm`: float functions from `libm`, for `no_std` targets.
 //! * `defmt`: `defmt::Format` for errors, for firmware logging.
+//!
+//! ## Tuning profile
+//! A few kernels have two forms that give the same results (to rounding)
+//! and differ in speed by kind of core. The build takes the in-order forms
+//! on bare-metal 32-bit Arm (Cortex-M, Cortex-R), every `thumbv*` target
+//! and bare-metal 32-bit RISC-V, the out-of-order forms elsewhere; set
+//! `RODYN_TUNING=in-order` or `RODYN_TUNING=out-of-order` in the build's
+//! environment (for a project: the `[env]` table of `.cargo/config.toml`)
+//! to choose, for example `in-order` for a Cortex-A7 or A53 under Linux.
 #![cfg_attr(not(feature = "std"), no_std)]
 #![forbid(unsafe_op_in_unsafe_fn)]
 #![warn(missing_docs)]
@@ -63,6 +72,7 @@ pub mod sim;
 pub mod space;
 pub mod spatial;
 pub mod topology;
+mod tuning;
 
 pub use data::Data;
 pub use endpoint::Endpoint;

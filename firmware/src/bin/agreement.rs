@@ -2,17 +2,22 @@
 //!
 //! For each model, [`STATES`] random states from a seeded xorshift
 //! generator: the log prints the inputs `q`, `v`, `a`, `u` exactly (shortest
-//! round-trip f32), RNEA's torques for `(q, v, a)` and ABA's accelerations
-//! for `(q, v, u)`. The host test `host-tests/tests/firmware_agreement.rs`
-//! recomputes both in f64 from the printed inputs and bounds the relative
-//! difference.
+//! round-trip f32), RNEA's torques for `(q, v, a)`, ABA's accelerations
+//! for `(q, v, u)`, CRBA's mass matrix at `q` (row `r` as the field `m<r>`)
+//! and CRBA forward dynamics' accelerations for `(q, v, u)` (or, where the
+//! f32 factorisation refuses `M`, the coordinate and relative pivot it
+//! refused it at). The host test
+//! `host-tests/tests/firmware_agreement.rs` recomputes each in f64 from the
+//! printed inputs and bounds the relative difference.
 #![no_std]
 #![no_main]
 
 use cortex_m_rt::entry;
 use rodyn::algorithm::aba::aba;
+use rodyn::algorithm::crba::crba;
+use rodyn::algorithm::forward_dynamics::{Crba, ForwardDynamics};
 use rodyn::algorithm::rnea::rnea;
-use rodyn::{Data, Model};
+use rodyn::{Data, Error, Model};
 use rodyn_firmware::exit::exit_with;
 use rodyn_firmware::models::aibo::MODEL_F32 as QUADRUPED;
 use rodyn_firmware::models::panda::MODEL_F32 as PANDA;
@@ -62,6 +67,39 @@ fn report<const NB: usize, const NQ: usize, const NV: usize>(
         defmt::println!("agree {=str} {} u {}", name, k, u);
         defmt::println!("agree {=str} {} rnea {}", name, k, tau);
         defmt::println!("agree {=str} {} aba {}", name, k, ddq);
+        // Every entry of M, both triangles: which pass fills the upper one
+        // is a choice of the tuning profile.
+        match crba(model, &mut data, &q) {
+            Ok(m) => {
+                for (r, row) in m.iter().enumerate() {
+                    defmt::println!("agree {=str} {} m{} {}", name, k, r, row);
+                }
+            }
+            Err(e) => {
+                defmt::error!("{=str} {}: CRBA: {}", name, k, e);
+                return false;
+            }
+        }
+        match Crba::forward_dynamics(model, &mut data, &q, &v, &u, None) {
+            Ok(ddq) => defmt::println!("agree {=str} {} crba_fd {}", name, k, ddq),
+            // In f32 the quadruped's light legs on its heavy trunk leave
+            // some states' pivots below the factorisation's tolerance (see
+            // docs/sections/firmware.md); the host checks the pivot in f64.
+            Err(Error::MassMatrixNotPositiveDefinite {
+                dof,
+                relative_pivot,
+            }) => defmt::println!(
+                "agree {=str} {} crba_fd_refused [{}, {}]",
+                name,
+                k,
+                dof as f32,
+                relative_pivot as f32
+            ),
+            Err(e) => {
+                defmt::error!("{=str} {}: CRBA forward dynamics: {}", name, k, e);
+                return false;
+            }
+        }
     }
     true
 }
@@ -70,7 +108,7 @@ fn report<const NB: usize, const NQ: usize, const NV: usize>(
 fn main() -> ! {
     let mut rng = XorShift32::new(SEED);
     defmt::println!(
-        "agreement: f32 RNEA and ABA on {} random states per model",
+        "agreement: f32 RNEA, ABA, CRBA and CRBA forward dynamics on {} random states per model",
         STATES
     );
     let passed = report("pendulum", &PENDULUM, &mut rng)

@@ -227,17 +227,18 @@ pub(crate) fn backward_pass<
 
 /// `U = Iᴬ S` of a one-coordinate joint, also stored in `u_col`.
 ///
-/// On hosts formed in a local first: the column is read at once, and a
+/// Out of order formed in a local first: the column is read at once, and a
 /// copy read back from `data` (stored piecewise, read whole) waits on
-/// store-to-load forwarding. On the Cortex-M4, which has no such stall,
-/// the local costs instructions (the performance notebook, "ABA").
+/// store-to-load forwarding. In order (the Cortex-M4), with no such stall,
+/// the local costs instructions (`crate::tuning::COLUMN_IN_LOCAL`; the
+/// performance notebook, "ABA").
 #[inline(always)]
 fn joint_column<S: Scalar, G: Space, J: JointModel<S, G>>(
     joint: &J,
     i_a: &G::Articulated<S>,
     u_col: &mut G::Force<S>,
 ) -> G::Force<S> {
-    if cfg!(target_arch = "arm") {
+    if !crate::tuning::COLUMN_IN_LOCAL {
         joint.articulated_columns(i_a, core::slice::from_mut(u_col));
         *u_col
     } else {

@@ -50,13 +50,12 @@ pub(crate) fn body_transform<
         .placed_transform(model.placement(i), joint_configuration(model, i, q))
 }
 
-/// Whether the passes over the bodies form the sines and cosines of all
-/// the joint angles before the bodies' work ([`JointSinCos`]), on hosts:
-/// each pair is a chain of about 20 dependent operations, which one
-/// body's work beside it does not cover; formed in a pass of their own,
-/// two at a time, they overlap. The Cortex-M4, which runs one instruction
-/// after the other, would only pay for storing them.
-pub(crate) const ANGLES_FIRST: bool = cfg!(not(target_arch = "arm"));
+// Whether the passes over the bodies form the sines and cosines of all the
+// joint angles before the bodies' work ([`JointSinCos`]): out of order,
+// where each pair's long chain of dependent operations overlaps the
+// next pair's; in order, which would only pay for storing them. A choice
+// of the tuning profile.
+pub(crate) use crate::tuning::ANGLES_FIRST;
 
 /// The sine and cosine of each body's joint angle
 /// ([`JointModel::angle`]; a zero angle's for a joint without one), formed
@@ -291,14 +290,51 @@ pub(crate) fn supporting_ranges<const NB: usize, const NV: usize>(
 
 #[cfg(all(test, feature = "std"))]
 mod tests {
-    use super::{body_transform, body_transform_with, JointSinCos};
-    use crate::joint::{Axis, Joint};
+    use super::{
+        body_transform, body_transform_with, joint_configuration, JointSinCos, ANGLES_FIRST,
+    };
+    use crate::joint::{Axis, Joint, JointModel};
     use crate::planar::{PlanarInertia, PlanarJoint, PlanarMotion, PlanarTransform, Vec2};
+    use crate::space::Space;
     use crate::spatial::{Inertia, Mat3, Motion, Sym3, Transform, Vec3};
     use crate::Model;
 
+    /// The sines and cosines formed first, as the passes form them in the
+    /// out-of-order profile (`JointSinCos::at`), whatever the profile.
+    fn formed_first<const NB: usize, const NQ: usize, const NV: usize, G: Space>(
+        model: &Model<f64, NB, NQ, NV, G>,
+        q: &[f64; NQ],
+    ) -> JointSinCos<f64, NB> {
+        let sin_cos = JointSinCos::at(model, q);
+        assert_eq!(sin_cos.is_some(), ANGLES_FIRST);
+        sin_cos.unwrap_or_else(|| {
+            JointSinCos::from_angles(|i| model.joint(i).angle(joint_configuration(model, i, q)))
+        })
+    }
+
+    /// Body i's transform from `sin_cos`, as [`body_transform_with`] forms
+    /// it in the out-of-order profile.
+    fn from_sin_cos<const NB: usize, const NQ: usize, const NV: usize, G: Space>(
+        model: &Model<f64, NB, NQ, NV, G>,
+        i: usize,
+        q: &[f64; NQ],
+        sin_cos: &JointSinCos<f64, NB>,
+    ) -> G::Transform<f64> {
+        if ANGLES_FIRST {
+            body_transform_with(model, i, q, Some(sin_cos))
+        } else {
+            model.joint(i).placed_transform_from_sin_cos(
+                model.placement(i),
+                joint_configuration(model, i, q),
+                sin_cos.get(i),
+            )
+        }
+    }
+
     /// The transforms from the sines and cosines formed first are those
-    /// formed body by body, bit for bit, for every joint type.
+    /// formed body by body, bit for bit, for every joint type. In both
+    /// tuning profiles: the in-order one does not form them first
+    /// (`JointSinCos::at` gives `None`), but the kernels are the same.
     #[test]
     fn transforms_from_the_angles_formed_first_are_the_same() {
         let tilted = Mat3::from_axis_angle(&Vec3::new(0.6, 0.0, 0.8), 0.4);
@@ -317,10 +353,10 @@ mod tests {
         );
         let mut q = [0.7, -0.3, 0.2, 0.0, 0.6, 0.0, 0.8, 2.9, -7.4, 0.35, 1.0e6];
         q[3..7].copy_from_slice(&[0.0, 0.6, 0.0, 0.8]);
-        let sin_cos = JointSinCos::at(&spatial, &q).expect("hosts form the angles first");
+        let sin_cos = formed_first(&spatial, &q);
         for i in 0..5 {
             let (a, b) = (
-                body_transform_with(&spatial, i, &q, Some(&sin_cos)),
+                from_sin_cos(&spatial, i, &q, &sin_cos),
                 body_transform(&spatial, i, &q),
             );
             assert_eq!(a, b, "body {i}");
@@ -337,10 +373,10 @@ mod tests {
             PlanarMotion::new(0.0, Vec2::new(0.0, -9.81)),
         );
         let q = [-2.2, 0.4, 4.1];
-        let sin_cos = JointSinCos::at(&planar, &q).expect("hosts form the angles first");
+        let sin_cos = formed_first(&planar, &q);
         for i in 0..3 {
             let (a, b) = (
-                body_transform_with(&planar, i, &q, Some(&sin_cos)),
+                from_sin_cos(&planar, i, &q, &sin_cos),
                 body_transform(&planar, i, &q),
             );
             assert_eq!(a, b, "planar body {i}");

@@ -87,16 +87,14 @@ impl ForwardDynamics for Aba {
     }
 }
 
-/// Whether [`Crba`] runs the bias forces' passes and CRBA's together, one
-/// loop over the bodies forwards and one backwards
-/// ([`crba::bias_and_mass_lower`]), instead of RNEA and then CRBA: each
-/// joint transform is used at once by both, and an out-of-order core
-/// overlaps their independent work on each body (faster on x86-64). The
-/// in-order Cortex-M4 keeps the two algorithms apart: fused, its pendulum
-/// ran more instructions, and the Panda's and the quadruped's calls took
-/// more stack. Figures: docs/sections/performance_notebook.md, "CRBA
-/// forward dynamics and the factorisation".
-const FUSED_PASSES: bool = cfg!(not(target_arch = "arm"));
+// Whether [`Crba`] runs the bias forces' passes and CRBA's together
+// (`crba::bias_and_mass_lower`), instead of RNEA and then CRBA: out of
+// order, faster on x86-64; in order, the Cortex-M4's pendulum ran more
+// instructions fused, and the Panda's and the quadruped's calls took more
+// stack. A choice of the tuning profile; figures:
+// docs/sections/performance_notebook.md, "CRBA forward dynamics and the
+// factorisation".
+use crate::tuning::FUSED_PASSES;
 
 impl ForwardDynamics for Crba {
     const NAME: &'static str = "CRBA";

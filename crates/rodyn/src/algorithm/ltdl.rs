@@ -35,15 +35,13 @@ pub(crate) use super::common::supporting_ranges;
 /// the scalar's epsilon, means `M` is not numerically positive definite.
 const PIVOT_TOLERANCE_EPS: f64 = 64.0;
 
-/// On hosts, the value that each step of a recurrence has just formed
-/// enters that step's sums last, and in the solve by `L` the next
-/// coordinate is updated on its own, so that every pass reads the rest
-/// with the alignment the previous pass stored it in: an out-of-order
-/// core then does not wait on the newest value or on a load spanning two
-/// stores (the Panda's factor and solve take less time). The Cortex-M4
-/// keeps the plain order (these orders only cost it instructions). Figures:
-/// the performance notebook, "CRBA forward dynamics and the factorisation".
-const HOST_ORDER: bool = cfg!(not(target_arch = "arm"));
+// Out of order, the value that each step of a recurrence has just formed
+// enters that step's sums last, and in the solve by `L` the next
+// coordinate is updated on its own (the Panda's factor and solve take less
+// time on hosts); in order, the plain order. A choice of the tuning
+// profile; figures: the performance notebook, "CRBA forward dynamics and
+// the factorisation".
+use crate::tuning::HOST_ORDER;
 
 /// `y -= a x`, element by element. Slices of equal length, so the loop
 /// carries no bounds checks and vectorises.
@@ -665,7 +663,9 @@ mod tests {
             [1; 40],
             40,
         );
-        assert!(combination_pays(&t));
+        // Only the out-of-order profile takes the combination; both
+        // factorisations run here in either.
+        assert_eq!(combination_pays(&t), HOST_ORDER);
         assert_both_recover(&t, 1);
     }
 

@@ -71,14 +71,14 @@ pub fn rnea<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
 /// and a second one for forces: each body's transform, velocity and `c`
 /// stay in registers instead of being stored and read back (fewer
 /// instructions a body on the Cortex-M4).
-// Inlined into each caller on the Cortex-M4, so that `a: None` folds away
-// (the pendulum's RNEA is slower with plain `#[inline]`).
-// Hosts keep it and the backward pass out of line, shared by `rnea` and
-// `nonlinear_effects`: inlined into `rnea` alone (as once `Crba` no longer
-// called `nonlinear_effects`), Solo12's RNEA ran more instructions and
-// more time. Figures: docs/sections/performance_notebook.md, "RNEA".
-#[cfg_attr(target_arch = "arm", inline(always))]
-#[cfg_attr(not(target_arch = "arm"), inline(never))]
+// Inlined into each caller in the in-order profile (`crate::tuning`), so
+// that `a: None` folds away (the Cortex-M4's pendulum RNEA is slower with
+// plain `#[inline]`). Out of order it and the backward pass stay out of
+// line, shared by `rnea` and `nonlinear_effects`: inlined into `rnea` alone
+// (as once `Crba` no longer called `nonlinear_effects`), Solo12's RNEA ran
+// more instructions and more time on hosts. Figures: docs/sections/performance_notebook.md, "RNEA".
+#[cfg_attr(rodyn_tuning = "in_order", inline(always))]
+#[cfg_attr(rodyn_tuning = "out_of_order", inline(never))]
 fn forward_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     model: &Model<S, NB, NQ, NV, G>,
     data: &mut Data<S, NB, NV, G>,
@@ -141,8 +141,8 @@ pub(crate) fn forward_body<
 
 /// `τᵢ = Sᵀ fᵢ + armatureᵢ q̈ᵢ` and `f_λ += ˡⁱXᵢ* fᵢ`, leaves to root
 /// (`a: None`: no armature term).
-#[cfg_attr(target_arch = "arm", inline(always))]
-#[cfg_attr(not(target_arch = "arm"), inline(never))]
+#[cfg_attr(rodyn_tuning = "in_order", inline(always))]
+#[cfg_attr(rodyn_tuning = "out_of_order", inline(never))]
 fn backward_force_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     model: &Model<S, NB, NQ, NV, G>,
     data: &mut Data<S, NB, NV, G>,
@@ -154,8 +154,8 @@ fn backward_force_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: us
 /// [`backward_force_pass`], running `also(data, i)` after body i's step
 /// (CRBA's backward pass, fused in by
 /// [`Crba`](crate::algorithm::forward_dynamics::Crba)).
-#[cfg_attr(target_arch = "arm", inline(always))]
-#[cfg_attr(not(target_arch = "arm"), inline)]
+#[cfg_attr(rodyn_tuning = "in_order", inline(always))]
+#[cfg_attr(rodyn_tuning = "out_of_order", inline)]
 pub(crate) fn backward_force_pass_with<
     S: Scalar,
     const NB: usize,
@@ -170,12 +170,10 @@ pub(crate) fn backward_force_pass_with<
 ) {
     let t = model.topology();
     let armature = model.armature();
-    // On hosts, the force handed to the body just before (a chain's
-    // parent) stays in registers: a sum stored piecewise and read back
-    // whole at once waits on store-to-load forwarding. (The Cortex-M4 has
-    // no such stall; there the local only costs instructions: see the
-    // performance notebook, "RNEA".)
-    const CARRY: bool = cfg!(not(target_arch = "arm"));
+    // Out of order, the force handed to the body just before (a chain's
+    // parent) stays in registers (see `crate::tuning::CARRY`; the figures:
+    // the performance notebook, "RNEA").
+    const CARRY: bool = crate::tuning::CARRY;
     let mut carry = G::Force::<S>::ZERO;
     for i in (0..NB).rev() {
         let (iv, nv) = (t.idx_v[i], t.nv[i]);

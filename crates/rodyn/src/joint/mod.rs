@@ -273,8 +273,8 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
             Self::Custom(c) => c.behaviour.transform(q),
         }
     }
-    #[cfg_attr(not(target_arch = "arm"), inline(always))]
-    #[cfg_attr(target_arch = "arm", inline)]
+    #[cfg_attr(rodyn_tuning = "out_of_order", inline(always))]
+    #[cfg_attr(rodyn_tuning = "in_order", inline)]
     fn placed_transform(&self, placement: &Transform<S>, q: &[S]) -> Transform<S> {
         use crate::space::RigidTransform;
         match self {

@@ -46,16 +46,16 @@ impl<S: Scalar> Revolute<S> {
     ///
     /// About a coordinate axis the rotation mixes two columns of the
     /// placement's rotation; no 3x3 product is needed.
-    #[cfg_attr(not(target_arch = "arm"), inline(always))]
-    #[cfg_attr(target_arch = "arm", inline)]
+    #[cfg_attr(rodyn_tuning = "out_of_order", inline(always))]
+    #[cfg_attr(rodyn_tuning = "in_order", inline)]
     #[must_use]
     pub fn placed_transform(&self, placement: &Transform<S>, q: S) -> Transform<S> {
         let (s, c) = q.sin_cos();
         self.placed_transform_from_sin_cos(placement, s, c)
     }
     /// [`placed_transform`](Self::placed_transform) given `sin q` and `cos q`.
-    #[cfg_attr(not(target_arch = "arm"), inline(always))]
-    #[cfg_attr(target_arch = "arm", inline)]
+    #[cfg_attr(rodyn_tuning = "out_of_order", inline(always))]
+    #[cfg_attr(rodyn_tuning = "in_order", inline)]
     #[must_use]
     pub fn placed_transform_from_sin_cos(
         &self,

@@ -123,11 +123,12 @@ impl Space for Planar {
     fn step_angle<S: Scalar>(_frame: &TurnedFrame, j: &PlanarJoint<S>, q: &[S]) -> Option<S> {
         matches!(j, PlanarJoint::Revolute).then(|| q[0])
     }
-    // Only hosts form the angles first (see `crba`); on the Cortex-M4 the
-    // extra call site of `compose` cost the muscle robot's forward
-    // dynamics instructions through other inlining (see the performance
-    // notebook, "Sine and cosine").
-    #[cfg(not(target_arch = "arm"))]
+    // Only the out-of-order profile forms the angles first
+    // (`crate::tuning::ANGLES_FIRST`); on the Cortex-M4 the extra call site
+    // of `compose` cost the muscle robot's forward dynamics instructions
+    // through other inlining (see the performance notebook, "Sine and
+    // cosine").
+    #[cfg(rodyn_tuning = "out_of_order")]
     #[inline(always)]
     fn turned_joint_step<S: Scalar>(
         _frame: &TurnedFrame,

@@ -172,6 +172,10 @@ impl Scalar for f32 {
 /// registers on a single-precision FPU, so the instruction sits in a
 /// two-instruction function: the hard-float ABI passes and returns the value
 /// in `s0`.
+///
+/// A test of the instruction set, not of the tuning profile
+/// (`crate::tuning`): the instruction exists on every hard-float Arm
+/// target, whatever kind of core runs it.
 #[inline]
 fn sqrt_f32(x: f32) -> f32 {
     #[cfg(all(not(feature = "std"), target_arch = "arm", target_abi = "eabihf"))]

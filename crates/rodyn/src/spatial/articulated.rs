@@ -133,13 +133,14 @@ impl<S: Scalar> ArticulatedInertia6<S> {
     /// [`add_act`](ArticulatedInertia::add_act) for an `o` whose angular
     /// row and column K (the axis normal to the plane of I and J) and whose
     /// `B` row K are zero: only rows I and J of `A` and `B` are read.
-    // Out of line on Arm (the Cortex-M4's 32 registers hold the kernel's
-    // intermediates; inlined, ABA took more instructions on the Panda),
-    // inlined elsewhere (x86-64's 16 registers spill less when the kernel is
-    // scheduled with its caller: fewer instructions in ABA). Figures: the
-    // performance notebook, "ABA".
-    #[cfg_attr(target_arch = "arm", inline(never))]
-    #[cfg_attr(not(target_arch = "arm"), inline)]
+    // Out of line in the in-order profile (the Cortex-M4's 32 registers
+    // hold the kernel's intermediates; inlined, ABA took more instructions
+    // on the Panda), inlined out of order (x86-64's 16 registers spill less
+    // when the kernel is scheduled with its caller: fewer instructions in
+    // ABA). Figures: the performance notebook, "ABA"; the profile:
+    // `crate::tuning`.
+    #[cfg_attr(rodyn_tuning = "in_order", inline(never))]
+    #[cfg_attr(rodyn_tuning = "out_of_order", inline)]
     fn add_act_plane<const I: usize, const J: usize>(&mut self, o: &Self, x: &Transform<S>) {
         let r = &x.rot.m;
         // B' = Σₘ R eₘ (R bₘ)ᵀ over the rows m = I, J of B.

@@ -54,15 +54,11 @@ use local::backward_body;
 use root_frame::about_root;
 use triangle::{clear_lower, mirror_lower};
 
-/// Whether the local backward pass writes `M`'s zeros (those between
-/// unrelated limbs) and, for [`crba`], its entries above the diagonal
-/// itself, as it meets each entry (the root-frame pass, for [`crba`], the
-/// entries above the diagonal), instead of separate clear and mirror loops
-/// afterwards. On an out-of-order core the separate loops are stores to
-/// scattered rows that it waits on, where stores in the pass hide among
-/// its arithmetic; an in-order core pays for every extra instruction and
-/// keeps the separate loops.
-const ENTRIES_IN_PASS: bool = cfg!(not(target_arch = "arm"));
+// Whether the local backward pass writes `M`'s zeros and, for `crba`, its
+// entries above the diagonal itself (the root-frame pass, for `crba`, the
+// entries above the diagonal), instead of separate clear and mirror loops
+// afterwards: a choice of the tuning profile.
+use crate::tuning::ENTRIES_IN_PASS;
 
 /// The backward pass that forms `M`. Both give the same matrix (to
 /// rounding); they differ in cost and in `f32` accuracy.

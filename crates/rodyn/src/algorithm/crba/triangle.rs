@@ -3,21 +3,22 @@
 //!
 //! Why it exists: the passes fill the lower triangle and only the entries
 //! a column reaches; where a pass does not write the rest as it goes
-//! ([`ENTRIES_IN_PASS`](super::ENTRIES_IN_PASS)), these two loops
+//! (`crate::tuning::ENTRIES_IN_PASS`), these two loops
 //! complete `M` afterwards.
 
 use crate::topology::Topology;
 use crate::Scalar;
 
-/// Copies the lower triangle of `m` onto the upper. On hosts two rows by
-/// two columns at a time, so that each row above takes its entries in
-/// adjacent pairs (faster on the 60-link chain's CRBA); the Cortex-M4,
-/// which pays per instruction, one entry at a time (there the blocked form
-/// ran more instructions on the quadruped's CRBA). Figures: the
-/// performance notebook, "CRBA".
+/// Copies the lower triangle of `m` onto the upper. Out of order two rows
+/// by two columns at a time, so that each row above takes its entries in
+/// adjacent pairs (faster on the 60-link chain's CRBA on hosts); in order,
+/// paying per instruction, one entry at a time (on the Cortex-M4 the
+/// blocked form ran more instructions on the quadruped's CRBA). The
+/// profile: `crate::tuning::MIRROR_IN_BLOCKS`; figures: the performance
+/// notebook, "CRBA".
 #[inline]
 pub(super) fn mirror_lower<S: Scalar, const NV: usize>(m: &mut [[S; NV]; NV]) {
-    if cfg!(target_arch = "arm") {
+    if !crate::tuning::MIRROR_IN_BLOCKS {
         for r in 1..NV {
             for c in 0..r {
                 m[c][r] = m[r][c];
