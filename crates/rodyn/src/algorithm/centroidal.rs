@@ -231,15 +231,14 @@ fn map_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Fra
         }
     }
     cd.total = total;
-    let o_m_g = G::from_translation(&total.com());
-    cd.ig = total.act(&o_m_g.inverse());
+    let com = total.com();
+    cd.ig = total.act(&G::from_translation(&com).inverse());
     let t = model.topology();
     for i in 0..NB {
         let joint = model.joint(i);
         let iv = t.idx_v[i];
         for k in 0..t.nv[i] {
-            let o_s = G::act_subspace_column(&data.o_m_i[i], joint, k);
-            cd.ag[iv + k] = o_m_g.act_inv_force(&cd.o_ic[i].mul_motion(&o_s));
+            cd.ag[iv + k] = G::centroidal_column(&data.o_m_i[i], joint, k, &cd.o_ic[i], &com);
         }
     }
 }
