@@ -224,11 +224,24 @@ fn map_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Fra
         cd.o_ic[i] = model.inertia(i).act(&data.o_m_i[i]);
     }
     let mut total = <G::Inertia<S> as BodyInertia<S>>::ZERO;
+    // Body i + 1's composite, added to body i's when i is its parent at i's
+    // turn rather than at its own (its parent's last child to come, so the
+    // order of the sums is the same): a chain's sum then starts from
+    // registers rather than from the composite just stored, which loads
+    // laid out otherwise than the stores do not get forwarded.
+    let mut next = total;
     for i in (0..NB).rev() {
-        match model.parent(i) {
-            Some(p) => cd.o_ic[p] = cd.o_ic[p].combine(&cd.o_ic[i]),
-            None => total = total.combine(&cd.o_ic[i]),
+        let mut ic = cd.o_ic[i];
+        if i + 1 < NB && model.parent(i + 1) == Some(i) {
+            ic = ic.combine(&next);
         }
+        cd.o_ic[i] = ic;
+        match model.parent(i) {
+            Some(p) if p + 1 == i => {}
+            Some(p) => cd.o_ic[p] = cd.o_ic[p].combine(&ic),
+            None => total = total.combine(&ic),
+        }
+        next = ic;
     }
     cd.total = total;
     let com = total.com();
