@@ -123,9 +123,8 @@ fn world_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: D
     let t = model.topology();
     let minus_g = -*model.gravity();
     let sin_cos = JointSinCos::at(model, q);
-    let mut o_m_i = <G::Transform<S> as RigidTransform<S>>::IDENTITY;
     for i in 0..NB {
-        o_m_i = pose_step(model, data, i, q, sin_cos.as_ref(), &o_m_i);
+        let o_m_i = pose_step(model, data, i, q, sin_cos.as_ref(), None);
         let (v_parent, a_parent) = match model.parent(i) {
             Some(p) => (deriv.o_v[p], deriv.o_a[p]),
             None => (<G::Motion<S> as VectorOps<S>>::ZERO, minus_g),
