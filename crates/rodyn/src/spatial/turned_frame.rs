@@ -29,8 +29,9 @@ pub struct TurnedFrame {
     parent_turn: AxisPermutation,
     axis: Option<TurnedAxis>,
     /// `K` when the joint turns about coordinate axis K behind a placement
-    /// without rotation (and the body has a parent).
-    unturned_axis: Option<usize>,
+    /// without rotation (and the body has a parent); a byte, which the
+    /// frame's padding holds, so that models keep their size.
+    unturned_axis: Option<u8>,
 }
 
 /// A revolute joint's coordinate axis `K` and its image in the turned frame.
@@ -110,7 +111,7 @@ impl TurnedFrame {
                     let (sin_row, sin_negative) = back.row(b);
                     frames[i].turn = turn;
                     if placement.is_identity() {
-                        frames[i].unturned_axis = Some(k);
+                        frames[i].unturned_axis = Some(k as u8);
                     }
                     frames[i].axis = Some(TurnedAxis {
                         joint: k,
@@ -150,7 +151,10 @@ impl TurnedFrame {
     /// rotation is then `R_K(q)` itself.
     #[must_use]
     pub const fn unturned_axis(&self) -> Option<usize> {
-        self.unturned_axis
+        match self.unturned_axis {
+            Some(k) => Some(k as usize),
+            None => None,
+        }
     }
     /// The joint's axis in the turned frame, when its step is a rotation
     /// about that coordinate axis by the joint angle.
