@@ -369,6 +369,18 @@ pub trait Space: Copy + Debug + PartialEq + 'static {
     ) -> Self::Step<S> {
         Self::step(x)
     }
+    /// `parent x`: body i's pose from its parent's (`parent`) and its
+    /// joint transform `x = ˡⁱMᵢ` ([`RigidTransform::compose`]); a geometry
+    /// may skip products that the body's `frame` tells are with zeros
+    /// (giving the same result, bit for bit).
+    #[inline(always)]
+    fn then_joint<S: Scalar>(
+        parent: &Self::Transform<S>,
+        x: &Self::Transform<S>,
+        _frame: &TurnedFrame,
+    ) -> Self::Transform<S> {
+        parent.compose(x)
+    }
     /// `i` expressed in the frame turned by `turn` (`turn` applied to its
     /// centre of mass, `turn I turnᵀ` to its rotational inertia).
     #[inline(always)]

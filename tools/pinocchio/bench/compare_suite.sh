@@ -43,7 +43,7 @@ fi
 
 cd "$ROOT"
 cargo build --quiet -p rodyn-bench --release --bin "${SUITE}_timing"
-RODYN="$ROOT/target/release/${SUITE}_timing"
+RODYN="${CARGO_TARGET_DIR:-$ROOT/target}/release/${SUITE}_timing"
 TMP="$(mktemp -d)"
 for round in 1 2; do
     "$RODYN" --ms "$MS" >>"$TMP/rodyn"

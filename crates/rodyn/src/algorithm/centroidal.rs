@@ -224,22 +224,34 @@ fn map_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Fra
         cd.o_ic[i] = model.inertia(i).act(&data.o_m_i[i]);
     }
     let mut total = <G::Inertia<S> as BodyInertia<S>>::ZERO;
+    // Body i + 1's composite, added to body i's when i is its parent at i's
+    // turn rather than at its own (its parent's last child to come, so the
+    // order of the sums is the same): a chain's sum then starts from
+    // registers rather than from the composite just stored, which loads
+    // laid out otherwise than the stores do not get forwarded.
+    let mut next = total;
     for i in (0..NB).rev() {
-        match model.parent(i) {
-            Some(p) => cd.o_ic[p] = cd.o_ic[p].combine(&cd.o_ic[i]),
-            None => total = total.combine(&cd.o_ic[i]),
+        let mut ic = cd.o_ic[i];
+        if i + 1 < NB && model.parent(i + 1) == Some(i) {
+            ic = ic.combine(&next);
         }
+        cd.o_ic[i] = ic;
+        match model.parent(i) {
+            Some(p) if p + 1 == i => {}
+            Some(p) => cd.o_ic[p] = cd.o_ic[p].combine(&ic),
+            None => total = total.combine(&ic),
+        }
+        next = ic;
     }
     cd.total = total;
-    let o_m_g = G::from_translation(&total.com());
-    cd.ig = total.act(&o_m_g.inverse());
+    let com = total.com();
+    cd.ig = total.act(&G::from_translation(&com).inverse());
     let t = model.topology();
     for i in 0..NB {
         let joint = model.joint(i);
         let iv = t.idx_v[i];
         for k in 0..t.nv[i] {
-            let o_s = G::act_subspace_column(&data.o_m_i[i], joint, k);
-            cd.ag[iv + k] = o_m_g.act_inv_force(&cd.o_ic[i].mul_motion(&o_s));
+            cd.ag[iv + k] = G::centroidal_column(&data.o_m_i[i], joint, k, &cd.o_ic[i], &com);
         }
     }
 }

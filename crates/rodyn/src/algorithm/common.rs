@@ -244,13 +244,17 @@ pub(crate) fn poses<S: Scalar, const NB: usize, const NQ: usize, const NV: usize
     q: &[S; NQ],
 ) {
     let sin_cos = JointSinCos::at(model, q);
+    let mut previous = <G::Transform<S> as RigidTransform<S>>::IDENTITY;
     for i in 0..NB {
-        pose_step(model, data, i, q, sin_cos.as_ref());
+        previous = pose_step(model, data, i, q, sin_cos.as_ref(), Some(&previous));
     }
 }
 
 /// Body i's `ˡⁱMᵢ` and `ᵒMᵢ` into `data`, its parent's pose already there;
-/// returns `ᵒMᵢ`.
+/// returns `ᵒMᵢ`. `previous`, when given, is body i - 1's pose (anything
+/// at body 0), read instead of `data` when it is the parent: a chain's step then
+/// starts from registers rather than from the pose just stored, which the
+/// processor may not forward to loads laid out otherwise than the stores.
 #[inline(always)]
 pub(crate) fn pose_step<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     model: &Model<S, NB, NQ, NV, G>,
@@ -258,10 +262,17 @@ pub(crate) fn pose_step<S: Scalar, const NB: usize, const NQ: usize, const NV: u
     i: usize,
     q: &[S; NQ],
     sin_cos: Option<&JointSinCos<S, NB>>,
+    previous: Option<&G::Transform<S>>,
 ) -> G::Transform<S> {
     let li_m_i = body_transform_with(model, i, q, sin_cos);
     let o_m_i = match model.parent(i) {
-        Some(p) => data.o_m_i[p].compose(&li_m_i),
+        Some(p) => {
+            let parent = match previous {
+                Some(x) if p + 1 == i => x,
+                _ => &data.o_m_i[p],
+            };
+            G::then_joint(parent, &li_m_i, model.turned_frame(i))
+        }
         None => li_m_i,
     };
     data.li_m_i[i] = li_m_i;

@@ -25,8 +25,8 @@ use crate::error::{Error, Result};
 use crate::frame::Frame;
 use crate::joint::{Joint, JointModel};
 use crate::planar::{Planar, PlanarForce, PlanarMotion, PlanarTransform, Vec2};
-use crate::space::{MotionVector, RigidTransform, Space, VectorOps};
-use crate::spatial::{Force, Motion, Spatial, Transform, Vec3};
+use crate::space::{BodyInertia, MotionVector, RigidTransform, Space, VectorOps};
+use crate::spatial::{Force, Inertia, Motion, Spatial, Transform, Vec3};
 use crate::Scalar;
 
 /// The frame a frame's motion or Jacobian is expressed in (Pinocchio's
@@ -71,6 +71,22 @@ pub trait FrameSpace: Space {
     ) -> Self::Motion<S> {
         x.act_motion(&j.subspace_column(k))
     }
+    /// `ᴳX_o* Iᶜ (x Sₖ)`: column k of joint `j` (its body's pose `x`) moved
+    /// into the world, times `ic` (a world-frame inertia, the composite of
+    /// the joint's subtree) and moved to the frame with the world's axes at
+    /// `g`: a column of the centroidal momentum matrix. This is the book's
+    /// form; a geometry may override it with an equal one that skips
+    /// products with zeros.
+    #[inline(always)]
+    fn centroidal_column<S: Scalar>(
+        x: &Self::Transform<S>,
+        j: &Self::Joint<S>,
+        k: usize,
+        ic: &Self::Inertia<S>,
+        g: &Self::Point<S>,
+    ) -> Self::Force<S> {
+        Self::from_translation(g).act_inv_force(&ic.mul_motion(&Self::act_subspace_column(x, j, k)))
+    }
 }
 
 impl FrameSpace for Spatial {
@@ -110,6 +126,42 @@ impl FrameSpace for Spatial {
                 Motion::new(ang, x.trans.cross(&ang))
             }
             _ => x.act_motion(&j.subspace_column(k)),
+        }
+    }
+    #[inline(always)]
+    fn centroidal_column<S: Scalar>(
+        x: &Transform<S>,
+        j: &Joint<S>,
+        k: usize,
+        ic: &Inertia<S>,
+        g: &Vec3<S>,
+    ) -> Force<S> {
+        // The momentum of the subtree (mass m, centre c, rotational inertia
+        // I_c) moving at the twist (ω, v at the world's origin) about g:
+        // linear m (v - c × ω), angular I_c ω + (c - g) × linear. The
+        // columns of a revolute joint and of a free flyer's rotations are
+        // (a, t × a), a an axis through t, so that v - c × ω = (t - c) × a;
+        // a free flyer's translations (0, a) have no angular momentum about
+        // c.
+        let lever = ic.com - *g;
+        let about_axis = |a: Vec3<S>| {
+            let lin = (x.trans - ic.com).cross(&a) * ic.mass;
+            Force::new(ic.rot_inertia.mul_vec(&a) + lever.cross(&lin), lin)
+        };
+        if let Some(a) = j.revolute_axis_index() {
+            return about_axis(x.rot.column(a));
+        }
+        match j {
+            Joint::FreeFlyer(_) if k < 3 => {
+                let lin = x.rot.column(k) * ic.mass;
+                Force::new(lever.cross(&lin), lin)
+            }
+            Joint::FreeFlyer(_) => about_axis(x.rot.column(k - 3)),
+            _ => {
+                let s = x.act_motion(&j.subspace_column(k));
+                let lin = (s.lin - ic.com.cross(&s.ang)) * ic.mass;
+                Force::new(ic.rot_inertia.mul_vec(&s.ang) + lever.cross(&lin), lin)
+            }
         }
     }
 }
@@ -277,4 +329,50 @@ fn frame_motion<S: Scalar, const NB: usize, const NV: usize, G: FrameSpace>(
 #[inline]
 pub(crate) fn zero_motion<S: Scalar, G: Space>() -> G::Motion<S> {
     <G::Motion<S> as VectorOps<S>>::ZERO
+}
+
+#[cfg(all(test, feature = "std"))]
+mod tests {
+    use super::FrameSpace;
+    use crate::joint::{Axis, Joint, JointModel};
+    use crate::space::{BodyInertia, RigidTransform};
+    use crate::spatial::{Force, Inertia, Mat3, Spatial, Sym3, Transform, Vec3};
+
+    /// The 3-D shortcuts for a joint's world column and its centroidal
+    /// column give the book's forms (`x Sₖ`, `ᴳX_o* Iᶜ x Sₖ`) for every
+    /// joint type and column.
+    #[test]
+    fn shortcuts_give_the_book_forms() {
+        let x = Transform::new(
+            Mat3::from_axis_angle(&Vec3::new(0.36, -0.48, 0.8), 0.9),
+            Vec3::new(0.4, -1.3, 0.7),
+        );
+        let ic = Inertia::new(
+            3.5,
+            Vec3::new(0.2, -0.9, 1.1),
+            Sym3::new(0.4, 0.02, -0.03, 0.5, 0.01, 0.3),
+        );
+        let g = Vec3::new(-0.3, 0.25, 0.6);
+        let joints = [
+            Joint::revolute(Axis::X),
+            Joint::revolute(Axis::Y),
+            Joint::revolute(Axis::Z),
+            Joint::revolute(Axis::Unit(Vec3::new(0.0, 0.6, 0.8))),
+            Joint::prismatic(Axis::Y),
+            Joint::free_flyer(),
+        ];
+        let close = |a: Force<f64>, b: Force<f64>| {
+            let d = a - b;
+            d.ang.norm() + d.lin.norm() <= 1e-14 * (1.0 + b.ang.norm() + b.lin.norm())
+        };
+        for j in &joints {
+            for k in 0..JointModel::<f64, Spatial>::nv(j) {
+                let column = x.act_motion(&j.subspace_column(k));
+                assert_eq!(Spatial::act_subspace_column(&x, j, k), column, "{j:?} {k}");
+                let book = Transform::from_translation(g).act_inv_force(&ic.mul_motion(&column));
+                let fast = Spatial::centroidal_column(&x, j, k, &ic, &g);
+                assert!(close(fast, book), "{j:?} {k}: {fast:?} against {book:?}");
+            }
+        }
+    }
 }

@@ -108,8 +108,9 @@ pub fn joint_jacobians<
     model.check_configuration(q)?;
     let t = model.topology();
     let sin_cos = JointSinCos::at(model, q);
+    let mut o_m_i = <G::Transform<S> as RigidTransform<S>>::IDENTITY;
     for i in 0..NB {
-        let o_m_i = pose_step(model, data, i, q, sin_cos.as_ref());
+        o_m_i = pose_step(model, data, i, q, sin_cos.as_ref(), Some(&o_m_i));
         let joint = model.joint(i);
         let iv = t.idx_v[i];
         for k in 0..t.nv[i] {
@@ -139,7 +140,7 @@ pub(crate) fn joint_jacobians_from_transforms<
     let t = model.topology();
     for i in 0..NB {
         let o_m_i = match t.parents[i] {
-            Some(p) => data.o_m_i[p].compose(&data.li_m_i[i]),
+            Some(p) => G::then_joint(&data.o_m_i[p], &data.li_m_i[i], model.turned_frame(i)),
             None => data.li_m_i[i],
         };
         data.o_m_i[i] = o_m_i;

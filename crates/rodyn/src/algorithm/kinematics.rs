@@ -76,7 +76,7 @@ pub(crate) fn pose_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: u
 ) {
     for i in 0..NB {
         data.o_m_i[i] = match model.parent(i) {
-            Some(p) => data.o_m_i[p].compose(&data.li_m_i[i]),
+            Some(p) => G::then_joint(&data.o_m_i[p], &data.li_m_i[i], model.turned_frame(i)),
             None => data.li_m_i[i],
         };
     }

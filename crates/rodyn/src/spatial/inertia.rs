@@ -92,7 +92,7 @@ impl<S: Scalar> BodyInertia<S> for Inertia<S> {
         let spin = self.rot_inertia.mul_vec(omega);
         Force::new(omega.cross(&spin) + self.com.cross(&lin), lin)
     }
-    #[inline]
+    #[inline(always)]
     fn act(&self, x: &Transform<S>) -> Self {
         Self::new(
             self.mass,
@@ -100,6 +100,7 @@ impl<S: Scalar> BodyInertia<S> for Inertia<S> {
             self.rot_inertia.rotate(&x.rot),
         )
     }
+    #[inline(always)]
     fn combine(&self, o: &Self) -> Self {
         let mass = self.mass + o.mass;
         // A massless pair keeps a zero inertia rather than dividing by zero.

@@ -34,7 +34,7 @@ pub use vec3::Vec3;
 
 use crate::error::ModelProblem;
 use crate::joint::Joint;
-use crate::space::Space;
+use crate::space::{RigidTransform, Space};
 use crate::Scalar;
 
 /// Full 3-D space: 6-D motion and force vectors.
@@ -247,6 +247,25 @@ impl Space for Spatial {
         } else {
             TransformStep::General(parent.then_transform(x))
         }
+    }
+    #[inline(always)]
+    fn then_joint<S: Scalar>(
+        parent: &Transform<S>,
+        x: &Transform<S>,
+        frame: &TurnedFrame,
+    ) -> Transform<S> {
+        // Behind a placement without rotation, a revolute joint about a
+        // coordinate axis turns two of its parent's columns by its angle,
+        // whose cosine and sine are entries of `x`'s rotation: the product
+        // with `x` would only add exact zeros besides.
+        let m = &x.rot.m;
+        let rot = match frame.unturned_axis() {
+            Some(0) => parent.rot.mul_axis_rotation(0, m[2][1], m[1][1]),
+            Some(1) => parent.rot.mul_axis_rotation(1, m[0][2], m[2][2]),
+            Some(_) => parent.rot.mul_axis_rotation(2, m[1][0], m[0][0]),
+            None => return parent.compose(x),
+        };
+        Transform::new(rot, parent.act_point(&x.trans))
     }
     #[inline(always)]
     fn turn_transform<S: Scalar>(turn: &AxisPermutation, x: &Transform<S>) -> Transform<S> {
