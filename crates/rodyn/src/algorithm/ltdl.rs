@@ -606,14 +606,17 @@ pub(crate) fn solve_columns_by_rows<
                 unit
             }
         };
+        // Through `get`: no bounds checks in firmware images.
         let end = topology.last_supported_v[k] + 1;
         let (head, below) = x.split_at_mut(k + 1);
-        for (row_s, l) in below.iter().zip(&h[k][k + 1..end]) {
+        for (row_s, l) in below.iter().zip(h[k].get(k + 1..end).unwrap_or_default()) {
             for (a, y) in acc.iter_mut().zip(row_s) {
                 *a -= *l * *y;
             }
         }
-        head[k] = acc;
+        if let Some(row_k) = head.last_mut() {
+            *row_k = acc;
+        }
     }
     // L X = D⁻¹ Y, root to leaves.
     for s in 0..NV {
@@ -623,13 +626,20 @@ pub(crate) fn solve_columns_by_rows<
         };
         let inverse = S::ONE / h[s][s];
         let mut acc = row_s.map(|v| v * inverse);
-        for (first, end) in supporting_ranges(topology, topology.lambda_v[s]) {
-            for (row_k, h_k) in above[first..=end].iter().zip(&h[first..=end]) {
+        // The coordinates supporting s, a chain of them at a time (as
+        // `supporting_ranges` walks them, but through `get`: no bounds
+        // checks in firmware images).
+        let mut support = topology.lambda_v[s];
+        while let Some(end) = support {
+            let first = topology.chain_start_v.get(end).copied().unwrap_or(end);
+            let (above, h) = (above.get(first..=end), h.get(first..=end));
+            for (row_k, h_k) in above.unwrap_or_default().iter().zip(h.unwrap_or_default()) {
                 let l = h_k[s];
                 for (a, y) in acc.iter_mut().zip(row_k) {
                     *a -= l * *y;
                 }
             }
+            support = topology.lambda_v.get(first).copied().flatten();
         }
         *row_s = acc;
     }

@@ -146,10 +146,9 @@ pub(super) fn forward_dynamics_passes<
     check_finite(tau, Quantity::Torque)?;
     check_external(f_ext.map(|f| &f[..]))?;
     world_pass(model, data, deriv, q, v, &[S::ZERO; NV], f_ext);
+    data.mass_matrix = [[S::ZERO; NV]; NV];
     composite_pass(model, data, deriv);
     check_result(&data.tau, Quantity::Torque)?;
-    data.mass_matrix = [[S::ZERO; NV]; NV];
-    mass_columns_pass(model, data, deriv);
     for (k, armature) in model.armature().iter().enumerate() {
         data.mass_matrix[k][k] += *armature;
     }
@@ -230,7 +229,9 @@ fn world_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: D
 
 /// Leaves to root, the composites alone: `Yᶜ`, `Ẏᶜ`, `Fᶜ` (at the
 /// acceleration of the world pass), `τ` of each body's rows in `data.tau`,
-/// and `df_da = Yᶜ S_c` of its columns.
+/// `df_da = Yᶜ S_c` of its columns, and `M`'s entries in those columns
+/// and the rows of the body and the joints above it, in both triangles
+/// (`M` zero beforehand).
 fn composite_pass<
     S: Scalar,
     const NB: usize,
@@ -245,48 +246,43 @@ fn composite_pass<
     let t = model.topology();
     for j in (0..NB).rev() {
         let (y, f) = (deriv.o_yc[j], deriv.o_fc[j]);
+        // Through `get`: no bounds checks in firmware images.
         for c in t.idx_v[j]..t.idx_v[j] + t.nv[j] {
-            data.tau[c] = deriv.s[c].dot(&f);
-            deriv.df_da[c] = y.mul_motion(&deriv.s[c]);
+            let (Some(s_c), Some(tau_c), Some(df_da_c)) =
+                (deriv.s.get(c), data.tau.get_mut(c), deriv.df_da.get_mut(c))
+            else {
+                continue;
+            };
+            *tau_c = s_c.dot(&f);
+            let df_da = y.mul_motion(s_c);
+            *df_da_c = df_da;
+            let mut row_body = Some(j);
+            while let Some(i) = row_body {
+                let first = t.idx_v.get(i).copied().unwrap_or(0);
+                for r in first..first + t.nv.get(i).copied().unwrap_or(0) {
+                    let m = deriv.s.get(r).map_or(S::ZERO, |s_r| s_r.dot(&df_da));
+                    let mass = &mut data.mass_matrix;
+                    if let Some(m_rc) = mass.get_mut(r).and_then(|row| row.get_mut(c)) {
+                        *m_rc = m;
+                    }
+                    if let Some(m_cr) = mass.get_mut(c).and_then(|row| row.get_mut(r)) {
+                        *m_cr = m;
+                    }
+                }
+                row_body = model.parent(i);
+            }
         }
         if let Some(p) = model.parent(j) {
             let dy = deriv.o_dyc[j];
-            deriv.o_yc[p] = deriv.o_yc[p].combine(&y);
-            deriv.o_dyc[p].add_assign(&dy);
-            deriv.o_fc[p] += f;
-        }
-    }
-}
-
-/// `M`'s entries from `df_da`: for every column c (of body i) the rows of
-/// i and of the joints above it, then its other triangle.
-fn mass_columns_pass<
-    S: Scalar,
-    const NB: usize,
-    const NQ: usize,
-    const NV: usize,
-    G: DerivativeSpace,
->(
-    model: &Model<S, NB, NQ, NV, G>,
-    data: &mut Data<S, NB, NV, G>,
-    deriv: &DerivativeData<S, NB, NV, G>,
-) {
-    let t = model.topology();
-    for i in 0..NB {
-        for c in t.idx_v[i]..t.idx_v[i] + t.nv[i] {
-            let df_da = deriv.df_da[c];
-            let mut row_body = Some(i);
-            while let Some(j) = row_body {
-                for r in t.idx_v[j]..t.idx_v[j] + t.nv[j] {
-                    data.mass_matrix[r][c] = deriv.s[r].dot(&df_da);
-                }
-                row_body = model.parent(j);
+            if let (Some(y_p), Some(dy_p), Some(f_p)) = (
+                deriv.o_yc.get_mut(p),
+                deriv.o_dyc.get_mut(p),
+                deriv.o_fc.get_mut(p),
+            ) {
+                *y_p = y_p.combine(&y);
+                dy_p.add_assign(&dy);
+                *f_p += f;
             }
-        }
-    }
-    for r in 0..NV {
-        for c in 0..r {
-            data.mass_matrix[r][c] = data.mass_matrix[c][r];
         }
     }
 }
@@ -309,16 +305,21 @@ fn acceleration_pass<
     ddq: &[S; NV],
 ) {
     let t = model.topology();
+    let zero = <G::Motion<S> as VectorOps<S>>::ZERO;
     for i in 0..NB {
-        let da_parent = match model.parent(i) {
-            Some(p) => deriv.o_a[p],
-            None => <G::Motion<S> as VectorOps<S>>::ZERO,
-        };
+        let da_parent = model
+            .parent(i)
+            .and_then(|p| deriv.o_a.get(p))
+            .map_or(zero, |a| *a);
         let mut da = da_parent;
-        for c in t.idx_v[i]..t.idx_v[i] + t.nv[i] {
-            let s = deriv.s[c];
-            deriv.da_dq[c] += da_parent.cross_motion(&s);
-            da += s * ddq[c];
+        // Through `get`: no bounds checks in firmware images.
+        let columns = t.idx_v[i]..t.idx_v[i] + t.nv[i];
+        let da_dq = deriv.da_dq.get_mut(columns.clone()).unwrap_or_default();
+        let s = deriv.s.get(columns.clone()).unwrap_or_default();
+        let ddq = ddq.get(columns).unwrap_or_default();
+        for ((da_dq, s), ddq) in da_dq.iter_mut().zip(s).zip(ddq) {
+            *da_dq += da_parent.cross_motion(s);
+            da += *s * *ddq;
         }
         deriv.o_a[i] = da;
         data.pa[i] = <G::Force<S> as VectorOps<S>>::ZERO;
@@ -359,11 +360,13 @@ fn backward_pass<
         } else {
             let mut below = data.pa[j];
             deriv.o_fc[j] += y.mul_motion(&deriv.o_a[j]) + below;
-            for c in columns.clone() {
-                below += deriv.df_da[c] * ddq[c];
+            let df_da = deriv.df_da.get(columns.clone()).unwrap_or_default();
+            let ddq = ddq.get(columns.clone()).unwrap_or_default();
+            for (df_da, ddq) in df_da.iter().zip(ddq) {
+                below += *df_da * *ddq;
             }
-            if let Some(p) = model.parent(j) {
-                data.pa[p] += below;
+            if let Some(pa) = model.parent(j).and_then(|p| data.pa.get_mut(p)) {
+                *pa += below;
             }
         }
         for c in columns.clone() {
@@ -417,7 +420,13 @@ fn subtree_columns_pass<
     let t = model.topology();
     for i in 0..NB {
         for c in t.idx_v[i]..t.idx_v[i] + t.nv[i] {
-            let (df_dq, df_dv, df_da) = (deriv.df_dq[c], deriv.df_dv[c], deriv.df_da[c]);
+            // Through `get`: no bounds checks in firmware images.
+            let (Some(df_dq), Some(df_dv), Some(df_da)) =
+                (deriv.df_dq.get(c), deriv.df_dv.get(c), deriv.df_da.get(c))
+            else {
+                continue;
+            };
+            let (df_dq, df_dv, df_da) = (*df_dq, *df_dv, *df_da);
             let df_dq_above = df_dq + deriv.s[c].cross_force(&deriv.o_fc[i]);
             let mut row_body = Some(i);
             while let Some(j) = row_body {
