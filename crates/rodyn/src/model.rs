@@ -669,9 +669,6 @@ fn all_finite<S: Scalar>(x: &[S]) -> bool {
 
 /// Returns an error naming the first non-finite entry of `x`.
 pub(crate) fn check_finite<S: Scalar>(x: &[S], quantity: Quantity) -> Result<()> {
-    if all_finite(x) {
-        return Ok(());
-    }
     match x.iter().position(|v| !v.is_finite()) {
         Some(index) => Err(Error::NonFinite { quantity, index }),
         None => Ok(()),
@@ -681,11 +678,19 @@ pub(crate) fn check_finite<S: Scalar>(x: &[S], quantity: Quantity) -> Result<()>
 /// Returns an error naming the first non-finite entry of a result `x`
 /// computed from finite inputs: the inputs overflowed the scalar type.
 pub(crate) fn check_result<S: Scalar>(x: &[S], quantity: Quantity) -> Result<()> {
-    if all_finite(x) {
-        return Ok(());
-    }
     match x.iter().position(|v| !v.is_finite()) {
         Some(index) => Err(Error::NonFiniteResult { quantity, index }),
         None => Ok(()),
     }
+}
+
+/// [`check_result`] for large results (the derivative matrices): the
+/// vectorised test first, the search for the entry to name only on
+/// failure. Its own function so that images that check only short
+/// vectors do not grow.
+pub(crate) fn check_matrix_result<S: Scalar>(x: &[S], quantity: Quantity) -> Result<()> {
+    if all_finite(x) {
+        return Ok(());
+    }
+    check_result(x, quantity)
 }

@@ -15,7 +15,7 @@ use crate::algorithm::aba::aba;
 use crate::algorithm::ltdl::{ltdl_factor, ltdl_solve_columns, solve_columns_by_rows};
 use crate::data::Data;
 use crate::error::{Quantity, Result};
-use crate::model::{check_result, Model};
+use crate::model::{check_matrix_result, Model};
 use crate::Scalar;
 
 /// Forward dynamics and its derivatives at `(q, v, τ)`: `q̈` in
@@ -102,9 +102,9 @@ fn minv_and_products<
         Some((minus, &deriv.dtau_dv)),
         &mut deriv.ddq_dv,
     );
-    check_result(deriv.ddq_dq.as_flattened(), Quantity::Derivative)?;
-    check_result(deriv.ddq_dv.as_flattened(), Quantity::Derivative)?;
-    check_result(deriv.minv.as_flattened(), Quantity::Derivative)
+    check_matrix_result(deriv.ddq_dq.as_flattened(), Quantity::Derivative)?;
+    check_matrix_result(deriv.ddq_dv.as_flattened(), Quantity::Derivative)?;
+    check_matrix_result(deriv.minv.as_flattened(), Quantity::Derivative)
 }
 
 /// `M⁻¹` and the two products as three plain solves of NV columns
@@ -134,9 +134,9 @@ fn minv_and_products_by_solves<
         }
         ltdl_solve_columns(model, data, out)?;
     }
-    check_result(deriv.ddq_dq.as_flattened(), Quantity::Derivative)?;
-    check_result(deriv.ddq_dv.as_flattened(), Quantity::Derivative)?;
-    check_result(deriv.minv.as_flattened(), Quantity::Derivative)
+    check_matrix_result(deriv.ddq_dq.as_flattened(), Quantity::Derivative)?;
+    check_matrix_result(deriv.ddq_dv.as_flattened(), Quantity::Derivative)?;
+    check_matrix_result(deriv.minv.as_flattened(), Quantity::Derivative)
 }
 
 /// [`aba_derivatives`] in its plain form, the oracle of the tuned one:

@@ -27,7 +27,7 @@ use crate::algorithm::common::{check_external, check_state, pose_step, JointSinC
 use crate::algorithm::ltdl::{ltdl_factor, ltdl_solve};
 use crate::data::Data;
 use crate::error::{Quantity, Result};
-use crate::model::{check_finite, check_result, Model};
+use crate::model::{check_finite, check_matrix_result, check_result, Model};
 use crate::space::{BodyInertia, MotionVector, RigidTransform, VectorOps};
 use crate::Scalar;
 
@@ -101,9 +101,9 @@ pub fn rnea_derivatives<
         data.tau[k] += *armature * a[k];
     }
     check_result(&data.tau, Quantity::Torque)?;
-    check_result(deriv.dtau_dq.as_flattened(), Quantity::Derivative)?;
-    check_result(deriv.dtau_dv.as_flattened(), Quantity::Derivative)?;
-    check_result(data.mass_matrix.as_flattened(), Quantity::MassMatrix)
+    check_matrix_result(deriv.dtau_dq.as_flattened(), Quantity::Derivative)?;
+    check_matrix_result(deriv.dtau_dv.as_flattened(), Quantity::Derivative)?;
+    check_matrix_result(data.mass_matrix.as_flattened(), Quantity::MassMatrix)
 }
 
 /// The passes of [`rnea_derivatives`] solved for the acceleration, for
@@ -152,7 +152,7 @@ pub(super) fn forward_dynamics_passes<
     for (k, armature) in model.armature().iter().enumerate() {
         data.mass_matrix[k][k] += *armature;
     }
-    check_result(data.mass_matrix.as_flattened(), Quantity::MassMatrix)?;
+    check_matrix_result(data.mass_matrix.as_flattened(), Quantity::MassMatrix)?;
     ltdl_factor(model, data)?;
     let mut ddq: [S; NV] = core::array::from_fn(|k| tau[k] - data.tau[k]);
     ltdl_solve(model, data, &mut ddq)?;
