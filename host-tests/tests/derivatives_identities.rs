@@ -9,7 +9,9 @@
 //! increments). Tolerances: `‖x − y‖∞ ≤ tol · max(1, ‖y‖∞)` per matrix.
 
 use rodyn::algorithm::aba::aba;
-use rodyn::algorithm::derivatives::{aba_derivatives, rnea_derivatives, DerivativeData};
+use rodyn::algorithm::derivatives::{
+    aba_derivatives, aba_derivatives_by_solves, rnea_derivatives, DerivativeData,
+};
 use rodyn::algorithm::rnea::rnea;
 use rodyn::planar::Planar;
 use rodyn::prelude::*;
@@ -173,6 +175,36 @@ fn check_model<const NB: usize, const NQ: usize, const NV: usize>(
         let [dq, dv, _] = central_differences(Dynamics::Forward, model, point, 1e-6);
         assert_close(&ctx("dq vs central differences"), &deriv.ddq_dq, &dq, 1e-6);
         assert_close(&ctx("dv vs central differences"), &deriv.ddq_dv, &dv, 1e-6);
+
+        // The tuned path (q̈ from the derivative passes, rows solved in
+        // registers) against the plain one (ABA, RNEA's derivatives, plain
+        // multi-column solves).
+        let (tuned, ddq) = (deriv.clone(), data.ddq);
+        aba_derivatives_by_solves(model, &mut data, &mut deriv, &q, &v, &tau, Some(&f_ext))
+            .unwrap();
+        let scale = data.ddq.iter().fold(1.0f64, |m, x| m.max(x.abs()));
+        for (x, y) in ddq.iter().zip(&data.ddq) {
+            assert!(
+                (x - y).abs() <= 1e-12 * scale,
+                "{what}: q̈ {ddq:?} against {:?}",
+                data.ddq
+            );
+        }
+        assert_close(&ctx("dq vs plain"), &tuned.ddq_dq, &deriv.ddq_dq, 1e-12);
+        assert_close(&ctx("dv vs plain"), &tuned.ddq_dv, &deriv.ddq_dv, 1e-12);
+        assert_close(&ctx("M⁻¹ vs plain"), &tuned.minv, &deriv.minv, 1e-12);
+        assert_close(
+            &ctx("RNEA dq vs plain"),
+            &tuned.dtau_dq,
+            &deriv.dtau_dq,
+            1e-12,
+        );
+        assert_close(
+            &ctx("RNEA dv vs plain"),
+            &tuned.dtau_dv,
+            &deriv.dtau_dv,
+            1e-12,
+        );
     }
 }
 

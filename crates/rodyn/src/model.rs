@@ -645,6 +645,29 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
     }
 }
 
+/// Whether every entry of `x` is finite: `v − v` is zero for a finite `v`
+/// and NaN otherwise, and a sum of zeros cannot overflow, so the sum of
+/// the differences is finite exactly when every entry is. Four partial
+/// sums and no early exit, so that the test of a whole matrix runs in
+/// vector lanes; the search for the entry to name runs only on failure.
+// `v − v` is the point: it is not zero for an infinite or NaN `v`.
+#[allow(clippy::eq_op)]
+#[inline]
+fn all_finite<S: Scalar>(x: &[S]) -> bool {
+    let chunks = x.chunks_exact(4);
+    let rest = chunks.remainder();
+    let mut sums = [S::ZERO; 4];
+    for chunk in chunks {
+        for (sum, v) in sums.iter_mut().zip(chunk) {
+            *sum += *v - *v;
+        }
+    }
+    for (sum, v) in sums.iter_mut().zip(rest) {
+        *sum += *v - *v;
+    }
+    ((sums[0] + sums[1]) + (sums[2] + sums[3])).is_finite()
+}
+
 /// Returns an error naming the first non-finite entry of `x`.
 pub(crate) fn check_finite<S: Scalar>(x: &[S], quantity: Quantity) -> Result<()> {
     match x.iter().position(|v| !v.is_finite()) {
@@ -660,4 +683,15 @@ pub(crate) fn check_result<S: Scalar>(x: &[S], quantity: Quantity) -> Result<()>
         Some(index) => Err(Error::NonFiniteResult { quantity, index }),
         None => Ok(()),
     }
+}
+
+/// [`check_result`] for large results (the derivative matrices): the
+/// vectorised test first, the search for the entry to name only on
+/// failure. Its own function so that images that check only short
+/// vectors do not grow.
+pub(crate) fn check_matrix_result<S: Scalar>(x: &[S], quantity: Quantity) -> Result<()> {
+    if all_finite(x) {
+        return Ok(());
+    }
+    check_result(x, quantity)
 }

@@ -564,6 +564,85 @@ pub fn ltdl_solve_columns<
     check_result(b.as_flattened(), Quantity::Acceleration)
 }
 
+/// `X = M⁻¹ B` from the factors, `B` given as `sign · b` or, without `b`,
+/// the identity (then `X = M⁻¹`, and `C` must be `NV`); no checks of the
+/// input or the result (for callers whose inputs are finite by
+/// construction and who check what they return).
+///
+/// Each sweep forms one row of `X` at a time as a combination of rows
+/// already final (`Y_k = B_k − Σ L[s][k] Y_s` over the s that k supports,
+/// then `X_s = D⁻¹[s] Y_s − Σ L[s][k] X_k` over the k supporting s), the
+/// row accumulated in a local copy: a row of a small model then stays in
+/// registers across the combination instead of being loaded and stored
+/// once per term, as [`ltdl_solve_columns`] does. The second sweep reads
+/// only entries of `L` the sparsity keeps and the first reads zeros where
+/// it has none, so this holds for any tree numbering.
+pub(crate) fn solve_columns_by_rows<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    const C: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &Data<S, NB, NV, G>,
+    b: Option<(S, &[[S; C]; NV])>,
+    x: &mut [[S; C]; NV],
+) {
+    let topology = model.topology();
+    let h = &data.ltdl;
+    // Lᵀ Y = B, leaves to root.
+    for k in (0..NV).rev() {
+        let mut acc = match b {
+            Some((sign, b)) => b[k].map(|v| sign * v),
+            None => {
+                let mut unit = [S::ZERO; C];
+                if let Some(one) = unit.get_mut(k) {
+                    *one = S::ONE;
+                }
+                unit
+            }
+        };
+        // Through `get`: no bounds checks in firmware images.
+        let end = topology.last_supported_v[k] + 1;
+        let (head, below) = x.split_at_mut(k + 1);
+        for (row_s, l) in below.iter().zip(h[k].get(k + 1..end).unwrap_or_default()) {
+            for (a, y) in acc.iter_mut().zip(row_s) {
+                *a -= *l * *y;
+            }
+        }
+        if let Some(row_k) = head.last_mut() {
+            *row_k = acc;
+        }
+    }
+    // L X = D⁻¹ Y, root to leaves.
+    for s in 0..NV {
+        let (above, from_s) = x.split_at_mut(s);
+        let Some(row_s) = from_s.first_mut() else {
+            break;
+        };
+        let inverse = S::ONE / h[s][s];
+        let mut acc = row_s.map(|v| v * inverse);
+        // The coordinates supporting s, a chain of them at a time (as
+        // `supporting_ranges` walks them, but through `get`: no bounds
+        // checks in firmware images).
+        let mut support = topology.lambda_v[s];
+        while let Some(end) = support {
+            let first = topology.chain_start_v.get(end).copied().unwrap_or(end);
+            let (above, h) = (above.get(first..=end), h.get(first..=end));
+            for (row_k, h_k) in above.unwrap_or_default().iter().zip(h.unwrap_or_default()) {
+                let l = h_k[s];
+                for (a, y) in acc.iter_mut().zip(row_k) {
+                    *a -= l * *y;
+                }
+            }
+            support = topology.lambda_v.get(first).copied().flatten();
+        }
+        *row_s = acc;
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -2,28 +2,36 @@
 //!
 //! Forward dynamics solves `τ = ID(q, v, q̈)` for q̈, so differentiating
 //! that identity gives `∂q̈/∂x = −M⁻¹ ∂ID/∂x` at `q̈ = FD(q, v, τ)`
-//! (Carpentier & Mansard 2018, §IV). `M⁻¹` and the two products come from
-//! the branch-aware `Lᵀ D L` factorisation, each one solve of NV columns.
+//! (Carpentier & Mansard 2018, §IV). [`aba_derivatives`] takes `q̈` itself
+//! from the same passes and factorisation (inverse dynamics is affine in
+//! `q̈`, see `inverse_dynamics::forward_dynamics_passes`) instead of an
+//! articulated-body pass; [`aba_derivatives_by_solves`] is the plain form,
+//! ABA then RNEA's derivatives at its result, kept as its oracle. `M⁻¹`
+//! and the two products come from the branch-aware `Lᵀ D L` factorisation.
 
+use super::inverse_dynamics::forward_dynamics_passes;
 use super::{rnea_derivatives, DerivativeData, DerivativeSpace};
 use crate::algorithm::aba::aba;
-use crate::algorithm::ltdl::{ltdl_factor, ltdl_solve_columns};
+use crate::algorithm::ltdl::{ltdl_factor, ltdl_solve_columns, solve_columns_by_rows};
 use crate::data::Data;
 use crate::error::{Quantity, Result};
-use crate::model::{check_result, Model};
+use crate::model::{check_matrix_result, Model};
 use crate::Scalar;
 
 /// Forward dynamics and its derivatives at `(q, v, τ)`: `q̈` in
 /// `data.ddq`, `∂q̈/∂q` in `deriv.ddq_dq`, `∂q̈/∂v` in `deriv.ddq_dv` and
 /// `∂q̈/∂τ = M⁻¹` in `deriv.minv` (both triangles).
 ///
-/// External forces as for [`aba`]. Runs [`aba`] and
-/// [`rnea_derivatives`] at the result, then factors `M`: leaves valid
-/// `deriv.dtau_dq` and `deriv.dtau_dv` at `(q, v, q̈)`, `data.mass_matrix`
-/// and `data.ltdl`.
+/// External forces as for [`aba`]. Runs the passes of
+/// [`rnea_derivatives`] once, at `q̈ = 0`, takes `q̈ = M⁻¹ (τ − ID(q, v, 0))`
+/// from the factors of the `M` they give, and brings what depends on the
+/// acceleration to it: leaves valid `deriv.dtau_dq` and `deriv.dtau_dv` at
+/// `(q, v, q̈)`, `data.tau` (`τ`), `data.mass_matrix` and `data.ltdl`
+/// (`data.pa` is used as workspace).
 ///
 /// # Errors
-/// As [`aba`] and [`rnea_derivatives`];
+/// As [`aba`] (with a `τ` that overflows the bias forces as a non-finite
+/// result) and [`rnea_derivatives`];
 /// [`Error::MassMatrixNotPositiveDefinite`](crate::Error::MassMatrixNotPositiveDefinite)
 /// from the factorisation.
 ///
@@ -62,10 +70,56 @@ pub fn aba_derivatives<
     tau: &[S; NV],
     f_ext: Option<&[G::Force<S>; NB]>,
 ) -> Result<()> {
-    let ddq = *aba(model, data, q, v, tau, f_ext)?;
-    rnea_derivatives(model, data, deriv, q, v, &ddq, f_ext)?;
-    ltdl_factor(model, data)?;
-    // M⁻¹ = M⁻¹ I, and ∂q̈/∂x = M⁻¹ (−∂τ/∂x): three solves of NV columns.
+    forward_dynamics_passes(model, data, deriv, q, v, tau, f_ext)?;
+    minv_and_products(model, data, deriv)
+}
+
+/// `M⁻¹` and `∂q̈/∂x = −M⁻¹ ∂τ/∂x` from the factors in `data.ltdl`: three
+/// solves of NV columns, each row formed once in registers
+/// ([`solve_columns_by_rows`]), reading `∂τ/∂x` in place.
+fn minv_and_products<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: DerivativeSpace,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &Data<S, NB, NV, G>,
+    deriv: &mut DerivativeData<S, NB, NV, G>,
+) -> Result<()> {
+    solve_columns_by_rows(model, data, None, &mut deriv.minv);
+    let minus = -S::ONE;
+    solve_columns_by_rows(
+        model,
+        data,
+        Some((minus, &deriv.dtau_dq)),
+        &mut deriv.ddq_dq,
+    );
+    solve_columns_by_rows(
+        model,
+        data,
+        Some((minus, &deriv.dtau_dv)),
+        &mut deriv.ddq_dv,
+    );
+    check_matrix_result(deriv.ddq_dq.as_flattened(), Quantity::Derivative)?;
+    check_matrix_result(deriv.ddq_dv.as_flattened(), Quantity::Derivative)?;
+    check_matrix_result(deriv.minv.as_flattened(), Quantity::Derivative)
+}
+
+/// `M⁻¹` and the two products as three plain solves of NV columns
+/// ([`ltdl_solve_columns`]), for [`aba_derivatives_by_solves`].
+fn minv_and_products_by_solves<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: DerivativeSpace,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &Data<S, NB, NV, G>,
+    deriv: &mut DerivativeData<S, NB, NV, G>,
+) -> Result<()> {
     for (r, row) in deriv.minv.iter_mut().enumerate() {
         *row = [S::ZERO; NV];
         row[r] = S::ONE;
@@ -80,8 +134,38 @@ pub fn aba_derivatives<
         }
         ltdl_solve_columns(model, data, out)?;
     }
+    check_matrix_result(deriv.ddq_dq.as_flattened(), Quantity::Derivative)?;
+    check_matrix_result(deriv.ddq_dv.as_flattened(), Quantity::Derivative)?;
+    check_matrix_result(deriv.minv.as_flattened(), Quantity::Derivative)
+}
+
+/// [`aba_derivatives`] in its plain form, the oracle of the tuned one:
+/// [`aba`] for `q̈`, [`rnea_derivatives`] at its result, the factors of
+/// its `M`, then `M⁻¹` and the two products by three `Lᵀ D L` solves of
+/// NV columns ([`ltdl_solve_columns`]). Same results as [`aba_derivatives`] up to rounding; leaves what
+/// [`aba`] and [`rnea_derivatives`] leave.
+///
+/// # Errors
+/// As [`aba_derivatives`].
+#[allow(clippy::too_many_arguments)]
+pub fn aba_derivatives_by_solves<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: DerivativeSpace,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    deriv: &mut DerivativeData<S, NB, NV, G>,
+    q: &[S; NQ],
+    v: &[S; NV],
+    tau: &[S; NV],
+    f_ext: Option<&[G::Force<S>; NB]>,
+) -> Result<()> {
+    let ddq = *aba(model, data, q, v, tau, f_ext)?;
+    rnea_derivatives(model, data, deriv, q, v, &ddq, f_ext)?;
+    ltdl_factor(model, data)?;
     data.ddq = ddq;
-    check_result(deriv.ddq_dq.as_flattened(), Quantity::Derivative)?;
-    check_result(deriv.ddq_dv.as_flattened(), Quantity::Derivative)?;
-    check_result(deriv.minv.as_flattened(), Quantity::Derivative)
+    minv_and_products_by_solves(model, data, deriv)
 }

@@ -24,9 +24,10 @@
 
 use super::{DerivativeData, DerivativeSpace, VariationMap};
 use crate::algorithm::common::{check_external, check_state, pose_step, JointSinCos};
+use crate::algorithm::ltdl::{ltdl_factor, ltdl_solve};
 use crate::data::Data;
 use crate::error::{Quantity, Result};
-use crate::model::{check_finite, check_result, Model};
+use crate::model::{check_finite, check_matrix_result, check_result, Model};
 use crate::space::{BodyInertia, MotionVector, RigidTransform, VectorOps};
 use crate::Scalar;
 
@@ -92,17 +93,80 @@ pub fn rnea_derivatives<
         *row = [S::ZERO; NV];
     }
     data.mass_matrix = [[S::ZERO; NV]; NV];
-    backward_pass(model, data, deriv);
-    subtree_columns_pass(model, data, deriv);
+    backward_pass::<S, NB, NQ, NV, G, true>(model, data, deriv, &[S::ZERO; NV]);
+    subtree_columns_pass::<S, NB, NQ, NV, G, true>(model, data, deriv);
     // Rotor inertias act on the joint coordinates alone.
     for (k, armature) in model.armature().iter().enumerate() {
         data.mass_matrix[k][k] += *armature;
         data.tau[k] += *armature * a[k];
     }
     check_result(&data.tau, Quantity::Torque)?;
-    check_result(deriv.dtau_dq.as_flattened(), Quantity::Derivative)?;
-    check_result(deriv.dtau_dv.as_flattened(), Quantity::Derivative)?;
-    check_result(data.mass_matrix.as_flattened(), Quantity::MassMatrix)
+    check_matrix_result(deriv.dtau_dq.as_flattened(), Quantity::Derivative)?;
+    check_matrix_result(deriv.dtau_dv.as_flattened(), Quantity::Derivative)?;
+    check_matrix_result(data.mass_matrix.as_flattened(), Quantity::MassMatrix)
+}
+
+/// The passes of [`rnea_derivatives`] solved for the acceleration, for
+/// [`aba_derivatives`](super::aba_derivatives): `q̈ = FD(q, v, τ)` in
+/// `data.ddq` and, at `(q, v, q̈)`, `deriv.dtau_dq`, `deriv.dtau_dv`, `M`
+/// (both triangles) and its factors in `data.ltdl`; `data.tau = τ`.
+///
+/// Inverse dynamics is affine in the acceleration, `ID(q, v, q̈) = τ₀ + M
+/// q̈`, and so is everything the derivative passes read (Carpentier &
+/// Mansard 2018, §IV: forward dynamics' derivatives are inverse dynamics'
+/// at `q̈ = FD(q, v, τ)`). So the world pass runs once, at `q̈ = 0`; the
+/// composites give `τ₀ = ID(q, v, 0)` and `M`, whose `Lᵀ D L` factors
+/// (needed for `M⁻¹` anyway) give `q̈ = M⁻¹ (τ − τ₀)`; then what depends
+/// on the acceleration is brought to `q̈`: each body's acceleration by
+/// `Δaᵢ = Δa_λ + Σ S_c q̈_c`, `∂a/∂q_c` by `Δa_λ × S_c`, and each
+/// composite force by `Σ Y_b Δa_b` over its subtree, which is `Yᶜᵢ Δaᵢ`
+/// plus `Yᶜ_b S_b q̈_b` over the bodies b below i. No articulated-body
+/// pass, and the kinematics are formed once.
+///
+/// # Errors
+/// As [`rnea_derivatives`] (`τ` checked as a torque) and the
+/// factorisation's [`Error::MassMatrixNotPositiveDefinite`](crate::Error::MassMatrixNotPositiveDefinite).
+#[allow(clippy::too_many_arguments)]
+pub(super) fn forward_dynamics_passes<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: DerivativeSpace,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    deriv: &mut DerivativeData<S, NB, NV, G>,
+    q: &[S; NQ],
+    v: &[S; NV],
+    tau: &[S; NV],
+    f_ext: Option<&[G::Force<S>; NB]>,
+) -> Result<()> {
+    check_state(model, q, Some(v))?;
+    check_finite(tau, Quantity::Torque)?;
+    check_external(f_ext.map(|f| &f[..]))?;
+    world_pass(model, data, deriv, q, v, &[S::ZERO; NV], f_ext);
+    data.mass_matrix = [[S::ZERO; NV]; NV];
+    composite_pass(model, data, deriv);
+    check_result(&data.tau, Quantity::Torque)?;
+    for (k, armature) in model.armature().iter().enumerate() {
+        data.mass_matrix[k][k] += *armature;
+    }
+    check_matrix_result(data.mass_matrix.as_flattened(), Quantity::MassMatrix)?;
+    ltdl_factor(model, data)?;
+    let mut ddq: [S; NV] = core::array::from_fn(|k| tau[k] - data.tau[k]);
+    ltdl_solve(model, data, &mut ddq)?;
+    acceleration_pass(model, data, deriv, &ddq);
+    for row in deriv.dtau_dq.iter_mut().chain(deriv.dtau_dv.iter_mut()) {
+        *row = [S::ZERO; NV];
+    }
+    backward_pass::<S, NB, NQ, NV, G, false>(model, data, deriv, &ddq);
+    subtree_columns_pass::<S, NB, NQ, NV, G, false>(model, data, deriv);
+    data.ddq = ddq;
+    data.tau = *tau;
+    // `∂τ/∂(q, v)` are not checked here: a non-finite entry would make the
+    // products `M⁻¹ ∂τ/∂x` that the caller checks non-finite too.
+    Ok(())
 }
 
 /// Root to leaves, RNEA's forward pass in the world frame: body poses
@@ -163,10 +227,12 @@ fn world_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: D
     }
 }
 
-/// Leaves to root, with body j's composites complete: `τ` of j's rows, the
-/// force derivatives of j's own columns, and the entries of j's rows in
-/// the columns of the joints above it.
-fn backward_pass<
+/// Leaves to root, the composites alone: `Yᶜ`, `Ẏᶜ`, `Fᶜ` (at the
+/// acceleration of the world pass), `τ` of each body's rows in `data.tau`,
+/// `df_da = Yᶜ S_c` of its columns, and `M`'s entries in those columns
+/// and the rows of the body and the joints above it, in both triangles
+/// (`M` zero beforehand).
+fn composite_pass<
     S: Scalar,
     const NB: usize,
     const NQ: usize,
@@ -179,15 +245,136 @@ fn backward_pass<
 ) {
     let t = model.topology();
     for j in (0..NB).rev() {
-        let (y, dy, f) = (deriv.o_yc[j], deriv.o_dyc[j], deriv.o_fc[j]);
+        let (y, f) = (deriv.o_yc[j], deriv.o_fc[j]);
+        // Through `get`: no bounds checks in firmware images.
+        for c in t.idx_v[j]..t.idx_v[j] + t.nv[j] {
+            let (Some(s_c), Some(tau_c), Some(df_da_c)) =
+                (deriv.s.get(c), data.tau.get_mut(c), deriv.df_da.get_mut(c))
+            else {
+                continue;
+            };
+            *tau_c = s_c.dot(&f);
+            let df_da = y.mul_motion(s_c);
+            *df_da_c = df_da;
+            let mut row_body = Some(j);
+            while let Some(i) = row_body {
+                let first = t.idx_v.get(i).copied().unwrap_or(0);
+                for r in first..first + t.nv.get(i).copied().unwrap_or(0) {
+                    let m = deriv.s.get(r).map_or(S::ZERO, |s_r| s_r.dot(&df_da));
+                    let mass = &mut data.mass_matrix;
+                    if let Some(m_rc) = mass.get_mut(r).and_then(|row| row.get_mut(c)) {
+                        *m_rc = m;
+                    }
+                    if let Some(m_cr) = mass.get_mut(c).and_then(|row| row.get_mut(r)) {
+                        *m_cr = m;
+                    }
+                }
+                row_body = model.parent(i);
+            }
+        }
+        if let Some(p) = model.parent(j) {
+            let dy = deriv.o_dyc[j];
+            if let (Some(y_p), Some(dy_p), Some(f_p)) = (
+                deriv.o_yc.get_mut(p),
+                deriv.o_dyc.get_mut(p),
+                deriv.o_fc.get_mut(p),
+            ) {
+                *y_p = y_p.combine(&y);
+                dy_p.add_assign(&dy);
+                *f_p += f;
+            }
+        }
+    }
+}
+
+/// Root to leaves, the world pass's accelerations brought from `q̈ = 0` to
+/// `q̈`: `Δaᵢ = Δa_λ + Σ S_c q̈_c` (kept in `deriv.o_a`, which no later
+/// pass reads as an acceleration) and `∂a/∂q_c += Δa_λ × S_c`; clears
+/// `data.pa`, where [`backward_pass`] gathers each subtree's
+/// `Σ Yᶜ_b S_b q̈_b`.
+fn acceleration_pass<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: DerivativeSpace,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    deriv: &mut DerivativeData<S, NB, NV, G>,
+    ddq: &[S; NV],
+) {
+    let t = model.topology();
+    let zero = <G::Motion<S> as VectorOps<S>>::ZERO;
+    for i in 0..NB {
+        let da_parent = model
+            .parent(i)
+            .and_then(|p| deriv.o_a.get(p))
+            .map_or(zero, |a| *a);
+        let mut da = da_parent;
+        // Through `get`: no bounds checks in firmware images.
+        let columns = t.idx_v[i]..t.idx_v[i] + t.nv[i];
+        let da_dq = deriv.da_dq.get_mut(columns.clone()).unwrap_or_default();
+        let s = deriv.s.get(columns.clone()).unwrap_or_default();
+        let ddq = ddq.get(columns).unwrap_or_default();
+        for ((da_dq, s), ddq) in da_dq.iter_mut().zip(s).zip(ddq) {
+            *da_dq += da_parent.cross_motion(s);
+            da += *s * *ddq;
+        }
+        deriv.o_a[i] = da;
+        data.pa[i] = <G::Force<S> as VectorOps<S>>::ZERO;
+    }
+}
+
+/// Leaves to root, with body j's composites complete: `τ` of j's rows, the
+/// force derivatives of j's own columns, and the entries of j's rows in
+/// the columns of the joints above it.
+///
+/// `COMPOSE`: the composites are summed here (inverse dynamics). Without
+/// it ([`forward_dynamics_passes`]) [`composite_pass`] has summed them at
+/// `q̈ = 0` and formed `τ` and `df_da`; here each composite force gains
+/// `Yᶜⱼ Δaⱼ` and its children's `Σ Yᶜ_b S_b q̈_b` (gathered in `data.pa`),
+/// which are then passed up with j's own.
+fn backward_pass<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: DerivativeSpace,
+    const COMPOSE: bool,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    deriv: &mut DerivativeData<S, NB, NV, G>,
+    ddq: &[S; NV],
+) {
+    let t = model.topology();
+    for j in (0..NB).rev() {
+        let (y, dy) = (deriv.o_yc[j], deriv.o_dyc[j]);
         let columns = t.idx_v[j]..t.idx_v[j] + t.nv[j];
-        for r in columns.clone() {
-            data.tau[r] = deriv.s[r].dot(&f);
+        if COMPOSE {
+            let f = deriv.o_fc[j];
+            for r in columns.clone() {
+                data.tau[r] = deriv.s[r].dot(&f);
+            }
+        } else {
+            let mut below = data.pa[j];
+            deriv.o_fc[j] += y.mul_motion(&deriv.o_a[j]) + below;
+            let df_da = deriv.df_da.get(columns.clone()).unwrap_or_default();
+            let ddq = ddq.get(columns.clone()).unwrap_or_default();
+            for (df_da, ddq) in df_da.iter().zip(ddq) {
+                below += *df_da * *ddq;
+            }
+            if let Some(pa) = model.parent(j).and_then(|p| data.pa.get_mut(p)) {
+                *pa += below;
+            }
         }
         for c in columns.clone() {
             deriv.df_dq[c] = y.mul_motion(&deriv.da_dq[c]) + dy.mul_motion(&deriv.dv_dq[c]);
             deriv.df_dv[c] = y.mul_motion(&deriv.da_dv[c]) + dy.mul_motion(&deriv.s[c]);
-            deriv.df_da[c] = y.mul_motion(&deriv.s[c]);
+            if COMPOSE {
+                deriv.df_da[c] = y.mul_motion(&deriv.s[c]);
+            }
         }
         for r in columns {
             // `Yᶜ` is symmetric, so `S_rᵀ Yᶜ x = (Yᶜ S_r) · x`.
@@ -205,7 +392,8 @@ fn backward_pass<
             }
         }
         // In the world frame the composites add without transforms.
-        if let Some(p) = model.parent(j) {
+        if let (true, Some(p)) = (COMPOSE, model.parent(j)) {
+            let f = deriv.o_fc[j];
             deriv.o_yc[p] = deriv.o_yc[p].combine(&y);
             deriv.o_dyc[p].add_assign(&dy);
             deriv.o_fc[p] += f;
@@ -223,6 +411,7 @@ fn subtree_columns_pass<
     const NQ: usize,
     const NV: usize,
     G: DerivativeSpace,
+    const MASS: bool,
 >(
     model: &Model<S, NB, NQ, NV, G>,
     data: &mut Data<S, NB, NV, G>,
@@ -231,7 +420,13 @@ fn subtree_columns_pass<
     let t = model.topology();
     for i in 0..NB {
         for c in t.idx_v[i]..t.idx_v[i] + t.nv[i] {
-            let (df_dq, df_dv, df_da) = (deriv.df_dq[c], deriv.df_dv[c], deriv.df_da[c]);
+            // Through `get`: no bounds checks in firmware images.
+            let (Some(df_dq), Some(df_dv), Some(df_da)) =
+                (deriv.df_dq.get(c), deriv.df_dv.get(c), deriv.df_da.get(c))
+            else {
+                continue;
+            };
+            let (df_dq, df_dv, df_da) = (*df_dq, *df_dv, *df_da);
             let df_dq_above = df_dq + deriv.s[c].cross_force(&deriv.o_fc[i]);
             let mut row_body = Some(i);
             while let Some(j) = row_body {
@@ -240,16 +435,20 @@ fn subtree_columns_pass<
                     let s_r = &deriv.s[r];
                     deriv.dtau_dq[r][c] = s_r.dot(&df_dq);
                     deriv.dtau_dv[r][c] = s_r.dot(&df_dv);
-                    data.mass_matrix[r][c] = s_r.dot(&df_da);
+                    if MASS {
+                        data.mass_matrix[r][c] = s_r.dot(&df_da);
+                    }
                 }
                 row_body = model.parent(j);
             }
         }
     }
     // M's other triangle, in one sequential sweep.
-    for r in 0..NV {
-        for c in 0..r {
-            data.mass_matrix[r][c] = data.mass_matrix[c][r];
+    if MASS {
+        for r in 0..NV {
+            for c in 0..r {
+                data.mass_matrix[r][c] = data.mass_matrix[c][r];
+            }
         }
     }
 }

@@ -31,7 +31,7 @@ mod forward_dynamics;
 mod inertia_variation;
 mod inverse_dynamics;
 
-pub use forward_dynamics::aba_derivatives;
+pub use forward_dynamics::{aba_derivatives, aba_derivatives_by_solves};
 pub use inertia_variation::{ColumnVariation, DerivativeSpace, SpatialVariation, VariationMap};
 pub use inverse_dynamics::rnea_derivatives;
 
