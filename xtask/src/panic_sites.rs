@@ -50,8 +50,26 @@ pub struct Site {
     pub entry: String,
 }
 
-/// Addresses and callees of the calls (`bl`, `b`, `b.w`) to a panic entry point in one image.
-fn calls(name: &str) -> Result<Vec<(u64, String)>> {
+/// One call to a panic entry point, as the disassembly shows it.
+struct Call {
+    /// The call instruction's address.
+    address: u64,
+    /// The entry point called, short.
+    entry: String,
+    /// The address the call's block loads into a register with a
+    /// `movw`/`movt` pair just before it, when it does: the panic's
+    /// `core::panic::Location` (a bounds check's file and line), or
+    /// nothing of use.
+    loaded: Vec<u64>,
+}
+
+/// Instructions that end a block: the scan for a location stops there.
+fn ends_block(op: &str) -> bool {
+    op.starts_with('b') && !op.starts_with("bic") || matches!(op, "trap" | "udf" | "pop" | "pop.w")
+}
+
+/// The calls (`bl`, `b`, `b.w`) to a panic entry point in one image.
+fn calls(name: &str) -> Result<Vec<Call>> {
     let objdump = setup::llvm_tool("llvm-objdump")?;
     let output = Command::new(objdump)
         .args(["-d", "--no-show-raw-insn", "--demangle"])
@@ -62,73 +80,180 @@ fn calls(name: &str) -> Result<Vec<(u64, String)>> {
         bail!("llvm-objdump failed on {name}");
     }
     let text = String::from_utf8_lossy(&output.stdout);
+    // (op, operands) of the instructions since the last block end.
+    let mut block: Vec<(String, String)> = Vec::new();
     let mut found = Vec::new();
     for line in text.lines() {
         let mut words = line.split_whitespace();
         let (Some(address), Some(op)) = (words.next(), words.next()) else {
             continue;
         };
-        if !matches!(op, "bl" | "b" | "b.w") {
-            continue;
-        }
-        let Some(entry) = PANIC_ENTRIES.iter().find(|entry| line.contains(*entry)) else {
+        let Ok(address) = u64::from_str_radix(address.trim_end_matches(':'), 16) else {
+            block.clear();
             continue;
         };
-        let address = u64::from_str_radix(address.trim_end_matches(':'), 16)
-            .with_context(|| format!("an address in `{line}`"))?;
-        let callee = line[line.find(entry).unwrap_or(0) + 1..]
-            .trim_end_matches('>')
-            .to_string();
-        found.push((address, short_function(&callee)));
+        let operands: String = words.collect::<Vec<_>>().join(" ");
+        if matches!(op, "bl" | "b" | "b.w") {
+            if let Some(entry) = PANIC_ENTRIES.iter().find(|entry| line.contains(*entry)) {
+                let callee = line[line.find(entry).unwrap_or(0) + 1..]
+                    .split('>')
+                    .next()
+                    .unwrap_or("")
+                    .to_string();
+                found.push(Call {
+                    address,
+                    entry: short_function(&callee),
+                    loaded: loaded_addresses(&block),
+                });
+            }
+        }
+        if ends_block(op) {
+            block.clear();
+        } else {
+            block.push((op.to_string(), operands));
+        }
     }
     Ok(found)
 }
 
-/// Every panic call site in one image.
+/// The 32-bit constants `movw`/`movt` pairs put in registers in `block`.
+fn loaded_addresses(block: &[(String, String)]) -> Vec<u64> {
+    let immediate = |operands: &str| -> Option<(String, u64)> {
+        let (register, value) = operands.split_once(", #")?;
+        let value = value.split_whitespace().next()?;
+        let value = match value.strip_prefix("0x") {
+            Some(hex) => u64::from_str_radix(hex, 16).ok()?,
+            None => value.parse().ok()?,
+        };
+        Some((register.to_string(), value))
+    };
+    let mut low: BTreeMap<String, u64> = BTreeMap::new();
+    let mut found = Vec::new();
+    for (op, operands) in block {
+        match op.as_str() {
+            "movw" => {
+                if let Some((r, v)) = immediate(operands) {
+                    low.insert(r, v);
+                }
+            }
+            "movt" => {
+                if let Some((r, v)) = immediate(operands) {
+                    if let Some(l) = low.get(&r) {
+                        found.push(v << 16 | l);
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+    found
+}
+
+/// An image's read-only data, to read panic locations from.
+struct Image {
+    /// (address, bytes) of each allocated section.
+    sections: Vec<(u64, Vec<u8>)>,
+}
+
+impl Image {
+    fn read(elf: &std::path::Path) -> Result<Self> {
+        use object::{Object, ObjectSection};
+        let data = std::fs::read(elf).with_context(|| format!("reading {}", elf.display()))?;
+        let file = object::File::parse(&*data)?;
+        let sections = file
+            .sections()
+            .filter(|s| s.address() != 0)
+            .filter_map(|s| Some((s.address(), s.data().ok()?.to_vec())))
+            .collect();
+        Ok(Self { sections })
+    }
+
+    fn bytes(&self, address: u64, n: u64) -> Option<&[u8]> {
+        self.sections.iter().find_map(|(start, bytes)| {
+            let at = usize::try_from(address.checked_sub(*start)?).ok()?;
+            bytes.get(at..at + usize::try_from(n).ok()?)
+        })
+    }
+
+    fn word(&self, address: u64) -> Option<u64> {
+        let b = self.bytes(address, 4)?;
+        Some(u64::from(u32::from_le_bytes([b[0], b[1], b[2], b[3]])))
+    }
+
+    /// The `core::panic::Location` at `address` (on this 32-bit target:
+    /// file pointer, file length, line, column), when one is there.
+    fn location(&self, address: u64) -> Option<(String, u32)> {
+        let (file, len, line) = (
+            self.word(address)?,
+            self.word(address + 4)?,
+            self.word(address + 8)?,
+        );
+        if len == 0 || len > 400 || line == 0 || line > 1_000_000 {
+            return None;
+        }
+        let file = std::str::from_utf8(self.bytes(file, len)?).ok()?;
+        let line = u32::try_from(line).ok()?;
+        file.ends_with(".rs").then(|| (file.to_string(), line))
+    }
+}
+
+/// Every panic call site in one image. The location a call passes (its
+/// `Location`, which names the line of the index or `unwrap`) says where it
+/// comes from when the call's block loads one; otherwise the innermost
+/// frame outside the standard library of its inlined call chain does.
 pub fn sites(name: &str) -> Result<Vec<Site>> {
     let elf = firmware::elf_of(name);
+    let image = Image::read(&elf)?;
     let loader = addr2line::Loader::new(&elf)
         .map_err(|e| anyhow!("{}: debug information: {e}", elf.display()))?;
     calls(name)?
         .into_iter()
-        .map(|(address, entry)| {
-            let mut frames = loader
-                .find_frames(address)
-                .map_err(|e| anyhow!("address {address:#x}: {e}"))?;
-            let mut outermost = None;
-            while let Some(frame) = frames.next()? {
-                let function = frame
-                    .function
-                    .as_ref()
-                    .and_then(|f| f.demangle().ok())
-                    .map(|f| short_function(&f))
-                    .unwrap_or_else(|| format!("{address:#x}"));
-                let file = frame.location.as_ref().and_then(|l| l.file).unwrap_or("");
-                let line = frame.location.as_ref().and_then(|l| l.line).unwrap_or(0);
-                // The standard library's frames (`/rustc/<hash>/library/...`) are how
-                // the check is made, not where it comes from.
-                if file.contains("/library/") || file.is_empty() {
-                    outermost.get_or_insert((function, String::new(), "other"));
-                    continue;
+        .map(|call| {
+            let (function, frame_line) = frame_of(&loader, call.address)?;
+            let passed = call.loaded.iter().find_map(|a| image.location(*a));
+            let (source, line) = match (passed, frame_line) {
+                (Some((file, line)), _) => {
+                    (source_of(&file), format!("{}:{line}", short_file(&file)))
                 }
-                let source = source_of(file);
-                return Ok(Site {
-                    source,
-                    function,
-                    line: format!("{}:{line}", short_file(file)),
-                    entry,
-                });
-            }
-            let (function, line, source) =
-                outermost.unwrap_or_else(|| (format!("{address:#x}"), String::new(), "other"));
+                (None, Some((file, line))) => {
+                    (source_of(&file), format!("{}:{line}", short_file(&file)))
+                }
+                (None, None) => ("other", String::new()),
+            };
             Ok(Site {
                 source,
                 function,
                 line,
-                entry,
+                entry: call.entry,
             })
         })
         .collect()
+}
+
+/// The innermost function of `address`'s inlined call chain outside the
+/// standard library (`/rustc/<hash>/library/...`: how a check is made, not
+/// where it comes from), with its file and line when known.
+fn frame_of(loader: &addr2line::Loader, address: u64) -> Result<(String, Option<(String, u32)>)> {
+    let mut frames = loader
+        .find_frames(address)
+        .map_err(|e| anyhow!("address {address:#x}: {e}"))?;
+    let mut outermost = None;
+    while let Some(frame) = frames.next()? {
+        let function = frame
+            .function
+            .as_ref()
+            .and_then(|f| f.demangle().ok())
+            .map(|f| short_function(&f))
+            .unwrap_or_else(|| format!("{address:#x}"));
+        let file = frame.location.as_ref().and_then(|l| l.file).unwrap_or("");
+        let line = frame.location.as_ref().and_then(|l| l.line).unwrap_or(0);
+        if file.contains("/library/") || file.is_empty() {
+            outermost = Some(function);
+            continue;
+        }
+        return Ok((function, Some((file.to_string(), line))));
+    }
+    Ok((outermost.unwrap_or_else(|| format!("{address:#x}")), None))
 }
 
 /// Which of [`SOURCES`] a source file belongs to.
