@@ -46,7 +46,10 @@ pub use crate::error::ConfigurationError;
 /// The behaviour of one joint type in a geometry `G`.
 ///
 /// Sizes: `q` has [`nq`](Self::nq) entries, `v`, `qd`, `out` have
-/// [`nv`](Self::nv). Vectors are in the joint's moving frame.
+/// [`nv`](Self::nv). The methods that read `q` or `qd` (the transforms,
+/// [`angle`](Self::angle), the motions) read them from the front and must
+/// accept longer slices: the algorithms pass a joint the state vector from
+/// its first coordinate on. Vectors are in the joint's moving frame.
 pub trait JointModel<S: Scalar, G: Space>: Copy + Debug {
     /// Number of configuration coordinates.
     fn nq(&self) -> usize;
@@ -175,13 +178,13 @@ pub fn rate_from_integrate<S: Scalar, G: Space, J: JointModel<S, G>>(
 /// entries, which [`Topology::new`](crate::topology::Topology::new) checks
 /// fit the state vectors, so the zero is never read for a valid model.
 #[inline(always)]
-fn first<S: Scalar>(x: &[S]) -> S {
+pub(crate) fn first<S: Scalar>(x: &[S]) -> S {
     x.first().copied().unwrap_or(S::ZERO)
 }
 
 /// Writes `value` to `x[0]`, when `x` has an entry (see [`first`]).
 #[inline(always)]
-fn set_first<S: Scalar>(x: &mut [S], value: S) {
+pub(crate) fn set_first<S: Scalar>(x: &mut [S], value: S) {
     if let Some(x) = x.first_mut() {
         *x = value;
     }
@@ -291,7 +294,7 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
             Self::FreeFlyer(j) => q
                 .first_chunk()
                 .map_or(Transform::IDENTITY, |q| j.transform(q)),
-            Self::Custom(c) => c.behaviour.transform(q),
+            Self::Custom(c) => c.transform(q),
         }
     }
     #[cfg_attr(not(target_arch = "arm"), inline(always))]
@@ -328,7 +331,7 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
             Self::FreeFlyer(j) => qd
                 .first_chunk()
                 .map_or(crate::space::VectorOps::ZERO, |qd| j.motion(qd)),
-            Self::Custom(c) => c.behaviour.motion(qd),
+            Self::Custom(c) => c.motion(qd),
         }
     }
     #[inline]
