@@ -309,6 +309,34 @@ fn hand_built_inconsistent_topology_is_an_error_not_a_panic() {
         ),
         "{err:?}"
     );
+    // The second joint's configuration coordinate past the end of q: the
+    // model's own checks report it, and nothing panics.
+    let mut topology: Topology<2, 2> = *good.topology();
+    topology.idx_q[1] = 2;
+    let model: Model<f64, 2, 2, 2> = Model::from_parts(
+        topology,
+        [Joint::revolute(Axis::Z), Joint::revolute(Axis::Z)],
+        [Transform::IDENTITY, Transform::IDENTITY],
+        [
+            Inertia::new(
+                1.0,
+                Vec3::new(0.25, 0.0, 0.0),
+                Sym3::diagonal(0.01, 0.02, 0.02),
+            ),
+            Inertia::new(1.0, Vec3::ZERO, Sym3::diagonal(0.01, 0.01, 0.01)),
+        ],
+        Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
+    );
+    let mut q = [0.1, 0.2];
+    assert!(matches!(
+        model.normalize(&mut q),
+        Err(Error::InvalidModel {
+            body: 1,
+            problem: ModelProblem::InconsistentTopology
+        })
+    ));
+    assert_eq!(model.neutral_configuration(), [0.0, 0.0]);
+    assert!(model.integrate(&q, &[1.0, 1.0], 0.1).is_ok());
     // A parent after its child.
     let mut topology: Topology<2, 2> = *good.topology();
     topology.parents[0] = Some(1);

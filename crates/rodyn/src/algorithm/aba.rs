@@ -19,9 +19,9 @@ use crate::algorithm::common::{
     body_transform_with, check_external, check_state, joint_rates, JointSinCos,
 };
 use crate::data::Data;
-use crate::error::{Error, ModelProblem, Quantity, Result};
+use crate::error::{Error, Quantity, Result};
 use crate::joint::{JointModel, MAX_JOINT_NV};
-use crate::model::{check_finite, check_result, Model};
+use crate::model::{check_finite, check_result, inconsistent_topology, Model};
 use crate::space::{
     ArticulatedInertia, BodyInertia, MotionVector, RigidTransform, Space, VectorOps,
 };
@@ -162,7 +162,7 @@ pub(crate) fn backward_pass<
             // A valid topology has `iv < NV`; tested once here, it puts every
             // `[iv]` below in range.
             if iv >= NV {
-                return Err(inconsistent(i));
+                return Err(inconsistent_topology(i));
             }
             // The common case, without the loops over the joint's columns.
             // On hosts into a local first: the column is read at once, and
@@ -184,7 +184,7 @@ pub(crate) fn backward_pass<
                 // Parents precede their children (`Topology::try_new`), so
                 // `p < i`: within `ancestors`, and then within `data.pa`.
                 let Some(ancestor) = ancestors.get_mut(p) else {
-                    return Err(inconsistent(i));
+                    return Err(inconsistent_topology(i));
                 };
                 // Without armature, Iᵃ S = 0: a coordinate-axis revolute
                 // joint's row and column of Iᵃ are zero and skipped.
@@ -308,16 +308,6 @@ pub(crate) fn forward_acceleration_pass<
             data.ddq[iv + k] = ddq;
         }
         data.a_gf[i] = a_prime + joint.motion(&data.ddq[iv..iv + nv]);
-    }
-}
-
-/// The error of a topology whose index tables do not fit the model's
-/// vectors at body `i` (never for one built by `Topology::try_new`).
-#[cold]
-fn inconsistent(i: usize) -> Error {
-    Error::InvalidModel {
-        body: i,
-        problem: ModelProblem::InconsistentTopology,
     }
 }
 
