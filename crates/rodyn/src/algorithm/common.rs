@@ -290,8 +290,10 @@ pub(crate) fn supporting_ranges<const NB: usize, const NV: usize>(
     let mut last = k;
     core::iter::from_fn(move || {
         let end = last?;
-        let first = topology.chain_start_v[end];
-        last = topology.lambda_v[first];
+        // Coordinates of a valid topology (`Topology::try_new`); one past
+        // the end ends the ranges.
+        let first = *topology.chain_start_v.get(end)?;
+        last = *topology.lambda_v.get(first)?;
         Some((first, end))
     })
 }

@@ -81,10 +81,9 @@ impl FreeFlyer {
         ia: &ArticulatedInertia6<S>,
         u: &mut [Force<S>; 6],
     ) {
-        let (lin, ang) = u.split_at_mut(3);
-        for (k, (l, a)) in lin.iter_mut().zip(ang).enumerate() {
-            *l = Force::new(ia.b.column(k), ia.c.column(k));
-            *a = Force::new(ia.a.column(k), ia.b.row(k));
+        for k in 0..3 {
+            u[k] = Force::new(ia.b.column(k), ia.c.column(k));
+            u[k + 3] = Force::new(ia.a.column(k), ia.b.row(k));
         }
     }
     /// The identity placement.
