@@ -316,7 +316,8 @@ impl<const NB: usize, const NV: usize> Topology<NB, NV> {
             if i < ancestor {
                 return false;
             }
-            b = self.parents[i];
+            // A body past the end has no parents (a caller's index).
+            b = self.parents.get(i).copied().flatten();
         }
         false
     }
