@@ -5,6 +5,8 @@
 //! process. On a board without a debugger attached the call would trap;
 //! production firmware would reset instead.
 
+use core::sync::atomic::{AtomicBool, Ordering};
+
 /// The firmware ran and every check passed.
 pub const SUCCESS: i32 = 0;
 /// A check failed (a bound exceeded, an algorithm returned an error).
@@ -22,8 +24,17 @@ pub fn exit_with(passed: bool) -> ! {
     exit(if passed { SUCCESS } else { CHECK_FAILED })
 }
 
+/// Set by the first panic. The handler logs through defmt, and a panic
+/// while defmt's logger is held (a `Format` implementation that panics, or
+/// the logger's own "already taken" check) would enter the handler again
+/// and again; a second entry exits at once instead.
+static PANICKING: AtomicBool = AtomicBool::new(false);
+
 #[panic_handler]
 fn panic(info: &core::panic::PanicInfo<'_>) -> ! {
+    if PANICKING.swap(true, Ordering::Relaxed) {
+        exit(PANICKED)
+    }
     match info.location() {
         Some(at) => defmt::error!("panic at {=str}:{=u32}", at.file(), at.line()),
         None => defmt::error!("panic"),

@@ -267,3 +267,124 @@ fn a_tree_built_at_run_time_reports_its_inconsistency() {
         Err(TopologyError::TooManyJointDofs { body: 0 })
     );
 }
+
+/// A topology assembled by hand (its fields are public) whose index tables
+/// do not fit the model: ABA reports it instead of indexing past the ends
+/// (the algorithms keep no panic path for it; `Topology::try_new` never
+/// builds one).
+#[test]
+fn hand_built_inconsistent_topology_is_an_error_not_a_panic() {
+    use rodyn::topology::Topology;
+    let good = arm(1.0, 0.01);
+    let mut topology = *good.topology();
+    // The second joint's velocity coordinate past the end of v.
+    topology.idx_v[1] = 2;
+    let model: Model<f64, 2, 2, 2> = Model::from_parts(
+        topology,
+        [Joint::revolute(Axis::Z), Joint::revolute(Axis::Z)],
+        [
+            Transform::IDENTITY,
+            Transform::from_translation(Vec3::new(0.5, 0.0, 0.0)),
+        ],
+        [
+            Inertia::new(
+                1.0,
+                Vec3::new(0.25, 0.0, 0.0),
+                Sym3::diagonal(0.01, 0.02, 0.02),
+            ),
+            Inertia::new(1.0, Vec3::ZERO, Sym3::diagonal(0.01, 0.01, 0.01)),
+        ],
+        Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
+    );
+    let mut data = Data::new();
+    let err = Aba::forward_dynamics(&model, &mut data, &[0.1, 0.2], &[0.0; 2], &[0.0; 2], None)
+        .unwrap_err();
+    assert!(
+        matches!(
+            err,
+            Error::InvalidModel {
+                body: 1,
+                problem: ModelProblem::InconsistentTopology
+            }
+        ),
+        "{err:?}"
+    );
+    // The second joint's configuration coordinate past the end of q: the
+    // model's own checks report it, and nothing panics.
+    let mut topology: Topology<2, 2> = *good.topology();
+    topology.idx_q[1] = 2;
+    let model: Model<f64, 2, 2, 2> = Model::from_parts(
+        topology,
+        [Joint::revolute(Axis::Z), Joint::revolute(Axis::Z)],
+        [Transform::IDENTITY, Transform::IDENTITY],
+        [
+            Inertia::new(
+                1.0,
+                Vec3::new(0.25, 0.0, 0.0),
+                Sym3::diagonal(0.01, 0.02, 0.02),
+            ),
+            Inertia::new(1.0, Vec3::ZERO, Sym3::diagonal(0.01, 0.01, 0.01)),
+        ],
+        Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
+    );
+    let mut q = [0.1, 0.2];
+    assert!(matches!(
+        model.normalize(&mut q),
+        Err(Error::InvalidModel {
+            body: 1,
+            problem: ModelProblem::InconsistentTopology
+        })
+    ));
+    assert_eq!(model.neutral_configuration(), [0.0, 0.0]);
+    assert!(model.integrate(&q, &[1.0, 1.0], 0.1).is_ok());
+    // A parent after its child.
+    let mut topology: Topology<2, 2> = *good.topology();
+    topology.parents[0] = Some(1);
+    topology.parents[1] = None;
+    let model: Model<f64, 2, 2, 2> = Model::from_parts(
+        topology,
+        [Joint::revolute(Axis::Z), Joint::revolute(Axis::Z)],
+        [Transform::IDENTITY, Transform::IDENTITY],
+        [
+            Inertia::new(
+                1.0,
+                Vec3::new(0.25, 0.0, 0.0),
+                Sym3::diagonal(0.01, 0.02, 0.02),
+            ),
+            Inertia::new(1.0, Vec3::ZERO, Sym3::diagonal(0.01, 0.01, 0.01)),
+        ],
+        Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
+    );
+    let err = Aba::forward_dynamics(&model, &mut data, &[0.1, 0.2], &[0.0; 2], &[0.0; 2], None)
+        .unwrap_err();
+    assert!(
+        matches!(
+            err,
+            Error::InvalidModel {
+                body: 0,
+                problem: ModelProblem::InconsistentTopology
+            }
+        ),
+        "{err:?}"
+    );
+}
+
+/// The built-in joints read their coordinates from the front of the
+/// slices they are given (the algorithms pass the state from a joint's
+/// first coordinate on) and do not panic on a short one.
+#[test]
+fn joints_read_from_the_front_and_tolerate_short_slices() {
+    use rodyn::joint::JointModel;
+    let free = Joint::<f64>::free_flyer();
+    let q = [1.0, 2.0, 3.0, 0.0, 0.0, 0.0, 1.0, 99.0, 99.0];
+    let t = free.transform(&q);
+    assert_eq!(t, free.transform(&q[..7]));
+    assert_eq!(t.trans, Vec3::new(1.0, 2.0, 3.0));
+    assert_eq!(free.transform(&q[..3]), Transform::IDENTITY);
+    let revolute = Joint::<f64>::revolute(Axis::Z);
+    assert_eq!(revolute.transform(&[0.3, 7.0]), revolute.transform(&[0.3]));
+    assert_eq!(revolute.transform(&[]), revolute.transform(&[0.0]));
+    let mut out = [0.0; 2];
+    free.integrate(&q[..3], &[0.0; 6], 0.1, &mut out);
+    assert_eq!(out, [0.0; 2]);
+}

@@ -8,6 +8,7 @@
 //! | `lint`                   | rustfmt, clippy and rustdoc, warnings as errors, host and firmware; the core without float features stops at one error; `cargo package` of the published crates |
 //! | `costs`                  | runs the cost probe, measures sizes and bounds the stack, rewrites the tables in `docs/sections/firmware.md` and `firmware/expected/sizes.txt` |
 //! | `stack [image] [words]`  | worst-case stack per image and per cost-table row from a static call graph, checked against the painted figures (`--check-frames`: the frame reading against LLVM's `-Z emit-stack-sizes`) |
+//! | `panic-sites [image]`    | the panic call sites of one image (default: all) by source, function and line |
 //! | `bless`                  | rewrites `firmware/expected/*.log` from fresh runs, keeping `*` wildcards |
 //! | `profile [words]`        | one call of each algorithm on each model in QEMU with an instruction trace; prints where its instructions go, line by line (calls whose label contains every word) |
 //! | `host-profile <algorithm> <model> [--pinocchio]` | the same on the host: callgrind's count per instruction of one call of the `profile` binary (or of Pinocchio's timing program), charged line by line, and its floating-point operations |
@@ -35,7 +36,7 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 const USAGE: &str =
-    "usage: cargo xtask <run [example] | test | lint | costs | stack [image [words]] | stack --frames <image> | stack --check-frames | bless | profile [model] [algorithm] | host-profile <algorithm> <model> [--pinocchio]>";
+    "usage: cargo xtask <run [example] | test | lint | costs | stack [image [words]] | stack --frames <image> | stack --check-frames | panic-sites [image] | bless | profile [model] [algorithm] | host-profile <algorithm> <model> [--pinocchio]>";
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -46,6 +47,7 @@ fn main() -> ExitCode {
         Some("costs") => costs::regenerate(),
         Some("bless") => bless(),
         Some("stack") => stack_bound::run(&args[1..]),
+        Some("panic-sites") => panic_sites::run(&args[1..]),
         Some("profile") => profile::run(&args[1..]),
         Some("host-profile") => host_profile::run(&args[1..]),
         _ => {

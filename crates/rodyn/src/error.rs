@@ -64,6 +64,11 @@ pub enum ModelProblem {
     /// Finite numbers whose products (such as `m |c|²` or `m²`) overflow
     /// the scalar type, so the algorithms could not use them.
     Overflow,
+    /// The topology's index tables do not fit the model's vectors (a
+    /// parent after its child, coordinates past the end): a
+    /// [`Topology`](crate::topology::Topology) assembled by hand rather
+    /// than by [`Topology::try_new`](crate::topology::Topology::try_new).
+    InconsistentTopology,
 }
 
 /// What is wrong with a drive element (see [`crate::drive`]).

@@ -519,21 +519,29 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
             }
             for (i, joint) in self.joints.iter().enumerate() {
                 if joint.constrains_configuration() {
-                    let iq = self.topology.idx_q[i];
                     joint
-                        .check_configuration(&q[iq..iq + self.topology.nq[i]])
+                        .check_configuration(self.joint_q(i, q)?)
                         .map_err(|reason| Error::InvalidConfiguration { joint: i, reason })?;
                 }
             }
             return Ok(());
         }
         for i in 0..NB {
-            let iq = self.topology.idx_q[i];
             self.joints[i]
-                .check_configuration(&q[iq..iq + self.topology.nq[i]])
+                .check_configuration(self.joint_q(i, q)?)
                 .map_err(|reason| Error::InvalidConfiguration { joint: i, reason })?;
         }
         Ok(())
+    }
+
+    /// Body `i`'s `nq[i]` coordinates of `q`, or the error of a topology
+    /// that does not fit `q` (never one built by `Topology::try_new`):
+    /// an early exit, not a panic path.
+    #[inline(always)]
+    fn joint_q<'q>(&self, i: usize, q: &'q [S; NQ]) -> Result<&'q [S]> {
+        let iq = self.topology.idx_q[i];
+        q.get(iq..iq + self.topology.nq[i])
+            .ok_or_else(|| inconsistent_topology(i))
     }
 
     /// The neutral configuration (zero angles, identity quaternions).
@@ -542,7 +550,10 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
         let mut q = [S::ZERO; NQ];
         for i in 0..NB {
             let iq = self.topology.idx_q[i];
-            self.joints[i].neutral(&mut q[iq..iq + self.topology.nq[i]]);
+            // A valid topology keeps the range in `q` (`Topology::try_new`).
+            if let Some(joint_q) = q.get_mut(iq..iq + self.topology.nq[i]) {
+                self.joints[i].neutral(joint_q);
+            }
         }
         q
     }
@@ -600,7 +611,17 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
         for i in 0..NB {
             let (iq, iv) = (self.topology.idx_q[i], self.topology.idx_v[i]);
             let (nq, nv) = (self.topology.nq[i], self.topology.nv[i]);
-            self.joints[i].integrate(&q[iq..iq + nq], &v[iv..iv + nv], dt, &mut out[iq..iq + nq]);
+            // A valid topology keeps the ranges in `q` and `v`
+            // (`Topology::try_new`); one that does not fit leaves those
+            // coordinates as they were.
+            let (Some(q_i), Some(v_i), Some(out_i)) = (
+                q.get(iq..iq + nq),
+                v.get(iv..iv + nv),
+                out.get_mut(iq..iq + nq),
+            ) else {
+                continue;
+            };
+            self.joints[i].integrate(q_i, v_i, dt, out_i);
         }
         out
     }
@@ -624,7 +645,9 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
         // every algorithm inlines: sharing it changed their code on the MCU.
         for i in 0..NB {
             let iq = self.topology.idx_q[i];
-            let joint_q = &mut out[iq..iq + self.topology.nq[i]];
+            let joint_q = out
+                .get_mut(iq..iq + self.topology.nq[i])
+                .ok_or_else(|| inconsistent_topology(i))?;
             self.joints[i].normalize(joint_q);
             self.joints[i]
                 .check_configuration(joint_q)
@@ -640,7 +663,10 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
     pub(crate) fn normalize_unvalidated(&self, q: &mut [S; NQ]) {
         for i in 0..NB {
             let iq = self.topology.idx_q[i];
-            self.joints[i].normalize(&mut q[iq..iq + self.topology.nq[i]]);
+            // A valid topology keeps the range in `q` (`Topology::try_new`).
+            if let Some(joint_q) = q.get_mut(iq..iq + self.topology.nq[i]) {
+                self.joints[i].normalize(joint_q);
+            }
         }
     }
 }
@@ -666,6 +692,17 @@ fn all_finite<S: Scalar>(x: &[S]) -> bool {
         *sum += *v - *v;
     }
     ((sums[0] + sums[1]) + (sums[2] + sums[3])).is_finite()
+}
+
+/// The error of a topology whose index tables do not fit the model's
+/// vectors at body `i` (never one built by `Topology::try_new`; a
+/// [`Topology`] assembled by hand can be).
+#[cold]
+pub(crate) fn inconsistent_topology(i: usize) -> Error {
+    Error::InvalidModel {
+        body: i,
+        problem: crate::error::ModelProblem::InconsistentTopology,
+    }
 }
 
 /// Returns an error naming the first non-finite entry of `x`.

@@ -316,7 +316,8 @@ impl<const NB: usize, const NV: usize> Topology<NB, NV> {
             if i < ancestor {
                 return false;
             }
-            b = self.parents[i];
+            // A body past the end has no parents (a caller's index).
+            b = self.parents.get(i).copied().flatten();
         }
         false
     }
@@ -334,7 +335,59 @@ const fn velocity_count<const NB: usize>(nv: &[usize; NB]) -> usize {
 
 #[cfg(test)]
 mod tests {
-    use super::Topology;
+    use super::{Topology, TopologyError};
+    use crate::joint::MAX_JOINT_NV;
+
+    /// What the algorithms rely on to reach every index without a panic
+    /// path (and report `ModelProblem::InconsistentTopology` otherwise):
+    /// parents precede children, each joint's coordinates lie within
+    /// `q` and `v`, and no joint has more than `MAX_JOINT_NV` of them.
+    fn assert_fits<const NB: usize, const NV: usize>(t: &Topology<NB, NV>, nq_total: usize) {
+        for i in 0..NB {
+            if let Some(p) = t.parents[i] {
+                assert!(p < i, "body {i}: parent {p}");
+            }
+            assert!(t.idx_q[i] + t.nq[i] <= nq_total, "body {i}: q");
+            assert!(t.idx_v[i] + t.nv[i] <= NV, "body {i}: v");
+            assert!(t.nv[i] <= MAX_JOINT_NV, "body {i}: nv");
+        }
+        for k in 0..NV {
+            assert!(t.body_of_v[k] < NB);
+            assert!(t.chain_start_v[k] <= k);
+            if let Some(l) = t.lambda_v[k] {
+                assert!(l < k);
+            }
+        }
+    }
+
+    #[test]
+    fn try_new_keeps_every_index_in_range() {
+        // A chain of revolute joints.
+        let chain = Topology::<4, 4>::try_new([None, Some(0), Some(1), Some(2)], [1; 4], [1; 4], 4);
+        assert_fits(&chain.unwrap(), 4);
+        // A free-flyer trunk with two legs, a fixed sensor at the end (nq ≠ nv, nv = 0).
+        let legs = Topology::<6, 10>::try_new(
+            [None, Some(0), Some(1), Some(0), Some(3), Some(4)],
+            [7, 1, 1, 1, 1, 0],
+            [6, 1, 1, 1, 1, 0],
+            11,
+        );
+        assert_fits(&legs.unwrap(), 11);
+        // Only fixed joints: no coordinates at all.
+        let fixed = Topology::<2, 0>::try_new([None, Some(0)], [0; 2], [0; 2], 0);
+        assert_fits(&fixed.unwrap(), 0);
+        // And what it refuses.
+        assert!(matches!(
+            Topology::<2, 2>::try_new([Some(1), None], [1; 2], [1; 2], 2),
+            Err(TopologyError::ParentAfterChild { body: 0 })
+        ));
+        assert!(matches!(
+            Topology::<1, 7>::try_new([None], [7], [7], 7),
+            Err(TopologyError::TooManyJointDofs { body: 0 })
+        ));
+        assert!(Topology::<2, 2>::try_new([None, Some(0)], [1; 2], [1; 2], 3).is_err());
+        assert!(Topology::<2, 3>::try_new([None, Some(0)], [1; 2], [1; 2], 2).is_err());
+    }
 
     #[test]
     fn last_supported_and_depth_first() {

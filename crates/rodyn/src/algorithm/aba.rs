@@ -21,7 +21,7 @@ use crate::algorithm::common::{
 use crate::data::Data;
 use crate::error::{Error, Quantity, Result};
 use crate::joint::{JointModel, MAX_JOINT_NV};
-use crate::model::{check_finite, check_result, Model};
+use crate::model::{check_finite, check_result, inconsistent_topology, Model};
 use crate::space::{
     ArticulatedInertia, BodyInertia, MotionVector, RigidTransform, Space, VectorOps,
 };
@@ -111,7 +111,12 @@ fn velocity_and_bias_pass<
     for i in 0..NB {
         data.li_m_i[i] = body_transform_with(model, i, q, sin_cos.as_ref());
         let v_parent = match model.parent(i) {
-            Some(p) => data.li_m_i[i].act_inv_motion(&data.v[p]),
+            Some(p) => {
+                // A valid topology's parents are bodies (`p < i`); the
+                // backward pass reports one that is not.
+                let Some(v_p) = data.v.get(p) else { return };
+                data.li_m_i[i].act_inv_motion(v_p)
+            }
             None => G::Motion::<S>::ZERO,
         };
         let joint = model.joint(i);
@@ -154,6 +159,11 @@ pub(crate) fn backward_pass<
         let i_a = &mut rest[0];
         let mut p_a = data.pa[i];
         if nv == 1 {
+            // A valid topology has `iv < NV`; tested once here, it puts every
+            // `[iv]` below in range.
+            if iv >= NV {
+                return Err(inconsistent_topology(i));
+            }
             // The common case, without the loops over the joint's columns.
             // On hosts into a local first: the column is read at once, and
             // a copy read back from `data` waits on store-to-load
@@ -171,6 +181,11 @@ pub(crate) fn backward_pass<
             data.d_inv[iv][0] = d_inv;
             data.u[iv] = u;
             if let Some(p) = t.parents[i] {
+                // Parents precede their children (`Topology::try_new`), so
+                // `p < i`: within `ancestors`, and then within `data.pa`.
+                let Some(ancestor) = ancestors.get_mut(p) else {
+                    return Err(inconsistent_topology(i));
+                };
                 // Without armature, Iᵃ S = 0: a coordinate-axis revolute
                 // joint's row and column of Iᵃ are zero and skipped.
                 let axis = if model.armature()[iv] == S::ZERO {
@@ -181,7 +196,7 @@ pub(crate) fn backward_pass<
                 // I^a = I^A - U D⁻¹ Uᵀ, p^a = p^A + I^a c + U D⁻¹ u.
                 let ia_c = i_a.project_mul_motion(&u_col, d_inv, &data.c[i], axis);
                 p_a += u_col * (d_inv * u) + ia_c;
-                ancestors[p].add_act_projected(i_a, &data.li_m_i[i], axis);
+                ancestor.add_act_projected(i_a, &data.li_m_i[i], axis);
                 data.pa[p] += data.li_m_i[i].act_force(&p_a);
             }
             continue;
@@ -266,13 +281,18 @@ pub(crate) fn forward_acceleration_pass<
     let mut ut_a = [S::ZERO; MAX_JOINT_NV];
     for i in 0..NB {
         let (iv, nv) = (t.idx_v[i], t.nv[i]);
+        // A valid topology's parents are bodies (`p < i`), and its
+        // coordinates in range; `backward_pass` reported one that is not.
         let a_parent = match t.parents[i] {
-            Some(p) => data.a_gf[p],
+            Some(p) => {
+                let Some(a_p) = data.a_gf.get(p) else { return };
+                *a_p
+            }
             None => minus_g,
         };
         let a_prime = data.li_m_i[i].act_inv_motion(&a_parent) + data.c[i];
         let joint = model.joint(i);
-        if nv == 1 {
+        if nv == 1 && iv < NV {
             let ddq = data.d_inv[iv][0] * (data.u[iv] - a_prime.dot(&data.u_cols[iv]));
             data.ddq[iv] = ddq;
             data.a_gf[i] = joint.add_motion(&a_prime, &[ddq]);

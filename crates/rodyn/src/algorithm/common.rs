@@ -118,7 +118,10 @@ pub(crate) fn body_transform_with<
     }
 }
 
-/// Body `i`'s joint configuration: its slice of `q`.
+/// Body `i`'s joint configuration: `q` from its first coordinate on (the
+/// joints read their `nq` entries from the front, see [`JointModel`]).
+///
+/// [`JointModel`]: crate::joint::JointModel
 #[inline(always)]
 pub(crate) fn joint_configuration<
     'q,
@@ -133,12 +136,15 @@ pub(crate) fn joint_configuration<
     q: &'q [S; NQ],
 ) -> &'q [S] {
     let t = model.topology();
-    let iq = t.idx_q[i];
-    &q[iq..iq + t.nq[i]]
+    // A valid topology keeps `idx_q[i] + nq[i] <= NQ` (`Topology::try_new`
+    // lays it out); the clamp, which then changes nothing, lets the
+    // compiler see the start in range, and the joints check their length
+    // (`first_chunk`), so no end is cut here.
+    &q[t.idx_q[i].min(NQ)..]
 }
 
-/// Body `i`'s joint rates: its slice of `v` (which holds every joint's
-/// rates, or accelerations).
+/// Body `i`'s joint rates: `v` (which holds every joint's rates, or
+/// accelerations) from its first coordinate on, as [`joint_configuration`].
 #[inline(always)]
 pub(crate) fn joint_rates<
     'v,
@@ -153,8 +159,8 @@ pub(crate) fn joint_rates<
     v: &'v [S; NV],
 ) -> &'v [S] {
     let t = model.topology();
-    let iv = t.idx_v[i];
-    &v[iv..iv + t.nv[i]]
+    // Clamped as in `joint_configuration`.
+    &v[t.idx_v[i].min(NV)..]
 }
 
 /// Checks `q` (finite, unit quaternions) and `v` (finite).
@@ -224,8 +230,9 @@ pub(crate) fn body_velocity<
     v: &[S; NV],
 ) -> (G::Transform<S>, G::Motion<S>) {
     let li_m_i = body_transform(model, i, q);
-    let v_parent = match model.parent(i) {
-        Some(p) => li_m_i.act_inv_motion(&data.v[p]),
+    // Parents precede children (`Topology::try_new`), so `p < i < NB`.
+    let v_parent = match model.parent(i).and_then(|p| data.v.get(p)) {
+        Some(v_p) => li_m_i.act_inv_motion(v_p),
         None => G::Motion::<S>::ZERO,
     };
     let v_i = model
@@ -265,14 +272,12 @@ pub(crate) fn pose_step<S: Scalar, const NB: usize, const NQ: usize, const NV: u
     previous: Option<&G::Transform<S>>,
 ) -> G::Transform<S> {
     let li_m_i = body_transform_with(model, i, q, sin_cos);
-    let o_m_i = match model.parent(i) {
-        Some(p) => {
-            let parent = match previous {
-                Some(x) if p + 1 == i => x,
-                _ => &data.o_m_i[p],
-            };
-            G::then_joint(parent, &li_m_i, model.turned_frame(i))
-        }
+    let parent = model.parent(i).and_then(|p| match previous {
+        Some(x) if p + 1 == i => Some(x),
+        _ => data.o_m_i.get(p),
+    });
+    let o_m_i = match parent {
+        Some(o_m_p) => G::then_joint(o_m_p, &li_m_i, model.turned_frame(i)),
         None => li_m_i,
     };
     data.li_m_i[i] = li_m_i;
@@ -293,8 +298,10 @@ pub(crate) fn supporting_ranges<const NB: usize, const NV: usize>(
     let mut last = k;
     core::iter::from_fn(move || {
         let end = last?;
-        let first = topology.chain_start_v[end];
-        last = topology.lambda_v[first];
+        // Coordinates of a valid topology (`Topology::try_new`); one past
+        // the end ends the ranges.
+        let first = *topology.chain_start_v.get(end)?;
+        last = *topology.lambda_v.get(first)?;
         Some((first, end))
     })
 }

@@ -76,7 +76,14 @@ pub(crate) fn pose_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: u
 ) {
     for i in 0..NB {
         data.o_m_i[i] = match model.parent(i) {
-            Some(p) => G::then_joint(&data.o_m_i[p], &data.li_m_i[i], model.turned_frame(i)),
+            Some(p) => {
+                // A valid topology's parent is a body (`p < i`); one that
+                // is not stops the pass.
+                let Some(o_m_p) = data.o_m_i.get(p) else {
+                    return;
+                };
+                G::then_joint(o_m_p, &data.li_m_i[i], model.turned_frame(i))
+            }
             None => data.li_m_i[i],
         };
     }

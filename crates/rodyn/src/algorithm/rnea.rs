@@ -185,12 +185,16 @@ pub(crate) fn backward_force_pass_with<
         } else {
             data.f[i]
         };
-        let tau = &mut data.tau[iv..iv + nv];
+        // A valid topology keeps the joint's coordinates in range
+        // (`Topology::try_new`); one that does not stops the pass.
+        let Some(tau) = data.tau.get_mut(iv..iv + nv) else {
+            return;
+        };
         model.joint(i).project_force(&f_i, tau);
         // Rotor inertias act on the joint coordinates alone.
         if let Some(a) = a {
-            if nv == 1 {
-                tau[0] += armature[iv] * a[iv];
+            if let ([tau], Some(armature), Some(a)) = (&mut *tau, armature.get(iv), a.get(iv)) {
+                *tau += *armature * *a;
             } else {
                 for ((tau, armature), a) in tau.iter_mut().zip(&armature[iv..]).zip(&a[iv..]) {
                     *tau += *armature * *a;
@@ -201,8 +205,9 @@ pub(crate) fn backward_force_pass_with<
             let f_p = data.li_m_i[i].act_force(&f_i);
             if CARRY && p + 1 == i {
                 carry = f_p;
-            } else {
-                data.f[p] += f_p;
+            } else if let Some(f) = data.f.get_mut(p) {
+                // (A valid topology's parent is a body: `p < i`.)
+                *f += f_p;
             }
         }
         also(data, i);

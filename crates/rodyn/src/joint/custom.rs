@@ -54,6 +54,22 @@ impl<S> CustomJoint<S> {
     pub const CONSTRAINS_CONFIGURATION: bool = true;
 }
 
+impl<S: Scalar> CustomJoint<S> {
+    /// Its behaviour's transform of `q[..nq]`: the algorithms pass the
+    /// state from the joint's first coordinate on, and a behaviour is
+    /// promised exactly its own entries. Out of line, so that the
+    /// built-in joints' dispatch stays small enough to inline.
+    #[inline(never)]
+    pub(crate) fn transform(&self, q: &[S]) -> Transform<S> {
+        self.behaviour.transform(q.get(..self.nq).unwrap_or(q))
+    }
+    /// Its behaviour's `S qd` of `qd[..nv]` (as [`Self::transform`]).
+    #[inline(never)]
+    pub(crate) fn motion(&self, qd: &[S]) -> Motion<S> {
+        self.behaviour.motion(qd.get(..self.nv).unwrap_or(qd))
+    }
+}
+
 impl<S> fmt::Debug for CustomJoint<S> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.debug_struct("CustomJoint")

@@ -43,7 +43,7 @@ impl FreeFlyer {
     /// `jMi(q)`.
     #[inline]
     #[must_use]
-    pub fn transform<S: Scalar>(&self, q: &[S]) -> Transform<S> {
+    pub fn transform<S: Scalar>(&self, q: &[S; 7]) -> Transform<S> {
         Transform::new(
             Mat3::from_quaternion(q[3], q[4], q[5], q[6]),
             Vec3::new(q[0], q[1], q[2]),
@@ -52,7 +52,7 @@ impl FreeFlyer {
     /// `S qd`.
     #[inline]
     #[must_use]
-    pub fn motion<S: Scalar>(&self, qd: &[S]) -> Motion<S> {
+    pub fn motion<S: Scalar>(&self, qd: &[S; 6]) -> Motion<S> {
         Motion::new(
             Vec3::new(qd[3], qd[4], qd[5]),
             Vec3::new(qd[0], qd[1], qd[2]),
@@ -68,28 +68,31 @@ impl FreeFlyer {
             Motion::new(Vec3::unit(k - 3), Vec3::ZERO)
         }
     }
-    /// `Sᵀ f` into `out[..6]`.
+    /// `Sᵀ f`.
     #[inline]
-    pub fn project_force<S: Scalar>(&self, f: &Force<S>, out: &mut [S]) {
-        out[..3].copy_from_slice(&f.lin.to_array());
-        out[3..6].copy_from_slice(&f.ang.to_array());
+    pub fn project_force<S: Scalar>(&self, f: &Force<S>, out: &mut [S; 6]) {
+        let ([x, y, z], [wx, wy, wz]) = (f.lin.to_array(), f.ang.to_array());
+        *out = [x, y, z, wx, wy, wz];
     }
-    /// `U = I^A S` into `u[..6]`: the columns of `I^A`, reordered.
+    /// `U = I^A S`: the columns of `I^A`, reordered.
     #[inline]
-    pub fn articulated_columns<S: Scalar>(&self, ia: &ArticulatedInertia6<S>, u: &mut [Force<S>]) {
+    pub fn articulated_columns<S: Scalar>(
+        &self,
+        ia: &ArticulatedInertia6<S>,
+        u: &mut [Force<S>; 6],
+    ) {
         for k in 0..3 {
             u[k] = Force::new(ia.b.column(k), ia.c.column(k));
             u[k + 3] = Force::new(ia.a.column(k), ia.b.row(k));
         }
     }
     /// The identity placement.
-    pub fn neutral<S: Scalar>(&self, q: &mut [S]) {
-        q[..6].fill(S::ZERO);
-        q[6] = S::ONE;
+    pub fn neutral<S: Scalar>(&self, q: &mut [S; 7]) {
+        *q = [S::ZERO, S::ZERO, S::ZERO, S::ZERO, S::ZERO, S::ZERO, S::ONE];
     }
     /// `q ⊕ v dt` through the exponential map of SE(3); the quaternion is
     /// renormalised.
-    pub fn integrate<S: Scalar>(&self, q: &[S], v: &[S], dt: S, out: &mut [S]) {
+    pub fn integrate<S: Scalar>(&self, q: &[S; 7], v: &[S; 6], dt: S, out: &mut [S; 7]) {
         let rho = Vec3::new(v[0], v[1], v[2]) * dt;
         let omega = Vec3::new(v[3], v[4], v[5]) * dt;
         let theta2 = omega.norm_squared();
@@ -117,15 +120,15 @@ impl FreeFlyer {
         let p = Vec3::new(q[0], q[1], q[2]) + rot.mul_vec(&delta_p);
         let dq = [omega.x * k, omega.y * k, omega.z * k, half_c];
         let quat = quat_mul(&[q[3], q[4], q[5], q[6]], &dq);
-        out[..3].copy_from_slice(&p.to_array());
-        out[3..7].copy_from_slice(&quat);
+        let ([x, y, z], [qx, qy, qz, qw]) = (p.to_array(), quat);
+        *out = [x, y, z, qx, qy, qz, qw];
         self.normalize(out);
     }
     /// The configuration rate `q̇ = Q(q) v` (7 entries): the body-frame
     /// linear velocity rotated into the parent, and `½ q ⊗ (ω, 0)` for the
     /// quaternion; the derivative of [`integrate`](Self::integrate) at
     /// `dt = 0`.
-    pub fn configuration_rate<S: Scalar>(&self, q: &[S], v: &[S], q_dot: &mut [S]) {
+    pub fn configuration_rate<S: Scalar>(&self, q: &[S; 7], v: &[S; 6], q_dot: &mut [S; 7]) {
         // The rotation is built from the normalised quaternion so that an
         // unnormalised one does not scale the position rate.
         let (x, y, z, w) = (q[3], q[4], q[5], q[6]);
@@ -137,7 +140,8 @@ impl FreeFlyer {
         };
         let rot = Mat3::from_quaternion(x * inv, y * inv, z * inv, w * inv);
         let p_dot = rot.mul_vec(&Vec3::new(v[0], v[1], v[2]));
-        q_dot[..3].copy_from_slice(&p_dot.to_array());
+        let [px, py, pz] = p_dot.to_array();
+        [q_dot[0], q_dot[1], q_dot[2]] = [px, py, pz];
         // q̇ = ½ q ⊗ (ω, 0) is linear in q, so its exact flow keeps |q|
         // constant whatever |q| is.
         let half = S::from_f64(0.5);
@@ -148,8 +152,8 @@ impl FreeFlyer {
         q_dot[6] = -(x * wx + y * wy + z * wz);
     }
     /// Finite coordinates and a quaternion of unit norm.
-    pub fn check_configuration<S: Scalar>(&self, q: &[S]) -> Result<(), ConfigurationError> {
-        if !q[..7].iter().all(|x| x.is_finite()) {
+    pub fn check_configuration<S: Scalar>(&self, q: &[S; 7]) -> Result<(), ConfigurationError> {
+        if !q.iter().all(|x| x.is_finite()) {
             return Err(ConfigurationError::NonFinite);
         }
         // |n² - 1| ≈ 2 |n - 1|; compared in S to keep f64 off the MCU's hot path.
@@ -166,7 +170,7 @@ impl FreeFlyer {
     /// first, so that a norm whose square overflows (1e200) or underflows
     /// (a subnormal quaternion) still normalises; a zero or non-finite
     /// quaternion is left as it is, for the configuration check to report.
-    pub fn normalize<S: Scalar>(&self, q: &mut [S]) {
+    pub fn normalize<S: Scalar>(&self, q: &mut [S; 7]) {
         let largest = q[3..7].iter().fold(S::ZERO, |m, x| m.max(x.abs()));
         if !(largest.is_finite() && largest > S::ZERO) {
             return;

@@ -46,7 +46,10 @@ pub use crate::error::ConfigurationError;
 /// The behaviour of one joint type in a geometry `G`.
 ///
 /// Sizes: `q` has [`nq`](Self::nq) entries, `v`, `qd`, `out` have
-/// [`nv`](Self::nv). Vectors are in the joint's moving frame.
+/// [`nv`](Self::nv). The methods that read `q` or `qd` (the transforms,
+/// [`angle`](Self::angle), the motions) read them from the front and must
+/// accept longer slices: the algorithms pass a joint the state vector from
+/// its first coordinate on. Vectors are in the joint's moving frame.
 pub trait JointModel<S: Scalar, G: Space>: Copy + Debug {
     /// Number of configuration coordinates.
     fn nq(&self) -> usize;
@@ -125,8 +128,9 @@ pub trait JointModel<S: Scalar, G: Space>: Copy + Debug {
     /// [`rate_from_integrate`], a central difference of `integrate`.
     fn configuration_rate(&self, q: &[S], v: &[S], q_dot: &mut [S]) {
         if self.nq() == self.nv() {
-            let n = self.nq();
-            q_dot[..n].copy_from_slice(&v[..n]);
+            for (d, v) in q_dot.iter_mut().zip(v).take(self.nq()) {
+                *d = *v;
+            }
         } else {
             rate_from_integrate(self, q, v, q_dot);
         }
@@ -164,8 +168,25 @@ pub fn rate_from_integrate<S: Scalar, G: Space, J: JointModel<S, G>>(
     joint.integrate(q, v, h, &mut ahead[..n]);
     joint.integrate(q, v, -h, &mut behind[..n]);
     let inv = S::ONE / (h + h);
-    for k in 0..n {
-        q_dot[k] = (ahead[k] - behind[k]) * inv;
+    for ((d, a), b) in q_dot.iter_mut().zip(&ahead[..n]).zip(&behind[..n]) {
+        *d = (*a - *b) * inv;
+    }
+}
+
+/// `x[0]`, or zero when `x` is empty: a one-coordinate joint's entry
+/// without a panic path. The algorithms hand each joint its `nq` (or `nv`)
+/// entries, which [`Topology::new`](crate::topology::Topology::new) checks
+/// fit the state vectors, so the zero is never read for a valid model.
+#[inline(always)]
+pub(crate) fn first<S: Scalar>(x: &[S]) -> S {
+    x.first().copied().unwrap_or(S::ZERO)
+}
+
+/// Writes `value` to `x[0]`, when `x` has an entry (see [`first`]).
+#[inline(always)]
+pub(crate) fn set_first<S: Scalar>(x: &mut [S], value: S) {
+    if let Some(x) = x.first_mut() {
+        *x = value;
     }
 }
 
@@ -266,11 +287,14 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
     #[inline]
     fn transform(&self, q: &[S]) -> Transform<S> {
         match self {
-            Self::Revolute(j) => j.transform(q[0]),
-            Self::Prismatic(j) => j.transform(q[0]),
+            Self::Revolute(j) => j.transform(first(q)),
+            Self::Prismatic(j) => j.transform(first(q)),
             Self::Fixed => Transform::from_translation(crate::spatial::Vec3::ZERO),
-            Self::FreeFlyer(j) => j.transform(q),
-            Self::Custom(c) => c.behaviour.transform(q),
+            // A slice of another length is a caller's bug (see `first`).
+            Self::FreeFlyer(j) => q
+                .first_chunk()
+                .map_or(Transform::IDENTITY, |q| j.transform(q)),
+            Self::Custom(c) => c.transform(q),
         }
     }
     #[cfg_attr(rodyn_tuning = "out_of_order", inline(always))]
@@ -278,13 +302,13 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
     fn placed_transform(&self, placement: &Transform<S>, q: &[S]) -> Transform<S> {
         use crate::space::RigidTransform;
         match self {
-            Self::Revolute(j) => j.placed_transform(placement, q[0]),
+            Self::Revolute(j) => j.placed_transform(placement, first(q)),
             _ => placement.compose(&self.transform(q)),
         }
     }
     #[inline(always)]
     fn angle(&self, q: &[S]) -> Option<S> {
-        matches!(self, Self::Revolute(_)).then(|| q[0])
+        matches!(self, Self::Revolute(_)).then(|| first(q))
     }
     #[inline(always)]
     fn placed_transform_from_sin_cos(
@@ -301,11 +325,13 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
     #[inline(always)]
     fn motion(&self, qd: &[S]) -> Motion<S> {
         match self {
-            Self::Revolute(j) => j.motion(qd[0]),
-            Self::Prismatic(j) => j.motion(qd[0]),
+            Self::Revolute(j) => j.motion(first(qd)),
+            Self::Prismatic(j) => j.motion(first(qd)),
             Self::Fixed => crate::space::VectorOps::ZERO,
-            Self::FreeFlyer(j) => j.motion(qd),
-            Self::Custom(c) => c.behaviour.motion(qd),
+            Self::FreeFlyer(j) => qd
+                .first_chunk()
+                .map_or(crate::space::VectorOps::ZERO, |qd| j.motion(qd)),
+            Self::Custom(c) => c.motion(qd),
         }
     }
     #[inline]
@@ -318,8 +344,8 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
     #[inline(always)]
     fn add_motion(&self, m: &Motion<S>, qd: &[S]) -> Motion<S> {
         match self {
-            Self::Revolute(j) => j.add_motion(m, qd[0]),
-            Self::Prismatic(j) => j.add_motion(m, qd[0]),
+            Self::Revolute(j) => j.add_motion(m, first(qd)),
+            Self::Prismatic(j) => j.add_motion(m, first(qd)),
             Self::Fixed => *m,
             _ => *m + self.motion(qd),
         }
@@ -328,8 +354,8 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
     fn cross_motion(&self, v: &Motion<S>, qd: &[S]) -> Motion<S> {
         use crate::space::MotionVector;
         match self {
-            Self::Revolute(j) => j.cross_motion(v, qd[0]),
-            Self::Prismatic(j) => j.cross_motion(v, qd[0]),
+            Self::Revolute(j) => j.cross_motion(v, first(qd)),
+            Self::Prismatic(j) => j.cross_motion(v, first(qd)),
             Self::Fixed => crate::space::VectorOps::ZERO,
             _ => v.cross_motion(&self.motion(qd)),
         }
@@ -347,20 +373,36 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
     #[inline(always)]
     fn project_force(&self, f: &Force<S>, out: &mut [S]) {
         match self {
-            Self::Revolute(j) => out[0] = j.project_force(f),
-            Self::Prismatic(j) => out[0] = j.project_force(f),
+            Self::Revolute(j) => set_first(out, j.project_force(f)),
+            Self::Prismatic(j) => set_first(out, j.project_force(f)),
             Self::Fixed => {}
-            Self::FreeFlyer(j) => j.project_force(f, out),
+            Self::FreeFlyer(j) => {
+                if let Some(out) = out.first_chunk_mut() {
+                    j.project_force(f, out);
+                }
+            }
             Self::Custom(c) => c.behaviour.project_force(f, out),
         }
     }
     #[inline(always)]
     fn articulated_columns(&self, ia: &ArticulatedInertia6<S>, u: &mut [Force<S>]) {
         match self {
-            Self::Revolute(j) => u[0] = j.articulated_column(ia),
-            Self::Prismatic(j) => u[0] = j.articulated_column(ia),
+            Self::Revolute(j) => {
+                if let Some(u) = u.first_mut() {
+                    *u = j.articulated_column(ia);
+                }
+            }
+            Self::Prismatic(j) => {
+                if let Some(u) = u.first_mut() {
+                    *u = j.articulated_column(ia);
+                }
+            }
             Self::Fixed => {}
-            Self::FreeFlyer(j) => j.articulated_columns(ia, u),
+            Self::FreeFlyer(j) => {
+                if let Some(u) = u.first_chunk_mut() {
+                    j.articulated_columns(ia, u);
+                }
+            }
             Self::Custom(c) => {
                 use crate::space::ArticulatedInertia;
                 for (k, uk) in u.iter_mut().enumerate().take(c.nv) {
@@ -371,26 +413,46 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
     }
     fn neutral(&self, q: &mut [S]) {
         match self {
-            Self::Revolute(_) | Self::Prismatic(_) => q[0] = S::ZERO,
+            Self::Revolute(_) | Self::Prismatic(_) => set_first(q, S::ZERO),
             Self::Fixed => {}
-            Self::FreeFlyer(j) => j.neutral(q),
+            Self::FreeFlyer(j) => {
+                if let Some(q) = q.first_chunk_mut() {
+                    j.neutral(q);
+                }
+            }
             Self::Custom(c) => c.behaviour.neutral(q),
         }
     }
     fn integrate(&self, q: &[S], v: &[S], dt: S, out: &mut [S]) {
         match self {
-            Self::Revolute(_) | Self::Prismatic(_) => out[0] = q[0] + v[0] * dt,
+            Self::Revolute(_) | Self::Prismatic(_) => set_first(out, first(q) + first(v) * dt),
             Self::Fixed => {}
-            Self::FreeFlyer(j) => j.integrate(q, v, dt, out),
+            Self::FreeFlyer(j) => {
+                if let (Some(q), Some(v), Some(out)) =
+                    (q.first_chunk(), v.first_chunk(), out.first_chunk_mut())
+                {
+                    j.integrate(q, v, dt, out);
+                }
+            }
             Self::Custom(c) => c.behaviour.integrate(q, v, dt, out),
         }
     }
     fn configuration_rate(&self, q: &[S], v: &[S], q_dot: &mut [S]) {
         match self {
-            Self::Revolute(_) | Self::Prismatic(_) => q_dot[0] = v[0],
+            Self::Revolute(_) | Self::Prismatic(_) => set_first(q_dot, first(v)),
             Self::Fixed => {}
-            Self::FreeFlyer(j) => j.configuration_rate(q, v, q_dot),
-            Self::Custom(c) if c.nq == c.nv => q_dot[..c.nq].copy_from_slice(&v[..c.nv]),
+            Self::FreeFlyer(j) => {
+                if let (Some(q), Some(v), Some(q_dot)) =
+                    (q.first_chunk(), v.first_chunk(), q_dot.first_chunk_mut())
+                {
+                    j.configuration_rate(q, v, q_dot);
+                }
+            }
+            Self::Custom(c) if c.nq == c.nv => {
+                for (d, v) in q_dot.iter_mut().zip(v).take(c.nq) {
+                    *d = *v;
+                }
+            }
             Self::Custom(_) => rate_from_integrate(self, q, v, q_dot),
         }
     }
@@ -400,7 +462,11 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
     }
     fn check_configuration(&self, q: &[S]) -> Result<(), ConfigurationError> {
         match self {
-            Self::FreeFlyer(j) => j.check_configuration(q),
+            Self::FreeFlyer(j) => q
+                .first_chunk()
+                .map_or(Err(ConfigurationError::NonFinite), |q| {
+                    j.check_configuration(q)
+                }),
             Self::Custom(c) => c.behaviour.check_configuration(q),
             _ => {
                 if q.iter().take(self.nq()).all(|x| x.is_finite()) {
@@ -413,7 +479,11 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
     }
     fn normalize(&self, q: &mut [S]) {
         match self {
-            Self::FreeFlyer(j) => j.normalize(q),
+            Self::FreeFlyer(j) => {
+                if let Some(q) = q.first_chunk_mut() {
+                    j.normalize(q);
+                }
+            }
             Self::Custom(c) => c.behaviour.normalize(q),
             _ => {}
         }

@@ -71,12 +71,16 @@ pub fn configuration_rate<
     let mut q_dot = [S::ZERO; NQ];
     for i in 0..NB {
         let (iq, nq, iv, nv) = (t.idx_q[i], t.nq[i], t.idx_v[i], t.nv[i]);
-        G::joint_configuration_rate(
-            model.joint(i),
-            &q[iq..iq + nq],
-            &v[iv..iv + nv],
-            &mut q_dot[iq..iq + nq],
-        );
+        // A valid topology keeps the ranges in `q` and `v`
+        // (`Topology::try_new`); one that does not fit leaves those rates zero.
+        let (Some(q_i), Some(v_i), Some(q_dot_i)) = (
+            q.get(iq..iq + nq),
+            v.get(iv..iv + nv),
+            q_dot.get_mut(iq..iq + nq),
+        ) else {
+            continue;
+        };
+        G::joint_configuration_rate(model.joint(i), q_i, v_i, q_dot_i);
     }
     q_dot
 }
