@@ -73,13 +73,28 @@ pub fn aba<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: 
     f_ext: Option<&[G::Force<S>; NB]>,
 ) -> Result<&'d [S; NV]> {
     check_state(model, q, Some(v))?;
-    check_finite(tau, Quantity::Torque)?;
     check_external(f_ext.map(|f| &f[..]))?;
     velocity_and_bias_pass(model, data, q, v, f_ext);
     backward_pass(model, data, tau)?;
     forward_acceleration_pass(model, data);
-    check_result(&data.ddq, Quantity::Acceleration)?;
+    if let Err(overflow) = check_result(&data.ddq, Quantity::Acceleration) {
+        return Err(name_non_finite_result(tau, overflow));
+    }
     Ok(&data.ddq)
+}
+
+/// The error of a non-finite q̈: a non-finite torque when there is one,
+/// else the overflow. A non-finite torque always makes its own
+/// coordinate's q̈ non-finite (q̈ = D⁻¹ (τ − Sᵀ pᴬ − Uᵀ a′) has no other
+/// path), so the torques are looked at only here, to name the cause, and
+/// not on every call.
+#[cold]
+#[inline(never)]
+fn name_non_finite_result<S: Scalar>(tau: &[S], overflow: Error) -> Error {
+    match check_finite(tau, Quantity::Torque) {
+        Err(torque) => torque,
+        Ok(()) => overflow,
+    }
 }
 
 /// Pass 1: `ˡⁱMᵢ`, `vᵢ`, `cᵢ`, `Iᴬᵢ = Iᵢ` and `pᴬᵢ = vᵢ ×* Iᵢ vᵢ - fᵉˣᵗᵢ`.
