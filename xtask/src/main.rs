@@ -118,6 +118,7 @@ fn test() -> Result<()> {
     }
     firmware::agreement_against_fresh_run()?;
     costs::check_sizes()?;
+    costs::check_goals_of_last_run()?;
     panic_sites::check()?;
     stack_bound::check()?;
     lint()?;
