@@ -671,27 +671,27 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
     }
 }
 
-/// Whether every entry of `x` is finite: `v − v` is zero for a finite `v`
-/// and NaN otherwise, and a sum of zeros cannot overflow, so the sum of
-/// the differences is finite exactly when every entry is. Four partial
-/// sums and no early exit, so that the test of a whole matrix runs in
-/// vector lanes; the search for the entry to name runs only on failure.
-// `v − v` is the point: it is not zero for an infinite or NaN `v`.
-#[allow(clippy::eq_op)]
+/// `true` only when every entry of `x` is finite: an infinite or NaN entry
+/// makes the sum of the entries infinite or NaN, so a finite sum proves
+/// them all finite. `false` also when the sum of finite entries overflows;
+/// the caller then searches the entries. One addition per entry, sixteen
+/// partial sums and no early exit, so that the test of a whole matrix runs
+/// in vector lanes with enough independent sums to hide the additions'
+/// latency.
 #[inline]
 fn all_finite<S: Scalar>(x: &[S]) -> bool {
-    let chunks = x.chunks_exact(4);
+    let chunks = x.chunks_exact(16);
     let rest = chunks.remainder();
-    let mut sums = [S::ZERO; 4];
+    let mut sums = [S::ZERO; 16];
     for chunk in chunks {
         for (sum, v) in sums.iter_mut().zip(chunk) {
-            *sum += *v - *v;
+            *sum += *v;
         }
     }
     for (sum, v) in sums.iter_mut().zip(rest) {
-        *sum += *v - *v;
+        *sum += *v;
     }
-    ((sums[0] + sums[1]) + (sums[2] + sums[3])).is_finite()
+    sums.iter().fold(S::ZERO, |a, b| a + *b).is_finite()
 }
 
 /// The error of a topology whose index tables do not fit the model's
@@ -723,12 +723,39 @@ pub(crate) fn check_result<S: Scalar>(x: &[S], quantity: Quantity) -> Result<()>
 }
 
 /// [`check_result`] for large results (the derivative matrices): the
-/// vectorised test first, the search for the entry to name only on
-/// failure. Its own function so that images that check only short
-/// vectors do not grow.
+/// vectorised test first, the search for the entry to name (or for none,
+/// when the test's sum overflowed) only on failure. Its own function so
+/// that images that check only short vectors do not grow.
 pub(crate) fn check_matrix_result<S: Scalar>(x: &[S], quantity: Quantity) -> Result<()> {
     if all_finite(x) {
         return Ok(());
     }
     check_result(x, quantity)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The vectorised test passes finite entries whose sum overflows (after
+    /// the search finds none) and names the first non-finite entry, also
+    /// when infinities of both signs would cancel to NaN in the sum.
+    #[test]
+    fn matrix_check_overflowing_sum_and_named_entry() {
+        assert!(check_matrix_result(&[f64::MAX; 20], Quantity::Derivative).is_ok());
+        assert!(check_matrix_result(&[f32::MAX; 7], Quantity::Derivative).is_ok());
+        let mut x = [1.0f64; 37];
+        x[33] = f64::NAN;
+        assert!(matches!(
+            check_matrix_result(&x, Quantity::Derivative),
+            Err(Error::NonFiniteResult { index: 33, .. })
+        ));
+        x[33] = 1.0;
+        x[5] = f64::INFINITY;
+        x[21] = f64::NEG_INFINITY;
+        assert!(matches!(
+            check_matrix_result(&x, Quantity::Derivative),
+            Err(Error::NonFiniteResult { index: 5, .. })
+        ));
+    }
 }
