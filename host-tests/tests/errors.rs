@@ -369,6 +369,49 @@ fn hand_built_inconsistent_topology_is_an_error_not_a_panic() {
     );
 }
 
+/// CRBA's local pass on hand-built topologies whose subtree ranges or
+/// parents do not fit the model: it skips what does not fit instead of
+/// indexing past the ends (a joint's own coordinates past the end of v
+/// are still indexed: the firmware's cost table kept that check).
+#[test]
+fn crba_on_a_hand_built_inconsistent_topology_does_not_panic() {
+    use rodyn::topology::Topology;
+    let good = arm(1.0, 0.01);
+    let inertias = [
+        Inertia::new(
+            1.0,
+            Vec3::new(0.25, 0.0, 0.0),
+            Sym3::diagonal(0.01, 0.02, 0.02),
+        ),
+        Inertia::new(1.0, Vec3::ZERO, Sym3::diagonal(0.01, 0.01, 0.01)),
+    ];
+    let edits: [fn(&mut Topology<2, 2>); 3] = [
+        // A subtree's coordinates past the end of v.
+        |t| t.subtree_end_v[0] = 5,
+        // A subtree that ends before it starts.
+        |t| t.subtree_end_v[1] = 0,
+        // A body its own parent.
+        |t| t.parents[1] = Some(1),
+    ];
+    for edit in edits {
+        let mut topology = *good.topology();
+        edit(&mut topology);
+        let model: Model<f64, 2, 2, 2> = Model::from_parts(
+            topology,
+            [Joint::revolute(Axis::Z), Joint::revolute(Axis::Z)],
+            [
+                Transform::IDENTITY,
+                Transform::from_translation(Vec3::new(0.5, 0.0, 0.0)),
+            ],
+            inertias,
+            Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
+        );
+        let mut data = Data::new();
+        // Whatever it returns, it returns.
+        let _ = crba(&model, &mut data, &[0.1, 0.2]);
+    }
+}
+
 /// The built-in joints read their coordinates from the front of the
 /// slices they are given (the algorithms pass the state from a joint's
 /// first coordinate on) and do not panic on a short one.

@@ -181,7 +181,11 @@ fn free_flyer_block<S: Scalar, const NV: usize>(
         &[-mc.y, mc.x, z, b(2, 0), b(2, 1), b(2, 2)],
     ];
     for (r, entries) in block.into_iter().enumerate().take(rows.len()) {
-        rows[r][iv..iv + entries.len()].copy_from_slice(entries);
+        // The caller's rows hold the joint's six coordinates from `iv`.
+        let Some(row) = rows[r].get_mut(iv..iv + entries.len()) else {
+            return;
+        };
+        row.copy_from_slice(entries);
         if upper {
             for (c, &entry) in entries.iter().enumerate() {
                 rows[c][iv + r] = entry;

@@ -70,10 +70,13 @@ impl<S: Scalar> Mat3<S> {
         ])
     }
 
-    /// Column `k`.
+    /// Column `k`; a `k` past 2 reads the last column (as
+    /// [`Sym3::column`](super::Sym3::column)), which keeps a panic path out
+    /// of the callers whose `k` the optimiser cannot bound.
     #[inline]
     #[must_use]
     pub fn column(&self, k: usize) -> Vec3<S> {
+        let k = k.min(2);
         Vec3::new(self.m[0][k], self.m[1][k], self.m[2][k])
     }
     /// Row `k`.
@@ -252,5 +255,19 @@ impl<S: Scalar> core::ops::Sub for Mat3<S> {
             row(self.m[1], o.m[1]),
             row(self.m[2], o.m[2]),
         ])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A column index past 2 reads the last column instead of panicking.
+    #[test]
+    fn column_past_the_end_is_the_last() {
+        let m = Mat3::from_rows([[1.0, 2.0, 3.0], [4.0, 5.0, 6.0], [7.0, 8.0, 9.0]]);
+        assert_eq!(m.column(1), Vec3::new(2.0, 5.0, 8.0));
+        assert_eq!(m.column(3), m.column(2));
+        assert_eq!(m.column(usize::MAX), Vec3::new(3.0, 6.0, 9.0));
     }
 }

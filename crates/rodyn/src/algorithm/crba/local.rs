@@ -75,34 +75,34 @@ pub(super) fn backward_body<
     ) {
         let end = t.subtree_end_v[i];
         let (ancestors, rest) = data.ic.split_at_mut(i);
-        if G::crba_axis_body(
-            step,
-            axis,
-            &rest[0],
-            &mut ancestors[p],
-            &mut columns[iv..end],
-            &mut data.mass_matrix[iv..end],
-            iv,
-            upper,
+        // A valid topology has `p < i` and its subtree's coordinates in
+        // range; one that does not is left to the general step below.
+        if let (Some(ic_i), Some(ancestor), Some(subtree), Some(rows)) = (
+            rest.first(),
+            ancestors.get_mut(p),
+            columns.get_mut(iv..end),
+            data.mass_matrix.get_mut(iv..end),
         ) {
-            return;
+            if G::crba_axis_body(step, axis, ic_i, ancestor, subtree, rows, iv, upper) {
+                return;
+            }
         }
     }
     if G::FUSES_CRBA_STEPS && t.subtrees_contiguous && t.parents[i].is_none() && nv == 6 {
         let end = t.subtree_end_v[i];
-        if G::crba_free_root(
-            joint,
-            &data.ic[i],
-            &columns[iv + 6..end],
-            &mut data.mass_matrix[iv..end],
-            iv,
-            upper,
+        if let (Some(ic_i), Some(subtree), Some(rows)) = (
+            data.ic.get(i),
+            columns.get(iv + 6..end),
+            data.mass_matrix.get_mut(iv..end),
         ) {
-            return;
+            if G::crba_free_root(joint, ic_i, subtree, rows, iv, upper) {
+                return;
+            }
         }
     }
+    let Some(ic_i) = data.ic.get(i) else { return };
     for k in 0..nv {
-        columns[iv + k] = G::turned_inertia_column(frame, &data.ic[i], joint, k);
+        columns[iv + k] = G::turned_inertia_column(frame, ic_i, joint, k);
     }
     if t.subtrees_contiguous {
         let end = t.subtree_end_v[i];
@@ -117,8 +117,8 @@ pub(super) fn backward_body<
             columns,
             upper,
         );
-        if let Some(step) = step {
-            G::step_forces(step, &mut columns[iv..end]);
+        if let (Some(step), Some(subtree)) = (step, columns.get_mut(iv..end)) {
+            G::step_forces(step, subtree);
         }
     } else {
         // The subtree's coordinates all follow body i's first.
@@ -135,14 +135,16 @@ pub(super) fn backward_body<
                     false,
                 );
                 if let Some(step) = step {
-                    G::step_forces(step, &mut columns[d..=d]);
+                    G::step_forces(step, core::slice::from_mut(&mut columns[d]));
                 }
             }
         }
     }
     if let (Some(p), Some(step)) = (t.parents[i], step) {
-        let ic_i = data.ic[i];
-        G::add_stepped_inertia(&mut data.ic[p], step, &ic_i);
+        let ic_i = *ic_i;
+        if let Some(ic_p) = data.ic.get_mut(p) {
+            G::add_stepped_inertia(ic_p, step, &ic_i);
+        }
     }
 }
 
@@ -168,7 +170,15 @@ fn project_rows<S: Scalar, J: JointModel<S, G>, G: Space, const NV: usize>(
     // subtree here is one to 30 rows; longer chains in `f64` take
     // `about_root`). On the Panda and Solo12, fewer instructions than
     // zipped slice iterators (the performance notebook, "CRBA").
-    let (m, columns) = (&mut m[..rows.end], &columns[..rows.end]);
+    let (Some(m), Some(columns)) = (m.get_mut(..rows.end), columns.get(..rows.end)) else {
+        return;
+    };
+    // The rows start at the joint's first coordinate or after it, so a
+    // range with rows has `iv < rows.end`; stated, it puts every `[iv]`
+    // below in range.
+    if iv >= rows.end || nv > MAX_JOINT_NV {
+        return;
+    }
     match (nv, axis) {
         (0, _) => {}
         // A coordinate axis reads one component of each column.
@@ -181,7 +191,7 @@ fn project_rows<S: Scalar, J: JointModel<S, G>, G: Space, const NV: usize>(
         // One coordinate: its own row is the diagonal alone.
         (1, None) => {
             for d in rows {
-                joint.project_force(&columns[d], &mut m[d][iv..=iv]);
+                joint.project_force(&columns[d], core::slice::from_mut(&mut m[d][iv]));
                 if upper {
                     m[iv][d] = m[d][iv];
                 }
@@ -190,11 +200,14 @@ fn project_rows<S: Scalar, J: JointModel<S, G>, G: Space, const NV: usize>(
         _ => {
             for d in rows {
                 if d < iv + nv {
+                    // The joint's own row: its block's lower triangle only.
                     let mut projected = [S::ZERO; MAX_JOINT_NV];
                     joint.project_force(&columns[d], &mut projected[..nv]);
-                    m[d][iv..=d].copy_from_slice(&projected[..=d - iv]);
-                } else {
-                    joint.project_force(&columns[d], &mut m[d][iv..iv + nv]);
+                    for (e, p) in m[d].iter_mut().take(d + 1).skip(iv).zip(projected) {
+                        *e = p;
+                    }
+                } else if let Some(entries) = m[d].get_mut(iv..iv + nv) {
+                    joint.project_force(&columns[d], entries);
                 }
                 if upper {
                     for k in iv..(iv + nv).min(d + 1) {
