@@ -13,6 +13,7 @@
 //! `cargo xtask panic-sites [image]` lists the sites by function and line.
 
 use crate::firmware::{self, EXAMPLES};
+use crate::profile::short_function;
 use crate::setup;
 use anyhow::{anyhow, bail, Context, Result};
 use std::collections::BTreeMap;
@@ -279,27 +280,6 @@ fn short_file(file: &str) -> String {
         }
         None => file.to_string(),
     }
-}
-
-/// A function's path without generic arguments and hash, last two segments.
-fn short_function(name: &str) -> String {
-    let mut depth = 0;
-    let plain: String = name
-        .chars()
-        .filter(|c| {
-            match c {
-                '<' => depth += 1,
-                '>' => depth -= 1,
-                _ => return depth == 0,
-            }
-            false
-        })
-        .collect();
-    let segments: Vec<&str> = plain
-        .split("::")
-        .filter(|s| !(s.is_empty() || s.len() == 17 && s.starts_with('h')))
-        .collect();
-    segments[segments.len().saturating_sub(2)..].join("::")
 }
 
 /// Every image's counts per source.

@@ -214,7 +214,7 @@ impl Lines {
 }
 
 /// A function's path without generic arguments and hash, last two segments.
-fn short_function(name: &str) -> String {
+pub(crate) fn short_function(name: &str) -> String {
     let mut depth = 0;
     let plain: String = name
         .chars()
@@ -227,7 +227,11 @@ fn short_function(name: &str) -> String {
             false
         })
         .collect();
-    let segments: Vec<&str> = plain.split("::").filter(|s| !s.is_empty()).collect();
+    // A symbol's hash segment (`h` and 16 hex digits) is dropped too.
+    let segments: Vec<&str> = plain
+        .split("::")
+        .filter(|s| !(s.is_empty() || s.len() == 17 && s.starts_with('h')))
+        .collect();
     segments[segments.len().saturating_sub(2)..].join("::")
 }
 
