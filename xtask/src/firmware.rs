@@ -242,6 +242,29 @@ pub fn check_no_allocator(example: &Example) -> Result<()> {
     Ok(())
 }
 
+/// The firmware that panics inside its panic handler's logging
+/// (`firmware/src/bin/panic_reentry.rs`; not an example).
+const PANIC_REENTRY: &str = "panic_reentry";
+
+/// Runs the panic-reentry firmware and requires the panic exit code: the
+/// handler, entered again by its own log line, must end the run instead of
+/// recursing into a fault (which QEMU's timeout would report as a hang).
+pub fn check_panic_reentry() -> Result<()> {
+    const PANICKED: i32 = 101;
+    let outcome = run_elf(&elf_of(PANIC_REENTRY), &[], |_| {})?;
+    if outcome.exit_code != PANICKED {
+        for line in &outcome.lines {
+            println!("  | {line}");
+        }
+        bail!(
+            "{PANIC_REENTRY} exited with code {} (expected {PANICKED}: a panic inside the panic handler's log line must end the run)",
+            outcome.exit_code
+        );
+    }
+    println!("firmware {PANIC_REENTRY}: a second panic in the handler exits with {PANICKED}");
+    Ok(())
+}
+
 /// Runs the host's f64 recomputation against the log of this run of the
 /// `agreement` example (plain `cargo test` checks the checked-in log).
 pub fn agreement_against_fresh_run() -> Result<()> {

@@ -117,6 +117,7 @@ fn test() -> Result<()> {
         }
     }
     firmware::agreement_against_fresh_run()?;
+    firmware::check_panic_reentry()?;
     costs::check_sizes()?;
     costs::check_goals_of_last_run()?;
     panic_sites::check()?;
