@@ -60,7 +60,7 @@ pub trait MotionVector<S: Scalar>: VectorOps<S> {
 pub trait ForceVector<S: Scalar>: VectorOps<S> {}
 
 /// A rigid coordinate transform `aMb` from frame b to frame a (Plücker `ᵃX_b`).
-pub trait RigidTransform<S: Scalar>: Copy + Debug {
+pub trait RigidTransform<S: Scalar>: Copy + Debug + PartialEq {
     /// Motion vectors it acts on.
     type Motion: MotionVector<S, Force = Self::Force>;
     /// Force vectors it acts on.
@@ -90,7 +90,7 @@ pub trait RigidTransform<S: Scalar>: Copy + Debug {
 }
 
 /// The spatial inertia of one rigid body (mass, centre of mass, rotational inertia).
-pub trait BodyInertia<S: Scalar>: Copy + Debug {
+pub trait BodyInertia<S: Scalar>: Copy + Debug + PartialEq {
     /// Motion vectors it maps from.
     type Motion: MotionVector<S, Force = Self::Force>;
     /// Force vectors it maps to.
@@ -199,6 +199,11 @@ pub trait Space: Copy + Debug + PartialEq + 'static {
     /// [`Self::crba_free_root`]): without them CRBA does not look for
     /// them, and carries no code for the test.
     const FUSES_CRBA_STEPS: bool = false;
+    /// Whether CRBA can turn this geometry's body frames (whether its
+    /// placements can be quarter turns, [`Self::axis_permutation`]):
+    /// without, a CRBA plan holds nothing the model does not, and the
+    /// planned entries read the model instead.
+    const TURNS_FRAMES: bool = false;
     /// Motion vectors.
     type Motion<S: Scalar>: MotionVector<S, Force = Self::Force<S>>;
     /// Force vectors.
@@ -345,7 +350,7 @@ pub trait Space: Copy + Debug + PartialEq + 'static {
     }
     /// [`Self::joint_step`] from body i's turned frame to its parent's,
     /// given its placement seen from the parent's turned frame
-    /// ([`Model::turned_placement`](crate::Model::turned_placement)).
+    /// ([`CrbaPlan::placement`](crate::algorithm::crba::CrbaPlan::placement)).
     /// `sin_cos`, when the caller has formed it, is the sine and cosine of
     /// [`Self::step_angle`].
     #[inline(always)]
@@ -370,14 +375,16 @@ pub trait Space: Copy + Debug + PartialEq + 'static {
         Self::step(x)
     }
     /// `parent x`: body i's pose from its parent's (`parent`) and its
-    /// joint transform `x = ˡⁱMᵢ` ([`RigidTransform::compose`]); a geometry
-    /// may skip products that the body's `frame` tells are with zeros
-    /// (giving the same result, bit for bit).
+    /// joint transform `x = ˡⁱMᵢ` ([`RigidTransform::compose`]), `x` formed
+    /// from `joint` behind `placement`; a geometry may skip products that
+    /// the joint and placement tell are with zeros (giving the same
+    /// result, bit for bit).
     #[inline(always)]
     fn then_joint<S: Scalar>(
         parent: &Self::Transform<S>,
         x: &Self::Transform<S>,
-        _frame: &TurnedFrame,
+        _joint: &Self::Joint<S>,
+        _placement: &Self::Transform<S>,
     ) -> Self::Transform<S> {
         parent.compose(x)
     }

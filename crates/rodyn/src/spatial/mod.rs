@@ -44,6 +44,7 @@ pub struct Spatial;
 impl Space for Spatial {
     const DIM: usize = 6;
     const FUSES_CRBA_STEPS: bool = true;
+    const TURNS_FRAMES: bool = true;
     type Motion<S: Scalar> = Motion<S>;
     type Force<S: Scalar> = Force<S>;
     type Point<S: Scalar> = Vec3<S>;
@@ -252,18 +253,25 @@ impl Space for Spatial {
     fn then_joint<S: Scalar>(
         parent: &Transform<S>,
         x: &Transform<S>,
-        frame: &TurnedFrame,
+        joint: &Joint<S>,
+        placement: &Transform<S>,
     ) -> Transform<S> {
+        use crate::joint::JointModel;
         // Behind a placement without rotation, a revolute joint about a
         // coordinate axis turns two of its parent's columns by its angle,
         // whose cosine and sine are entries of `x`'s rotation: the product
-        // with `x` would only add exact zeros besides.
+        // with `x` would only add exact zeros besides. The placement says
+        // so itself (a few comparisons, fewer than the products they
+        // save), so that kinematics needs no per-model plan.
+        let k = match joint.revolute_axis_index() {
+            Some(k) if placement.rot.is_identity() => k,
+            _ => return parent.compose(x),
+        };
         let m = &x.rot.m;
-        let rot = match frame.unturned_axis() {
-            Some(0) => parent.rot.mul_axis_rotation(0, m[2][1], m[1][1]),
-            Some(1) => parent.rot.mul_axis_rotation(1, m[0][2], m[2][2]),
-            Some(_) => parent.rot.mul_axis_rotation(2, m[1][0], m[0][0]),
-            None => return parent.compose(x),
+        let rot = match k {
+            0 => parent.rot.mul_axis_rotation(0, m[2][1], m[1][1]),
+            1 => parent.rot.mul_axis_rotation(1, m[0][2], m[2][2]),
+            _ => parent.rot.mul_axis_rotation(2, m[1][0], m[0][0]),
         };
         Transform::new(rot, parent.act_point(&x.trans))
     }
@@ -366,4 +374,49 @@ pub(super) fn add_shifted_inertia<S: Scalar>(acc: &mut Inertia<S>, i: &Inertia<S
     acc.com = (acc.com * acc.mass + com_i * i.mass) * inv;
     acc.rot_inertia = acc.rot_inertia + i.rot_inertia + Sym3::parallel_axis(&d).scale(reduced);
     acc.mass = mass;
+}
+
+#[cfg(all(test, feature = "std"))]
+mod tests {
+    use crate::joint::{Axis, Joint};
+    use crate::space::{RigidTransform, Space};
+    use crate::spatial::{AxisPermutation, Mat3, Spatial, Transform, Vec3};
+
+    /// `Spatial::then_joint` gives the composition `parent x`, bit for bit,
+    /// behind every kind of placement (the identity, a quarter turn, a
+    /// general rotation) for joints about each coordinate axis and others.
+    #[test]
+    fn then_joint_is_the_composition() {
+        let parent = Transform::new(
+            Mat3::from_axis_angle(&Vec3::new(0.36, -0.48, 0.8), 0.9),
+            Vec3::new(0.4, -1.3, 0.7),
+        );
+        let quarter = AxisPermutation::from_rows([[1, 0, 0], [0, 0, -1], [0, 1, 0]]);
+        let joints = [
+            Joint::revolute(Axis::X),
+            Joint::revolute(Axis::Y),
+            Joint::revolute(Axis::Z),
+            Joint::revolute(Axis::Unit(Vec3::new(0.0, 0.6, 0.8))),
+            Joint::prismatic(Axis::Y),
+        ];
+        let rotations = [
+            Mat3::IDENTITY,
+            quarter.matrix(),
+            Mat3::from_axis_angle(&Vec3::new(0.6, 0.0, 0.8), 0.4),
+        ];
+        for rot in rotations {
+            for joint in &joints {
+                use crate::joint::JointModel;
+                let placement = Transform::new(rot, Vec3::new(0.1, -0.25, 0.3));
+                for q in [0.0, 0.7, -2.9] {
+                    let x = joint.placed_transform(&placement, &[q]);
+                    assert_eq!(
+                        Spatial::then_joint(&parent, &x, joint, &placement),
+                        parent.compose(&x),
+                        "{rot:?} {joint:?} {q}"
+                    );
+                }
+            }
+        }
+    }
 }
