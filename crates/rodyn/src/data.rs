@@ -20,7 +20,7 @@
 //!
 //! ¹ Body i's own frame after [`crba`](crate::algorithm::crba::crba);
 //! after the planned entries, its frame turned by
-//! [`TurnedFrame::turn`](crate::spatial::TurnedFrame::turn) of the plan's
+//! [`TurnedFrame::turn`](crate::algorithm::crba::TurnedFrame::turn) of the plan's
 //! [`CrbaPlan::frame`](crate::algorithm::crba::CrbaPlan::frame)`(i)` (the
 //! quarter turns of the placements above it; the identity at a root).
 

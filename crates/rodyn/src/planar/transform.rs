@@ -6,6 +6,7 @@
 
 use super::{PlanarForce, PlanarMotion, Vec2};
 use crate::space::RigidTransform;
+use crate::spatial::ParameterProblem;
 use crate::Scalar;
 
 /// A planar rigid transform `aMb`.
@@ -20,6 +21,25 @@ pub struct PlanarTransform<S> {
 }
 
 impl<S: Scalar> PlanarTransform<S> {
+    /// Checks a placement: finite, a translation whose `|p|⁴` is finite
+    /// (as the 3-D placements: ABA multiplies two `m |p|²` entries), and
+    /// `cos² + sin² = 1` to 10³ ε.
+    ///
+    /// # Errors
+    /// The first [`ParameterProblem`] found.
+    pub fn validate(&self) -> Result<(), ParameterProblem> {
+        let n = (self.cos * self.cos + self.sin * self.sin).to_f64();
+        if !self.is_finite() {
+            Err(ParameterProblem::NonFinite)
+        } else if !self.trans.norm_squared().squared().is_finite() {
+            // As the 3-D placements: ABA multiplies two m |p|² entries.
+            Err(ParameterProblem::Overflow)
+        } else if (n - 1.0).abs() <= 1e3 * S::EPSILON {
+            Ok(())
+        } else {
+            Err(ParameterProblem::RotationNotOrthonormal)
+        }
+    }
     /// From the cosine and sine of the angle and the translation (usable in `const`).
     #[must_use]
     pub const fn from_cos_sin(cos: S, sin: S, trans: Vec2<S>) -> Self {

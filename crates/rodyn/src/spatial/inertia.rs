@@ -4,8 +4,8 @@
 //! rotational inertia `I_c` about the centre of mass (kg m²), all in the
 //! body's frame. Ten numbers, and transforming it is a rotation and a shift.
 
+use super::ParameterProblem;
 use super::{Force, Motion, Sym3, Transform, Vec3};
-use crate::error::ModelProblem;
 use crate::space::{BodyInertia, RigidTransform};
 use crate::Scalar;
 
@@ -131,13 +131,13 @@ impl<S: Scalar> Inertia<S> {
     /// the setters.
     ///
     /// # Errors
-    /// [`ModelProblem::NonFiniteParameter`], [`ModelProblem::InvalidMass`],
-    /// [`ModelProblem::Overflow`] or [`ModelProblem::InvalidInertia`].
+    /// [`ParameterProblem::NonFinite`], [`ParameterProblem::InvalidMass`],
+    /// [`ParameterProblem::Overflow`] or [`ParameterProblem::InvalidInertia`].
     ///
     /// # Example
     ///
     /// ```
-    /// use rodyn::error::ModelProblem;
+    /// use rodyn::spatial::ParameterProblem;
     /// use rodyn::spatial::{Inertia, Sym3, Vec3};
     /// // A 2 kg, 10 x 20 x 30 cm box about its centre is physical.
     /// let (m, a, b, c) = (2.0, 0.1, 0.2, 0.3);
@@ -145,15 +145,15 @@ impl<S: Scalar> Inertia<S> {
     /// assert_eq!(Inertia::new(m, Vec3::ZERO, box_).validate(), Ok(()));
     /// // No body has I_zz > I_xx + I_yy.
     /// let impossible = Sym3::diagonal(0.01, 0.01, 0.03);
-    /// assert_eq!(Inertia::new(m, Vec3::ZERO, impossible).validate(), Err(ModelProblem::InvalidInertia));
-    /// assert_eq!(Inertia::new(-1.0, Vec3::ZERO, box_).validate(), Err(ModelProblem::InvalidMass));
+    /// assert_eq!(Inertia::new(m, Vec3::ZERO, impossible).validate(), Err(ParameterProblem::InvalidInertia));
+    /// assert_eq!(Inertia::new(-1.0, Vec3::ZERO, box_).validate(), Err(ParameterProblem::InvalidMass));
     /// ```
-    pub fn validate(&self) -> Result<(), ModelProblem> {
+    pub fn validate(&self) -> Result<(), ParameterProblem> {
         if !self.is_finite() {
-            return Err(ModelProblem::NonFiniteParameter);
+            return Err(ParameterProblem::NonFinite);
         }
         if self.mass.to_f64() < 0.0 {
-            return Err(ModelProblem::InvalidMass);
+            return Err(ParameterProblem::InvalidMass);
         }
         // The algorithms form m c, m |c|² (the inertia about the body's
         // origin) and traces, and ABA products of two such entries (U Uᵀ):
@@ -169,7 +169,7 @@ impl<S: Scalar> Inertia<S> {
             || !trace.is_finite()
             || !self.rot_inertia_at_origin().is_finite()
         {
-            return Err(ModelProblem::Overflow);
+            return Err(ParameterProblem::Overflow);
         }
         // Scaled to the largest entry, so that the minors below cannot
         // overflow (an inertia with 1e308 entries would otherwise pass as NaN).
@@ -194,7 +194,7 @@ impl<S: Scalar> Inertia<S> {
         if psd && triangle {
             Ok(())
         } else {
-            Err(ModelProblem::InvalidInertia)
+            Err(ParameterProblem::InvalidInertia)
         }
     }
 }

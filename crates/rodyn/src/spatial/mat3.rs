@@ -132,24 +132,6 @@ impl<S: Scalar> Mat3<S> {
             [dot3(&a[2], &b[0]), dot3(&a[2], &b[1]), dot3(&a[2], &b[2])],
         ])
     }
-    /// `true` when `self` is exactly the identity. The diagonal is read
-    /// first: a quarter turn has one 1 there, so the test of one ends
-    /// within two comparisons.
-    #[inline(always)]
-    #[must_use]
-    pub fn is_identity(&self) -> bool {
-        let m = &self.m;
-        let (one, zero) = (S::ONE, S::ZERO);
-        m[0][0] == one
-            && m[1][1] == one
-            && m[2][2] == one
-            && m[0][1] == zero
-            && m[0][2] == zero
-            && m[1][0] == zero
-            && m[1][2] == zero
-            && m[2][0] == zero
-            && m[2][1] == zero
-    }
     /// `self * Rₖ(θ)` for a rotation about coordinate axis `k` given `sin θ`
     /// and `cos θ`: the same as `self.mul_mat(&Mat3::from_axis_index(k, s, c))`.
     ///

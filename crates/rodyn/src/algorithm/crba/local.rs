@@ -8,12 +8,12 @@
 //! default pass ([`CrbaPass::Local`](super::CrbaPass::Local)) for every
 //! model but long `f64` chains.
 
+use super::TurnedFrame;
 use super::ENTRIES_IN_PASS;
 use crate::data::Data;
 use crate::joint::{JointModel, MAX_JOINT_NV};
 use crate::model::Model;
 use crate::space::{Space, VectorOps};
-use crate::spatial::TurnedFrame;
 use crate::Scalar;
 
 /// Body i's step of the backward pass, in its `frame`: its columns `Iᶜᵢ Sₖ`, its entries

@@ -5,6 +5,11 @@
 //! | [`textbook`]    | the book's algorithm as written, the oracle the tests hold the rest to |
 //! | `mod.rs`        | the public entries, the choice of pass ([`CrbaPass`]), the steps   |
 //! | `plan.rs`       | [`CrbaPlan`]: the turned frames, computed once per model          |
+//! | `turned_frame.rs` | [`TurnedFrame`]: a body's frame turned by the quarter turns above it |
+//! | `space.rs`      | [`CrbaSpace`]: the hooks CRBA needs from a geometry               |
+//! | `spatial.rs`, `planar.rs` | [`CrbaSpace`] for 3-D space and the plane               |
+//! | `step.rs`       | [`TransformStep`]: a joint transform prepared to move many columns |
+//! | `fused_body.rs` | one body's whole step fused: a joint about its own axis, a free-flying root |
 //! | `local.rs`      | the default backward pass, in each body's (turned) frame          |
 //! | `root_frame.rs` | the backward pass for long `f64` chains, in the root frame        |
 //! | `triangle.rs`   | the mirror above the diagonal and the zeros between limbs         |
@@ -16,15 +21,15 @@
 //! the parent through `ˡⁱXᵢ`. They differ from the book in three ways, each
 //! for speed and none for the result:
 //! - a subtree's columns move up together, one step per body
-//!   ([`Space::step_forces`]); a revolute joint about a coordinate axis
+//!   ([`CrbaSpace::step_forces`]); a revolute joint about a coordinate axis
 //!   whose placement does not rotate (or turns about the same axis) moves
-//!   them by mixing two components ([`Space::joint_step`]), and the geometry
-//!   may fuse a whole body's step ([`Space::crba_axis_body`],
-//!   [`Space::crba_free_root`]);
+//!   them by mixing two components ([`CrbaSpace::joint_step`]), and the geometry
+//!   may fuse a whole body's step ([`CrbaSpace::crba_axis_body`],
+//!   [`CrbaSpace::crba_free_root`]);
 //! - with a [`CrbaPlan`] ([`crba_planned`]), bodies behind quarter-turn
 //!   placements (a URDF arm's) are expressed in frames turned by the
 //!   quarter turns above them
-//!   ([`TurnedFrame`](crate::spatial::TurnedFrame)), where their joints
+//!   ([`TurnedFrame`]), where their joints
 //!   turn about coordinate axes again; `ic` is left in those frames.
 //!   Without one ([`crba`]) every body keeps its own frame;
 //! - with the bodies numbered depth first (URDF order), a body's subtree
@@ -38,11 +43,17 @@
 //! loops afterwards is the build's tuning profile
 //! (`ENTRIES_IN_PASS`); `M` is the same either way.
 
+mod fused_body;
 mod local;
 mod plan;
+mod planar;
 mod root_frame;
+mod space;
+mod spatial;
+mod step;
 pub mod textbook;
 mod triangle;
+mod turned_frame;
 
 use crate::algorithm::kinematics::{
     body_transform_with, check_state, joint_configuration, JointSinCos, ANGLES_FIRST,
@@ -58,7 +69,10 @@ use local::backward_body;
 pub use plan::CrbaPlan;
 use plan::{BodyFrames, Unturned};
 use root_frame::about_root;
+pub use space::CrbaSpace;
+pub use step::TransformStep;
 use triangle::{clear_lower, mirror_lower};
+pub use turned_frame::{TurnedAxis, TurnedFrame};
 
 // Whether the local backward pass writes `M`'s zeros and, for `crba`, its
 // entries above the diagonal itself (the root-frame pass, for `crba`, the
@@ -159,7 +173,7 @@ pub fn crba_with<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usiz
 /// ([`CrbaPlan::is_for`], checked in debug builds): the same matrix, with
 /// each joint behind quarter-turn placements stepped about a coordinate
 /// axis. Leaves valid what [`crba`] leaves, `ic` in the plan's turned
-/// frames ([`TurnedFrame::turn`](crate::spatial::TurnedFrame::turn) of
+/// frames ([`TurnedFrame::turn`](crate::algorithm::crba::TurnedFrame::turn) of
 /// [`CrbaPlan::frame`]; the body's own frame at a root).
 ///
 /// # Errors
@@ -355,7 +369,7 @@ fn mass_matrix_pass<
     upper_written
 }
 
-/// The sines and cosines of each body's [`Space::step_angle`].
+/// The sines and cosines of each body's [`CrbaSpace::step_angle`].
 #[inline(always)]
 fn step_sin_cos<
     S: Scalar,

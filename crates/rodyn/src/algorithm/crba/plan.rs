@@ -23,13 +23,14 @@
 //! a cache in [`Data`](crate::Data): a workspace may serve several models
 //! of one size, and a cache keyed on the model could not tell them apart.
 
+use super::TurnedFrame;
 use crate::joint::{Axis, Joint, JointModel};
 use crate::model::Model;
 use crate::space::Space;
 use crate::spatial::axis_permutation::{
     turn_inertia_f32, turn_inertia_f64, turn_transform_f32, turn_transform_f64,
 };
-use crate::spatial::{AxisPermutation, Spatial, TurnedFrame};
+use crate::spatial::{AxisPermutation, Spatial};
 use crate::Scalar;
 
 /// CRBA's plan for a model of `NB` bodies in geometry `G`: each body's

@@ -16,7 +16,7 @@
 //! body's inertia once (a reordering of its entries with sign flips, exact)
 //! and read each joint's subspace column on its turned axis.
 
-use super::{AxisPermutation, Mat3};
+use crate::spatial::{AxisPermutation, Mat3};
 use crate::Scalar;
 
 /// How CRBA expresses one body: its frame turned by [`Self::turn`]
