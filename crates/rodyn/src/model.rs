@@ -19,13 +19,14 @@
 
 use crate::error::{Error, ModelProblem, Quantity, Result};
 use crate::joint::{Joint, JointModel};
+use crate::planar::{Planar, PlanarInertia, PlanarJoint, PlanarMotion, PlanarTransform};
 use crate::space::{BodyInertia, Space, VectorOps};
 use crate::spatial::{Inertia, Motion, Spatial, Transform};
 use crate::topology::Topology;
 use crate::Scalar;
 
 /// A multibody tree with `NB` bodies, `NQ` configuration and `NV` velocity
-/// coordinates, in geometry `G` ([`Spatial`] or [`Planar`](crate::planar::Planar)).
+/// coordinates, in geometry `G` ([`Spatial`] or [`Planar`]).
 #[derive(Clone, Copy, Debug)]
 pub struct Model<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space = Spatial> {
     topology: Topology<NB, NV>,
@@ -94,6 +95,40 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, 
             armature: [S::ZERO; NV],
             constrained_configuration,
         }
+    }
+}
+
+impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, NQ, NV, Planar> {
+    /// A planar model, checked at compile time when evaluated in a `const`;
+    /// arguments as for the 3-D [`Model::new`](crate::Model::new).
+    ///
+    /// # Panics
+    /// When the topology is inconsistent; in a `const` a compile error.
+    #[must_use]
+    pub const fn new_planar(
+        parents: [Option<usize>; NB],
+        joints: [PlanarJoint<S>; NB],
+        placements: [PlanarTransform<S>; NB],
+        inertias: [PlanarInertia<S>; NB],
+        gravity: PlanarMotion<S>,
+    ) -> Self {
+        let mut nq = [0; NB];
+        let mut nv = [0; NB];
+        let mut i = 0;
+        while i < NB {
+            nq[i] = joints[i].const_nq();
+            nv[i] = joints[i].const_nv();
+            i += 1;
+        }
+        // Planar joints are angles and displacements: any finite q is valid.
+        Self::from_parts(
+            Topology::new(parents, nq, nv, NQ),
+            joints,
+            placements,
+            inertias,
+            gravity,
+        )
+        .with_unconstrained_configuration()
     }
 }
 

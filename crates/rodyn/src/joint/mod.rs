@@ -21,6 +21,7 @@ mod axis;
 mod continuous;
 mod custom;
 mod free_flyer;
+mod planar;
 mod prismatic;
 mod revolute;
 

@@ -25,6 +25,9 @@
 //! [`Spatial`]: crate::spatial::Spatial
 //! [`Planar`]: crate::planar::Planar
 
+mod planar;
+mod spatial;
+
 use crate::error::ModelProblem;
 use crate::joint::JointModel;
 use crate::Scalar;

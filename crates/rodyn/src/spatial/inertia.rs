@@ -5,8 +5,7 @@
 //! body's frame. Ten numbers, and transforming it is a rotation and a shift.
 
 use super::ParameterProblem;
-use super::{Force, Motion, Sym3, Transform, Vec3};
-use crate::space::{BodyInertia, RigidTransform};
+use super::{Sym3, Vec3};
 use crate::Scalar;
 
 /// Mass, centre of mass and rotational inertia about the centre of mass.
@@ -21,6 +20,12 @@ pub struct Inertia<S> {
 }
 
 impl<S: Scalar> Inertia<S> {
+    /// `true` when every entry is finite.
+    #[inline]
+    #[must_use]
+    pub fn is_finite(&self) -> bool {
+        self.mass.is_finite() && self.com.is_finite() && self.rot_inertia.is_finite()
+    }
     /// An inertia from mass, centre of mass and rotational inertia about the centre of mass.
     #[must_use]
     pub const fn new(mass: S, com: Vec3<S>, rot_inertia: Sym3<S>) -> Self {
@@ -50,77 +55,6 @@ impl<S: Scalar> Inertia<S> {
         )
     }
 }
-
-impl<S: Scalar> BodyInertia<S> for Inertia<S> {
-    type Motion = Motion<S>;
-    type Force = Force<S>;
-    type Transform = Transform<S>;
-    const ZERO: Self = Self::new(S::ZERO, Vec3::ZERO, Sym3::ZERO);
-
-    #[inline]
-    fn mass(&self) -> S {
-        self.mass
-    }
-    #[inline]
-    fn com(&self) -> Vec3<S> {
-        self.com
-    }
-    #[inline]
-    fn mul_motion(&self, v: &Motion<S>) -> Force<S> {
-        // Momentum of the centre of mass, then its moment about the origin.
-        let lin = (v.lin - self.com.cross(&v.ang)) * self.mass;
-        let ang = self.rot_inertia.mul_vec(&v.ang) + self.com.cross(&lin);
-        Force::new(ang, lin)
-    }
-    #[inline]
-    fn net_force(&self, v: &Motion<S>, a: &Motion<S>) -> Force<S> {
-        // Newton and Euler at the centre of mass, then the moment carried to
-        // the origin: 51 products instead of the 66 of I a + v ×* I v.
-        // The COM's classical acceleration is a_lin + α × c + ω × (v_lin + ω × c).
-        let (omega, alpha) = (&v.ang, &a.ang);
-        let v_com = v.lin + omega.cross(&self.com);
-        let lin = (a.lin + alpha.cross(&self.com) + omega.cross(&v_com)) * self.mass;
-        let spin = self.rot_inertia.mul_vec(omega);
-        let ang = self.rot_inertia.mul_vec(alpha) + omega.cross(&spin) + self.com.cross(&lin);
-        Force::new(ang, lin)
-    }
-    #[inline]
-    fn velocity_product_force(&self, v: &Motion<S>) -> Force<S> {
-        let omega = &v.ang;
-        let v_com = v.lin + omega.cross(&self.com);
-        let lin = omega.cross(&v_com) * self.mass;
-        let spin = self.rot_inertia.mul_vec(omega);
-        Force::new(omega.cross(&spin) + self.com.cross(&lin), lin)
-    }
-    #[inline(always)]
-    fn act(&self, x: &Transform<S>) -> Self {
-        Self::new(
-            self.mass,
-            x.act_point(&self.com),
-            self.rot_inertia.rotate(&x.rot),
-        )
-    }
-    #[inline(always)]
-    fn combine(&self, o: &Self) -> Self {
-        let mass = self.mass + o.mass;
-        // A massless pair keeps a zero inertia rather than dividing by zero.
-        let eps = S::from_f64(S::EPSILON);
-        let inv = S::ONE / mass.max(eps);
-        let com = (self.com * self.mass + o.com * o.mass) * inv;
-        let d = self.com - o.com;
-        let reduced = self.mass * o.mass * inv;
-        let rot_inertia = self.rot_inertia + o.rot_inertia + Sym3::parallel_axis(&d).scale(reduced);
-        Self::new(mass, com, rot_inertia)
-    }
-    #[inline]
-    fn potential_energy(&self, gravity: &Motion<S>) -> S {
-        -(self.mass * gravity.lin.dot(&self.com))
-    }
-    fn is_finite(&self) -> bool {
-        self.mass.is_finite() && self.com.is_finite() && self.rot_inertia.is_finite()
-    }
-}
-
 impl<S: Scalar> Inertia<S> {
     /// Checks that the inertia is physical: finite, non-negative mass,
     /// products that do not overflow (`m |c|²`, the trace, `m²` and the

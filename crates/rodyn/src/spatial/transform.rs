@@ -13,8 +13,7 @@
 //! | `act_inv_force`    | force a → b     | `ᵇX_a* f`       |
 
 use super::ParameterProblem;
-use super::{Force, Mat3, Motion, Vec3};
-use crate::space::RigidTransform;
+use super::{Mat3, Vec3};
 use crate::Scalar;
 
 /// A rigid transform `aMb` (rotation, then translation).
@@ -27,6 +26,12 @@ pub struct Transform<S> {
 }
 
 impl<S: Scalar> Transform<S> {
+    /// `true` when every entry is finite.
+    #[inline]
+    #[must_use]
+    pub fn is_finite(&self) -> bool {
+        self.trans.is_finite() && self.rot.m.iter().flatten().all(|v| v.is_finite())
+    }
     /// The identity transform.
     pub const IDENTITY: Self = Self::new(Mat3::IDENTITY, Vec3::ZERO);
     /// A transform from rotation and translation.
@@ -56,61 +61,6 @@ impl<S: Scalar> Default for Transform<S> {
         Self::IDENTITY
     }
 }
-
-impl<S: Scalar> RigidTransform<S> for Transform<S> {
-    type Motion = Motion<S>;
-    type Force = Force<S>;
-    type Point = Vec3<S>;
-    const IDENTITY: Self = Transform::IDENTITY;
-
-    #[inline]
-    fn compose(&self, o: &Self) -> Self {
-        Self::new(
-            self.rot.mul_mat(&o.rot),
-            self.rot.mul_vec(&o.trans) + self.trans,
-        )
-    }
-    #[inline]
-    fn inverse(&self) -> Self {
-        Self::new(self.rot.transpose(), -self.rot.tr_mul_vec(&self.trans))
-    }
-    #[inline]
-    fn act_motion(&self, m: &Motion<S>) -> Motion<S> {
-        let ang = self.rot.mul_vec(&m.ang);
-        let lin = self.rot.mul_vec(&m.lin) + self.trans.cross(&ang);
-        Motion::new(ang, lin)
-    }
-    #[inline]
-    fn act_inv_motion(&self, m: &Motion<S>) -> Motion<S> {
-        let ang = self.rot.tr_mul_vec(&m.ang);
-        let lin = self.rot.tr_mul_vec(&(m.lin - self.trans.cross(&m.ang)));
-        Motion::new(ang, lin)
-    }
-    #[inline]
-    fn act_force(&self, f: &Force<S>) -> Force<S> {
-        let lin = self.rot.mul_vec(&f.lin);
-        let ang = self.rot.mul_vec(&f.ang) + self.trans.cross(&lin);
-        Force::new(ang, lin)
-    }
-    #[inline]
-    fn act_inv_force(&self, f: &Force<S>) -> Force<S> {
-        let lin = self.rot.tr_mul_vec(&f.lin);
-        let ang = self.rot.tr_mul_vec(&(f.ang - self.trans.cross(&f.lin)));
-        Force::new(ang, lin)
-    }
-    #[inline]
-    fn act_point(&self, p: &Vec3<S>) -> Vec3<S> {
-        self.rot.mul_vec(p) + self.trans
-    }
-    #[inline]
-    fn translation(&self) -> Vec3<S> {
-        self.trans
-    }
-    fn is_finite(&self) -> bool {
-        self.trans.is_finite() && self.rot.m.iter().flatten().all(|v| v.is_finite())
-    }
-}
-
 impl<S: Scalar> Transform<S> {
     /// Checks a placement: finite, with a translation whose `|p|⁴` is
     /// finite, and a proper rotation: orthonormal to 10³ ε (`RᵀR = 1`) and
