@@ -66,27 +66,15 @@ impl Geometry for Spatial {
     ) -> Transform<S> {
         use crate::joint::JointModel;
         // A revolute joint about a coordinate axis behind a placement
-        // without rotation (or one about the same axis) turns two of its
-        // parent's columns by the angle whose cosine and sine are entries
-        // of `x`'s rotation: the product with `x` would only add exact
-        // zeros besides. `x` itself says whether it has that form, so that
-        // kinematics needs no per-model plan.
+        // without rotation (or one about the same axis) leaves that axis
+        // alone: only two of its parent's columns mix, through the plane
+        // block of `x`'s rotation; the product with `x` would only add
+        // exact zeros besides. `x` itself says whether it has that form,
+        // so that kinematics needs no per-model plan.
         let rot = match joint.revolute_axis_index() {
-            Some(0) if turns_about::<S, 0>(&x.rot) => {
-                parent
-                    .rot
-                    .mul_axis_rotation(0, x.rot.m[2][1], x.rot.m[1][1])
-            }
-            Some(1) if turns_about::<S, 1>(&x.rot) => {
-                parent
-                    .rot
-                    .mul_axis_rotation(1, x.rot.m[0][2], x.rot.m[2][2])
-            }
-            Some(2) if turns_about::<S, 2>(&x.rot) => {
-                parent
-                    .rot
-                    .mul_axis_rotation(2, x.rot.m[1][0], x.rot.m[0][0])
-            }
+            Some(0) if keeps_axis::<S, 0>(&x.rot) => parent.rot.mul_plane_block::<1, 2>(&x.rot),
+            Some(1) if keeps_axis::<S, 1>(&x.rot) => parent.rot.mul_plane_block::<2, 0>(&x.rot),
+            Some(2) if keeps_axis::<S, 2>(&x.rot) => parent.rot.mul_plane_block::<0, 1>(&x.rot),
             _ => return parent.compose(x),
         };
         Transform::new(rot, parent.act_point(&x.trans))
@@ -375,21 +363,14 @@ impl<S: Scalar> ArticulatedInertia<S> for ArticulatedInertia6<S> {
     }
 }
 
-/// `true` when `rot` is exactly a rotation about coordinate axis `K`: its
-/// row and column K are `e_K`, and its plane block is `[[c, -s], [s, c]]`
-/// entry for entry. The column first: behind a quarter turn about
-/// another axis it fails at once.
+/// `true` when `rot` leaves coordinate axis `K` exactly where it is: its
+/// row and column K are `e_K` (a rotation about K, the identity
+/// included).
 #[inline(always)]
-fn turns_about<S: Scalar, const K: usize>(rot: &Mat3<S>) -> bool {
+fn keeps_axis<S: Scalar, const K: usize>(rot: &Mat3<S>) -> bool {
     let (a, b) = ((K + 1) % 3, (K + 2) % 3);
     let m = &rot.m;
-    m[K][K] == S::ONE
-        && m[a][K] == S::ZERO
-        && m[b][K] == S::ZERO
-        && m[K][a] == S::ZERO
-        && m[K][b] == S::ZERO
-        && m[b][b] == m[a][a]
-        && m[a][b] == -m[b][a]
+    m[K][K] == S::ONE && S::all_zero([m[a][K], m[b][K], m[K][a], m[K][b]])
 }
 
 #[cfg(all(test, feature = "std"))]
@@ -421,6 +402,8 @@ mod tests {
             quarter.matrix(),
             Mat3::from_axis_angle(&Vec3::new(0.6, 0.0, 0.8), 0.4),
             Mat3::from_axis_index(2, 0.3f64.sin(), 0.3f64.cos()),
+            Mat3::from_axis_angle(&Vec3::new(0.0, 0.0, 1.0), -1.1),
+            Mat3::from_axis_angle(&Vec3::new(1.0, 0.0, 0.0), 0.8),
         ];
         for rot in rotations {
             for joint in &joints {
