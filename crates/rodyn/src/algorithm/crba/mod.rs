@@ -28,17 +28,17 @@
 //!   [`CrbaSpace::crba_free_root`]);
 //! - with a [`CrbaPlan`] ([`crba_planned`]), bodies behind quarter-turn
 //!   placements (a URDF arm's) are expressed in frames turned by the
-//!   quarter turns above them
-//!   ([`TurnedFrame`]), where their joints
-//!   turn about coordinate axes again; `ic` is left in those frames.
-//!   Without one ([`crba`]) every body keeps its own frame;
+//!   quarter turns above them ([`TurnedFrame`]), where their joints turn
+//!   about coordinate axes again; `ic` is left in those frames. Without
+//!   one ([`crba`]) every body keeps its own frame;
 //! - with the bodies numbered depth first (URDF order), a body's subtree
 //!   holds a contiguous range of coordinates, so a column's rows are one
 //!   slice; any other tree takes the same steps with a test of support
 //!   per coordinate.
 //!
-//! Which backward pass runs is [`CrbaPass`], chosen by [`crba_with`]'s
-//! caller or, for [`crba`], by [`CrbaPass::default_for`]. Whether the
+//! Which backward pass runs is [`CrbaPass`], chosen by the caller of
+//! [`crba_with`] or [`crba_planned_with`] or, for [`crba`] and
+//! [`crba_planned`], by [`CrbaPass::default_for`]. Whether the
 //! passes write the upper triangle and the zeros as they go or in separate
 //! loops afterwards is the build's tuning profile
 //! (`ENTRIES_IN_PASS`); `M` is the same either way.
