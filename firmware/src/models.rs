@@ -7,6 +7,7 @@
 //! for the arm and the quadruped, along -y for the pendulum (it swings in
 //! the x-y plane about z).
 
+use rodyn::algorithm::crba::CrbaPlan;
 use rodyn::planar::{Planar, PlanarInertia, PlanarJoint, PlanarMotion, PlanarTransform, Vec2};
 use rodyn::{Frame, Model};
 
@@ -47,3 +48,7 @@ pub const PENDULUM_PLANAR: Model<f32, 1, 1, 1, Planar> = {
         PlanarMotion::new(0.0, Vec2::new(gravity.x, gravity.y)),
     )
 };
+
+/// CRBA's plan for [`PENDULUM_PLANAR`] (a plane has no frames to turn).
+pub const PENDULUM_PLANAR_CRBA_PLAN: CrbaPlan<f32, 1, Planar> =
+    CrbaPlan::unturned(&PENDULUM_PLANAR);

@@ -2,11 +2,12 @@
 //! (`rodyn::algorithm::crba::textbook`, Featherstone Table 6.2), and the
 //! book's algorithm against Pinocchio.
 //!
-//! On every committed fixture (as built, and with its quarter turns
-//! recognised, which puts the tuned passes in turned frames), on random
-//! trees numbered depth first or not, on random floating trees and on
-//! random planar chains: `crba_with` by each [`CrbaPass`], and `crba`
-//! (the default pass), against `textbook::crba` in the same scalar.
+//! On every committed fixture, on random trees numbered depth first or
+//! not, on random floating trees and on random planar chains: `crba_with`
+//! by each [`CrbaPass`] and `crba` (the default pass), each without a plan
+//! and with the model's [`CrbaPlan`] (its quarter turns recognised, which
+//! puts the tuned passes in turned frames), against `textbook::crba` in
+//! the same scalar.
 //! Error: `max |M − M_book| / max |M_book|` over the whole matrix.
 //!
 //! - f64, local pass: 1e-12 (rounding of a few dozen operations per
@@ -20,7 +21,9 @@
 //! - the book against Pinocchio's mass matrix: 1e-9, the bound of
 //!   `pinocchio_reference`.
 
-use rodyn::algorithm::crba::{crba, crba_with, textbook, CrbaPass};
+use rodyn::algorithm::crba::{
+    crba, crba_planned, crba_planned_with, crba_with, textbook, CrbaPass, CrbaPlan,
+};
 use rodyn::planar::Planar;
 use rodyn::space::Space;
 use rodyn::{Data, Model, Scalar};
@@ -50,28 +53,38 @@ fn to_f64<S: Scalar, const NV: usize>(m: &[[S; NV]; NV]) -> [[f64; NV]; NV] {
     core::array::from_fn(|r| core::array::from_fn(|c| m[r][c].to_f64()))
 }
 
-/// Every pass, and the default, against the book in `S`; returns the worst
-/// error.
+/// Every pass, and the default, without a plan and with the model's,
+/// against the book in `S`; returns the worst error.
 fn tuned_against_book<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     model: &Model<S, NB, NQ, NV, G>,
     q: &[S; NQ],
     what: &str,
 ) -> f64 {
     let book = to_f64(&textbook::crba(model, q).unwrap());
+    let plan = CrbaPlan::new(model);
     let mut data = Data::new();
     let mut worst = 0.0f64;
-    for (name, got) in [
-        ("default", *crba(model, &mut data, q).unwrap()),
-        (
-            "local",
-            *crba_with(model, &mut data, q, CrbaPass::Local).unwrap(),
-        ),
-        (
-            "root frame",
-            *crba_with(model, &mut data, q, CrbaPass::RootFrame).unwrap(),
-        ),
-    ] {
-        let e = relative(&to_f64(&got), &book);
+    let (local, root) = (CrbaPass::Local, CrbaPass::RootFrame);
+    let names = [
+        "default",
+        "local",
+        "root frame",
+        "planned default",
+        "planned local",
+        "planned root frame",
+    ];
+    // One matrix at a time: six 60 x 60 ones overflow a test thread's stack.
+    for (k, name) in names.into_iter().enumerate() {
+        let got = match k {
+            0 => crba(model, &mut data, q),
+            1 => crba_with(model, &mut data, q, local),
+            2 => crba_with(model, &mut data, q, root),
+            3 => crba_planned(model, &plan, &mut data, q),
+            4 => crba_planned_with(model, &plan, &mut data, q, local),
+            _ => crba_planned_with(model, &plan, &mut data, q, root),
+        }
+        .unwrap();
+        let e = relative(&to_f64(got), &book);
         assert!(
             e <= F64_BOUND,
             "{what}, {name} pass: {e:.2e} above {F64_BOUND:e}"
@@ -84,7 +97,6 @@ fn tuned_against_book<S: Scalar, const NB: usize, const NQ: usize, const NV: usi
 fn fixture_checks<const NB: usize, const NQ: usize, const NV: usize>(name: &str) {
     let fixture = Fixture::load_named(name).unwrap();
     let plain = fixture.model::<NB, NQ, NV>().unwrap();
-    let turned = plain.with_recognised_turns();
     let plain32 = plain.cast::<f32>().unwrap();
     let (mut worst, mut worst32, mut worst_pin) = (0.0f64, 0.0f64, 0.0f64);
     for (k, state) in fixture.states.iter().enumerate() {
@@ -96,13 +108,13 @@ fn fixture_checks<const NB: usize, const NQ: usize, const NV: usize>(name: &str)
             "{name} state {k}: book against Pinocchio {e:.2e}"
         );
         worst_pin = worst_pin.max(e);
-        for (model, how) in [(&plain, "as built"), (&turned, "turns recognised")] {
-            let what = format!("{name} state {k} ({how})");
-            worst = worst.max(tuned_against_book(model, &s.q, &what));
-        }
+        let what = format!("{name} state {k}");
+        worst = worst.max(tuned_against_book(&plain, &s.q, &what));
         let s32 = state.arrays::<f32, NB, NQ, NV>().unwrap();
         let mut data = Data::new();
-        let got = to_f64(crba(&plain32, &mut data, &s32.q).unwrap());
+        // Planned, as a firmware image runs it.
+        let plan32 = CrbaPlan::new(&plain32);
+        let got = to_f64(crba_planned(&plain32, &plan32, &mut data, &s32.q).unwrap());
         // The f32-rounded quaternion, unit again to f64 precision (the
         // f64 check rejects it otherwise; `M` does not depend on the base's
         // orientation).
@@ -139,12 +151,6 @@ fn random_trees_in_any_numbering() {
         let model = random_tree::<9>(&mut rng);
         let q = random_configuration(&model, &mut rng);
         worst = worst.max(tuned_against_book(&model, &q, &format!("tree {trial}")));
-        let turned = model.with_recognised_turns();
-        worst = worst.max(tuned_against_book(
-            &turned,
-            &q,
-            &format!("tree {trial} turned"),
-        ));
         let floating = random_floating_tree::<8, 13, 12>(&mut rng);
         let q = random_configuration(&floating, &mut rng);
         worst = worst.max(tuned_against_book(

@@ -6,6 +6,7 @@
 //! random states, as a controller sees a new state every tick.
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion};
+use rodyn::algorithm::crba::CrbaPlan;
 use rodyn::space::Space;
 use rodyn::{Data, Model, Scalar};
 use rodyn_bench::models::{planar_chain, planar_chain_3d, PANDA, SOLO12, UR5};
@@ -25,13 +26,14 @@ fn bench_scalar<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
     states: &[State<S, NQ, NV>],
 ) {
     let mut data = Box::new(Data::<S, NB, NV, G>::new());
+    let plan = CrbaPlan::new(model);
     for algorithm in Algorithm::ALL {
         let mut group = c.benchmark_group(algorithm.name());
         let mut k = 0;
         group.bench_function(BenchmarkId::new(name, scalar), |b| {
             b.iter(|| {
                 k = (k + 1) % states.len();
-                algorithm.run(model, &mut data, black_box(&states[k]))
+                algorithm.run(model, &plan, &mut data, black_box(&states[k]))
             });
         });
         group.finish();

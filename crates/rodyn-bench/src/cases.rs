@@ -4,6 +4,7 @@
 use crate::state::{random_states, State};
 use crate::timing::{calls_for, ns_per_call};
 use crate::Algorithm;
+use rodyn::algorithm::crba::CrbaPlan;
 use rodyn::space::Space;
 use rodyn::{Data, Model, Scalar};
 
@@ -25,9 +26,11 @@ pub trait Case {
     fn first_torques(&mut self) -> Vec<f64>;
 }
 
-/// A model in scalar `S` and geometry `G` with its random states.
+/// A model in scalar `S` and geometry `G` with its CRBA plan and its
+/// random states.
 pub struct ModelCase<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space> {
     model: Model<S, NB, NQ, NV, G>,
+    plan: CrbaPlan<S, NB, G>,
     data: Box<Data<S, NB, NV, G>>,
     states: Vec<State<S, NQ, NV>>,
 }
@@ -38,6 +41,7 @@ impl<const NB: usize, const NQ: usize, const NV: usize, G: Space> ModelCase<f64,
     pub fn new(model: Model<f64, NB, NQ, NV, G>, count: usize, seed: u64) -> Self {
         let states = random_states(&model, count, seed);
         Self {
+            plan: CrbaPlan::new(&model),
             model,
             data: Box::new(Data::new()),
             states,
@@ -49,8 +53,10 @@ impl<const NB: usize, const NQ: usize, const NV: usize, G: Space> ModelCase<f64,
     /// For a model with custom joints, which cannot change scalar type.
     #[must_use]
     pub fn to_f32(&self) -> ModelCase<f32, NB, NQ, NV, G> {
+        let model = self.model.cast().expect("built-in joints cast");
         ModelCase {
-            model: self.model.cast().expect("built-in joints cast"),
+            plan: CrbaPlan::new(&model),
+            model,
             data: Box::new(Data::new()),
             states: self.states.iter().map(State::cast).collect(),
         }
@@ -76,31 +82,34 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space> Cas
     fn succeeds(&mut self, algorithm: Algorithm) -> bool {
         let Self {
             model,
+            plan,
             data,
             states,
         } = self;
         states
             .iter()
-            .all(|s| algorithm.try_run(model, data, s).is_ok())
+            .all(|s| algorithm.try_run(model, plan, data, s).is_ok())
     }
     fn calibrate(&mut self, algorithm: Algorithm, target_ns: f64) -> usize {
         let Self {
             model,
+            plan,
             data,
             states,
         } = self;
         calls_for(target_ns, states.len(), |k| {
-            algorithm.run(model, data, &states[k])
+            algorithm.run(model, plan, data, &states[k])
         })
     }
     fn time(&mut self, algorithm: Algorithm, calls: usize) -> f64 {
         let Self {
             model,
+            plan,
             data,
             states,
         } = self;
         ns_per_call(calls, states.len(), |k| {
-            algorithm.run(model, data, &states[k])
+            algorithm.run(model, plan, data, &states[k])
         })
     }
     fn first_torques(&mut self) -> Vec<f64> {

@@ -16,7 +16,7 @@ pub mod models;
 pub mod state;
 pub mod timing;
 
-use rodyn::algorithm::crba::crba;
+use rodyn::algorithm::crba::{crba_planned, CrbaPlan};
 use rodyn::algorithm::forward_dynamics::{Aba, Crba, ForwardDynamics};
 use rodyn::algorithm::rnea::rnea;
 use rodyn::space::Space;
@@ -28,9 +28,11 @@ use state::State;
 pub enum Algorithm {
     /// Inverse dynamics, `rnea(q, v, a)`.
     Rnea,
-    /// The mass matrix, `crba(q)`.
+    /// The mass matrix, `crba_planned(q)` (the plan built once, as a
+    /// model compiler's is).
     Crba,
-    /// Forward dynamics by bias forces, CRBA, `Lᵀ D L` factorisation and solve.
+    /// Forward dynamics by bias forces, CRBA (planned), `Lᵀ D L`
+    /// factorisation and solve.
     CrbaForwardDynamics,
     /// Forward dynamics by the articulated-body algorithm.
     Aba,
@@ -52,7 +54,8 @@ impl Algorithm {
     }
 
     /// Runs the algorithm once on `state` and returns one entry of its
-    /// result, so that the optimiser cannot drop the call.
+    /// result, so that the optimiser cannot drop the call. CRBA takes
+    /// `plan`, which must be `model`'s.
     ///
     /// # Errors
     /// As the algorithm: e.g. a mass matrix that is not numerically
@@ -61,15 +64,17 @@ impl Algorithm {
     pub fn try_run<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
         self,
         model: &Model<S, NB, NQ, NV, G>,
+        plan: &CrbaPlan<S, NB, G>,
         data: &mut Data<S, NB, NV, G>,
         state: &State<S, NQ, NV>,
     ) -> rodyn::Result<S> {
         let last = NV - 1;
+        let (q, v, tau) = (&state.q, &state.v, &state.tau);
         Ok(match self {
-            Self::Rnea => rnea(model, data, &state.q, &state.v, &state.a, None)?[last],
-            Self::Crba => crba(model, data, &state.q)?[last][0],
+            Self::Rnea => rnea(model, data, q, v, &state.a, None)?[last],
+            Self::Crba => crba_planned(model, plan, data, q)?[last][0],
             Self::CrbaForwardDynamics => {
-                Crba::forward_dynamics(model, data, &state.q, &state.v, &state.tau, None)?[last]
+                Crba::forward_dynamics_planned(model, plan, data, q, v, tau, None)?[last]
             }
             Self::Aba => {
                 Aba::forward_dynamics(model, data, &state.q, &state.v, &state.tau, None)?[last]
@@ -85,10 +90,11 @@ impl Algorithm {
     pub fn run<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
         self,
         model: &Model<S, NB, NQ, NV, G>,
+        plan: &CrbaPlan<S, NB, G>,
         data: &mut Data<S, NB, NV, G>,
         state: &State<S, NQ, NV>,
     ) -> S {
-        match self.try_run(model, data, state) {
+        match self.try_run(model, plan, data, state) {
             Ok(x) => x,
             Err(e) => panic!("{} failed on a benchmark state: {e:?}", self.name()),
         }

@@ -1,7 +1,14 @@
 //! Writes a [`ModelDescription`] as a Rust module: a `const` model in `f64`
-//! and `f32`, named indices for bodies, joints, coordinates, endpoints and
-//! frames, the frames as `rodyn::Frame` values, and the drive and contact
-//! parameters.
+//! and `f32`, CRBA's plan for each beside it, named indices for bodies,
+//! joints, coordinates, endpoints and frames, the frames as `rodyn::Frame`
+//! values, and the drive and contact parameters.
+//!
+//! The model holds physics and topology only. The quarter turns the
+//! compiler recognises in the placements (written as exact rotations in
+//! the model) are declared once, in `PLACEMENT_TURNS`, and go into
+//! `CRBA_PLAN_F64` and `CRBA_PLAN_F32` (`rodyn::algorithm::crba::CrbaPlan`,
+//! built by a `const fn`, so a firmware image keeps it in flash and plans
+//! nothing at run time); a planar model's plans turn no frame.
 //!
 //! The output uses only `rodyn::` paths and `core` syntax, so it compiles in a
 //! `no_std` crate. Every float is written as an untyped literal inside a
@@ -68,6 +75,7 @@ pub fn generate(model: &ModelDescription, module: &str, source: &str) -> Result<
     for line in geometry.lines() {
         w.line(line);
     }
+    w.line("use rodyn::algorithm::crba::CrbaPlan;");
     w.line("use rodyn::{Endpoint, Frame, Model};");
     w.blank();
     sizes(&mut w, model);
@@ -778,7 +786,6 @@ fn model_macro(w: &mut Writer, model: &ModelDescription) -> Result<()> {
         ));
     }
     w.close(")");
-    placement_turns(w, model);
     w.close("};");
     w.close("}");
     w.blank();
@@ -791,14 +798,30 @@ fn model_macro(w: &mut Writer, model: &ModelDescription) -> Result<()> {
         ));
     }
     w.blank();
+    crba_plans(w, model);
     Ok(())
 }
 
-/// Declares the 3-D placements whose rotations are quarter turns (the
-/// identity included), so that CRBA can take them into its frames
-/// (`Model::with_placement_turns`).
-fn placement_turns(w: &mut Writer, model: &ModelDescription) {
+/// CRBA's plans beside the models: a 3-D model's placements whose
+/// rotations are quarter turns (the identity included) declared in
+/// `PLACEMENT_TURNS`, so that CRBA takes them into its frames
+/// (`CrbaPlan::from_turns`); a planar model's plans turn nothing.
+fn crba_plans(w: &mut Writer, model: &ModelDescription) {
+    let plan = |s: &str| {
+        format!(
+            "/// CRBA's plan for `MODEL_{upper}` (`crba_planned`, `Crba::forward_dynamics_planned`).",
+            upper = s.to_uppercase()
+        )
+    };
     if model.planar {
+        for s in ["f64", "f32"] {
+            w.line(&plan(s));
+            w.line(&format!(
+                "pub const CRBA_PLAN_{upper}: CrbaPlan<{s}, NB, Planar> = CrbaPlan::unturned(&MODEL_{upper});",
+                upper = s.to_uppercase()
+            ));
+        }
+        w.blank();
         return;
     }
     let turns: Vec<Option<Mat3>> = model
@@ -806,10 +829,10 @@ fn placement_turns(w: &mut Writer, model: &ModelDescription) {
         .iter()
         .map(|b| snap_signed_permutation(&b.placement.rot, model.snap_tolerance()))
         .collect();
-    if turns.iter().all(Option::is_none) {
-        return;
-    }
-    w.open(".with_placement_turns([");
+    w.line(
+        "/// The placements whose rotations are quarter turns, exactly as the models have them.",
+    );
+    w.open("pub const PLACEMENT_TURNS: [Option<AxisPermutation>; NB] = [");
     for (b, turn) in model.bodies.iter().zip(&turns) {
         let text = match turn {
             Some(rot) if *rot == IDENTITY => "Some(AxisPermutation::IDENTITY)".to_string(),
@@ -825,7 +848,15 @@ fn placement_turns(w: &mut Writer, model: &ModelDescription) {
         w.line(&format!("// {}", b.joint_name));
         w.line(&format!("{text},"));
     }
-    w.close("])");
+    w.close("];");
+    for s in ["f64", "f32"] {
+        w.line(&plan(s));
+        w.line(&format!(
+            "pub const CRBA_PLAN_{upper}: CrbaPlan<{s}, NB> = CrbaPlan::<{s}, NB>::from_turns(&MODEL_{upper}, PLACEMENT_TURNS);",
+            upper = s.to_uppercase()
+        ));
+    }
+    w.blank();
 }
 
 fn placement(planar: bool, p: &Pose, tolerance: f64) -> String {

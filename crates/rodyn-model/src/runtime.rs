@@ -122,16 +122,13 @@ impl RuntimeModel {
             };
         }
         let g = vec3(&description.gravity);
-        let model = Box::new(
-            Model::new(
-                parents,
-                joints,
-                placements,
-                inertias,
-                Motion::new(Vec3::ZERO, g),
-            )
-            .with_recognised_turns(),
-        );
+        let model = Box::new(Model::new(
+            parents,
+            joints,
+            placements,
+            inertias,
+            Motion::new(Vec3::ZERO, g),
+        ));
         Ok(Self { model, description })
     }
 

@@ -30,7 +30,7 @@ use rodyn::drive::{drive_forces, forward_dynamics_with_drives, DriveForces, Thel
 use rodyn::planar::Planar;
 use rodyn::sensitivity::forward_dynamics_and_sensitivity;
 use rodyn::sim::{AuxiliaryLoads, State};
-use rodyn::space::Space;
+use rodyn::space::Geometry;
 use rodyn::{Data, Model, Result, Scalar};
 
 pub use file::{NB, NU, NV};
@@ -215,7 +215,7 @@ impl<S: Scalar, E: FnMut(S) -> [S; NU]> AuxiliaryLoads<S, NB, NV, NV, NU, Planar
         v: &[S; NV],
         activation: &[S; NU],
         tau: &mut [S; NV],
-        f_ext: &mut [<Planar as Space>::Force<S>; NB],
+        f_ext: &mut [<Planar as Geometry>::Force<S>; NB],
         activation_rate: &mut [S; NU],
     ) -> Result<()> {
         drive_forces(

@@ -18,10 +18,11 @@
 //! | `ic`           | composite inertia of the subtree of i (CRBA)        | body i, turned¹ |
 //! | `ia`, `pa`     | projected articulated inertia and bias force (ABA)  | body i      |
 //!
-//! ¹ Body i's frame turned by [`TurnedFrame::turn`](crate::spatial::TurnedFrame::turn)
-//! of [`Model::turned_frame`](crate::Model::turned_frame)`(i)` (the quarter turns of the
-//! placements above it; the identity at a root and in a model without
-//! declared turns).
+//! ¹ Body i's own frame after [`crba`](crate::algorithm::crba::crba);
+//! after the planned entries, its frame turned by
+//! [`TurnedFrame::turn`](crate::algorithm::crba::TurnedFrame::turn) of the plan's
+//! [`CrbaPlan::frame`](crate::algorithm::crba::CrbaPlan::frame)`(i)` (the
+//! quarter turns of the placements above it; the identity at a root).
 
 use crate::joint::MAX_JOINT_NV;
 use crate::space::{ArticulatedInertia, BodyInertia, RigidTransform, Space, VectorOps};

@@ -1,5 +1,6 @@
 //! Errors: what failed and where, never a silent NaN.
 
+use crate::spatial::ParameterProblem;
 use core::fmt;
 
 /// Which input or result a non-finite value was found in.
@@ -69,6 +70,21 @@ pub enum ModelProblem {
     /// [`Topology`](crate::topology::Topology) assembled by hand rather
     /// than by [`Topology::try_new`](crate::topology::Topology::try_new).
     InconsistentTopology,
+}
+
+impl From<ParameterProblem> for ModelProblem {
+    /// The algebra's reason as the model's problem (the model names the
+    /// body).
+    fn from(problem: ParameterProblem) -> Self {
+        match problem {
+            ParameterProblem::NonFinite => Self::NonFiniteParameter,
+            ParameterProblem::InvalidMass => Self::InvalidMass,
+            ParameterProblem::InvalidInertia => Self::InvalidInertia,
+            ParameterProblem::Overflow => Self::Overflow,
+            ParameterProblem::RotationNotOrthonormal => Self::RotationNotOrthonormal,
+            ParameterProblem::Reflection => Self::Reflection,
+        }
+    }
 }
 
 /// What is wrong with a drive element (see [`crate::drive`]).

@@ -12,25 +12,21 @@
 //! `gravity()` is a motion in the world frame whose linear part is the
 //! gravitational acceleration (m/s²).
 //!
-//! Placements whose rotations are quarter turns can be declared
-//! ([`Model::with_placement_turns`], emitted by `rodyn-model`) or
-//! recognised ([`Model::with_recognised_turns`]); the model then also
-//! keeps each body's inertia and placement in the turned frames CRBA uses
-//! ([`TurnedFrame`]). No result changes; the `set_*` methods keep both
-//! forms in step.
+//! The model holds physics and topology only. What an algorithm derives
+//! from it once to run faster (CRBA's turned frames) lives in that
+//! algorithm's own plan
+//! ([`CrbaPlan`](crate::algorithm::crba::CrbaPlan)), never here.
 
 use crate::error::{Error, ModelProblem, Quantity, Result};
-use crate::joint::{Axis, Joint, JointModel};
+use crate::joint::{Joint, JointModel};
+use crate::planar::{Planar, PlanarInertia, PlanarJoint, PlanarMotion, PlanarTransform};
 use crate::space::{BodyInertia, Space, VectorOps};
-use crate::spatial::axis_permutation::{
-    turn_inertia_f32, turn_inertia_f64, turn_transform_f32, turn_transform_f64,
-};
-use crate::spatial::{AxisPermutation, Inertia, Motion, Spatial, Transform, TurnedFrame};
+use crate::spatial::{Inertia, Motion, Spatial, Transform};
 use crate::topology::Topology;
 use crate::Scalar;
 
 /// A multibody tree with `NB` bodies, `NQ` configuration and `NV` velocity
-/// coordinates, in geometry `G` ([`Spatial`] or [`Planar`](crate::planar::Planar)).
+/// coordinates, in geometry `G` ([`Spatial`] or [`Planar`]).
 #[derive(Clone, Copy, Debug)]
 pub struct Model<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space = Spatial> {
     topology: Topology<NB, NV>,
@@ -39,14 +35,6 @@ pub struct Model<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G
     inertias: [G::Inertia<S>; NB],
     gravity: G::Motion<S>,
     armature: [S; NV],
-    /// The frames CRBA expresses each body in (all unturned unless the
-    /// placements' quarter turns were declared, or set at run time).
-    turned_frames: [TurnedFrame; NB],
-    /// Each body's inertia in its turned frame (`inertias` where unturned).
-    turned_inertias: [G::Inertia<S>; NB],
-    /// Each placement seen from its parent's turned frame: `Q_λ` then
-    /// the placement.
-    turned_placements: [G::Transform<S>; NB],
     /// `false` when no joint restricts a finite configuration (no
     /// quaternion, no custom rule), so that a finite `q` needs no further
     /// check. Set by the constructors that know their joints at compile time.
@@ -105,90 +93,44 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, 
             inertias,
             gravity,
             armature: [S::ZERO; NV],
-            turned_frames: [TurnedFrame::UNTURNED; NB],
-            turned_inertias: inertias,
-            turned_placements: placements,
             constrained_configuration,
         }
     }
 }
 
-/// [`Model::with_placement_turns`] for one floating-point type: turning
-/// the inertias negates entries, which a `const fn` can do on `f32` and
-/// `f64` but not through the [`Scalar`] trait.
-macro_rules! placement_turns_for {
-    ($S:ty, $turn_inertia:ident, $turn_transform:ident) => {
-        impl<const NB: usize, const NQ: usize, const NV: usize> Model<$S, NB, NQ, NV, Spatial> {
-            /// The model with the placements whose rotations are quarter
-            /// turns declared as such (usable in `const`): `turns[i]`, when
-            /// `Some`, replaces placement i's rotation by its exact matrix.
-            /// The results do not change, but CRBA then moves the composite
-            /// inertias and columns of a revolute joint about a coordinate
-            /// axis behind such a placement with a rotation about a
-            /// coordinate axis instead of a general one (see
-            /// [`TurnedFrame`]). A model compiler that recognises quarter
-            /// turns (as `rodyn-model` does) emits this;
-            /// [`Model::with_recognised_turns`] finds them at run time, in
-            /// any scalar.
-            ///
-            /// ```
-            /// use rodyn::{Model, joint::{Axis, Joint}, spatial::*};
-            /// // A two-link arm whose second placement is a quarter turn about x.
-            /// const QUARTER_X: AxisPermutation =
-            ///     AxisPermutation::from_rows([[1, 0, 0], [0, 0, -1], [0, 1, 0]]);
-            /// // The scalar named at `new`: the method exists for `f32` and `f64`.
-            /// const ARM: Model<f64, 2, 2, 2> = Model::<f64, 2, 2, 2>::new(
-            ///     [None, Some(0)],
-            ///     [Joint::revolute(Axis::Z), Joint::revolute(Axis::Z)],
-            ///     [Transform::IDENTITY, Transform::from_translation(Vec3::new(0.0, 0.0, 0.3))],
-            ///     [Inertia::point_mass(1.0, Vec3::new(0.0, 0.0, 0.2)); 2],
-            ///     Motion::new(Vec3::ZERO, Vec3::new(0.0, 0.0, -9.81)),
-            /// )
-            /// .with_placement_turns([None, Some(QUARTER_X)]);
-            /// assert_eq!(ARM.placement(1).rot, QUARTER_X.matrix());
-            /// // Joint 2 turns about z, which its frame turned by the quarter turn
-            /// // about x carries onto minus y.
-            /// let axis = ARM.turned_frame(1).axis().unwrap();
-            /// assert_eq!((axis.turned, axis.reversed), (1, true));
-            /// ```
-            #[must_use]
-            pub const fn with_placement_turns(
-                mut self,
-                turns: [Option<AxisPermutation>; NB],
-            ) -> Self {
-                let mut axes = [None; NB];
-                let mut i = 0;
-                while i < NB {
-                    if let Some(turn) = turns[i] {
-                        self.placements[i].rot = turn.matrix();
-                    }
-                    if let Joint::Revolute(r) = &self.joints[i] {
-                        axes[i] = match r.axis {
-                            Axis::X => Some(0),
-                            Axis::Y => Some(1),
-                            Axis::Z => Some(2),
-                            Axis::Unit(_) => None,
-                        };
-                    }
-                    i += 1;
-                }
-                self.turned_frames = TurnedFrame::tree(&self.topology.parents, &turns, &axes);
-                let mut i = 0;
-                while i < NB {
-                    let frame = &self.turned_frames[i];
-                    self.turned_inertias[i] = $turn_inertia(&frame.turn(), &self.inertias[i]);
-                    self.turned_placements[i] =
-                        $turn_transform(&frame.parent_turn(), &self.placements[i]);
-                    i += 1;
-                }
-                self
-            }
+impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, NQ, NV, Planar> {
+    /// A planar model, checked at compile time when evaluated in a `const`;
+    /// arguments as for the 3-D [`Model::new`](crate::Model::new).
+    ///
+    /// # Panics
+    /// When the topology is inconsistent; in a `const` a compile error.
+    #[must_use]
+    pub const fn new_planar(
+        parents: [Option<usize>; NB],
+        joints: [PlanarJoint<S>; NB],
+        placements: [PlanarTransform<S>; NB],
+        inertias: [PlanarInertia<S>; NB],
+        gravity: PlanarMotion<S>,
+    ) -> Self {
+        let mut nq = [0; NB];
+        let mut nv = [0; NB];
+        let mut i = 0;
+        while i < NB {
+            nq[i] = joints[i].const_nq();
+            nv[i] = joints[i].const_nv();
+            i += 1;
         }
-    };
+        // Planar joints are angles and displacements: any finite q is valid.
+        Self::from_parts(
+            Topology::new(parents, nq, nv, NQ),
+            joints,
+            placements,
+            inertias,
+            gravity,
+        )
+        .with_unconstrained_configuration()
+    }
 }
-
-placement_turns_for!(f32, turn_inertia_f32, turn_transform_f32);
-placement_turns_for!(f64, turn_inertia_f64, turn_transform_f64);
 
 impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
     Model<S, NB, NQ, NV, G>
@@ -210,9 +152,6 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
             inertias,
             gravity,
             armature: [S::ZERO; NV],
-            turned_frames: [TurnedFrame::UNTURNED; NB],
-            turned_inertias: inertias,
-            turned_placements: placements,
             // Trait methods cannot run in a `const fn`: ask every joint.
             constrained_configuration: true,
         }
@@ -257,6 +196,16 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
     pub const fn inertia(&self, i: usize) -> &G::Inertia<S> {
         &self.inertias[i]
     }
+    /// Every joint's placement ([`placement`](Self::placement)).
+    #[must_use]
+    pub const fn placements(&self) -> &[G::Transform<S>; NB] {
+        &self.placements
+    }
+    /// Every body's inertia ([`inertia`](Self::inertia)).
+    #[must_use]
+    pub const fn inertias(&self) -> &[G::Inertia<S>; NB] {
+        &self.inertias
+    }
     /// Gravity in the world frame, as a motion (linear part in m/s²).
     #[must_use]
     pub const fn gravity(&self) -> &G::Motion<S> {
@@ -282,7 +231,6 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
         G::validate_inertia(&inertia)
             .map_err(|problem| Error::InvalidModel { body: i, problem })?;
         self.inertias[i] = inertia;
-        self.turned_inertias[i] = G::turn_inertia(&self.turned_frames[i].turn(), &inertia);
         Ok(())
     }
     /// Changes joint `i`'s placement in its parent (a link length).
@@ -299,54 +247,9 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
         G::validate_transform(&placement)
             .map_err(|problem| Error::InvalidModel { body: i, problem })?;
         self.placements[i] = placement;
-        self.find_turned_frames(Some(i));
         Ok(())
     }
 
-    /// The frame CRBA expresses body `i` in.
-    #[must_use]
-    pub const fn turned_frame(&self, i: usize) -> &TurnedFrame {
-        &self.turned_frames[i]
-    }
-
-    /// Recognises the placements' quarter turns at run time (exact
-    /// entries only) and sets every body's [`TurnedFrame`]: the run-time
-    /// counterpart of [`Model::with_placement_turns`] for a model built
-    /// without it. The results do not change; CRBA's cost may.
-    #[must_use]
-    pub fn with_recognised_turns(mut self) -> Self {
-        self.find_turned_frames(None);
-        self
-    }
-
-    /// Recognises placement `changed`'s quarter turn (every placement's
-    /// when `None`; the others keep what they had) and derives the frames.
-    fn find_turned_frames(&mut self, changed: Option<usize>) {
-        let mut turns = self.turned_frames.map(|f| f.placement());
-        for (i, turn) in turns.iter_mut().enumerate() {
-            if changed.is_none_or(|c| c == i) {
-                *turn = G::axis_permutation(&self.placements[i]);
-            }
-        }
-        let axes = self.joints.each_ref().map(JointModel::revolute_axis_index);
-        self.turned_frames = TurnedFrame::tree(&self.topology.parents, &turns, &axes);
-        for (i, frame) in self.turned_frames.iter().enumerate() {
-            self.turned_inertias[i] = G::turn_inertia(&frame.turn(), &self.inertias[i]);
-            self.turned_placements[i] =
-                G::turn_transform(&frame.parent_turn(), &self.placements[i]);
-        }
-    }
-
-    /// Body `i`'s inertia in its turned frame ([`Model::turned_frame`]).
-    #[must_use]
-    pub const fn turned_inertia(&self, i: usize) -> &G::Inertia<S> {
-        &self.turned_inertias[i]
-    }
-    /// Joint `i`'s placement seen from its parent's turned frame.
-    #[must_use]
-    pub const fn turned_placement(&self, i: usize) -> &G::Transform<S> {
-        &self.turned_placements[i]
-    }
     /// The armature of each velocity coordinate: an inertia (kg m² or kg)
     /// added to the diagonal of the mass matrix, such as a motor rotor's
     /// reflected inertia `N² J_r`
@@ -491,12 +394,6 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
             inertias: core::array::from_fn(|i| G::cast_inertia(&self.inertias[i])),
             gravity: G::cast_motion(&self.gravity),
             armature: core::array::from_fn(|k| T::from_f64(self.armature[k].to_f64())),
-            turned_frames: self.turned_frames,
-            // Turning only reorders entries and flips signs: exact in any scalar.
-            turned_inertias: core::array::from_fn(|i| G::cast_inertia(&self.turned_inertias[i])),
-            turned_placements: core::array::from_fn(|i| {
-                G::cast_transform(&self.turned_placements[i])
-            }),
             constrained_configuration: self.constrained_configuration,
         })
     }

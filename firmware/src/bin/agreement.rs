@@ -14,14 +14,14 @@
 
 use cortex_m_rt::entry;
 use rodyn::algorithm::aba::aba;
-use rodyn::algorithm::crba::crba;
-use rodyn::algorithm::forward_dynamics::{Crba, ForwardDynamics};
+use rodyn::algorithm::crba::{crba_planned, CrbaPlan};
+use rodyn::algorithm::forward_dynamics::Crba;
 use rodyn::algorithm::rnea::rnea;
 use rodyn::{Data, Error, Model};
 use rodyn_firmware::exit::exit_with;
-use rodyn_firmware::models::aibo::MODEL_F32 as QUADRUPED;
-use rodyn_firmware::models::panda::MODEL_F32 as PANDA;
-use rodyn_firmware::models::pendulum::MODEL_F32 as PENDULUM;
+use rodyn_firmware::models::aibo::{CRBA_PLAN_F32 as QUADRUPED_PLAN, MODEL_F32 as QUADRUPED};
+use rodyn_firmware::models::panda::{CRBA_PLAN_F32 as PANDA_PLAN, MODEL_F32 as PANDA};
+use rodyn_firmware::models::pendulum::{CRBA_PLAN_F32 as PENDULUM_PLAN, MODEL_F32 as PENDULUM};
 use rodyn_firmware::rng::XorShift32;
 
 /// Random states per model.
@@ -33,6 +33,7 @@ const SEED: u32 = 0xA61E_E000;
 fn report<const NB: usize, const NQ: usize, const NV: usize>(
     name: &str,
     model: &Model<f32, NB, NQ, NV>,
+    plan: &CrbaPlan<f32, NB>,
     rng: &mut XorShift32,
 ) -> bool {
     let mut data = Data::new();
@@ -69,7 +70,7 @@ fn report<const NB: usize, const NQ: usize, const NV: usize>(
         defmt::println!("agree {=str} {} aba {}", name, k, ddq);
         // Every entry of M, both triangles: which pass fills the upper one
         // is a choice of the tuning profile.
-        match crba(model, &mut data, &q) {
+        match crba_planned(model, plan, &mut data, &q) {
             Ok(m) => {
                 for (r, row) in m.iter().enumerate() {
                     defmt::println!("agree {=str} {} m{} {}", name, k, r, row);
@@ -80,7 +81,7 @@ fn report<const NB: usize, const NQ: usize, const NV: usize>(
                 return false;
             }
         }
-        match Crba::forward_dynamics(model, &mut data, &q, &v, &u, None) {
+        match Crba::forward_dynamics_planned(model, plan, &mut data, &q, &v, &u, None) {
             Ok(ddq) => defmt::println!("agree {=str} {} crba_fd {}", name, k, ddq),
             // In f32 the quadruped's light legs on its heavy trunk leave
             // some states' pivots below the factorisation's tolerance (see
@@ -111,8 +112,8 @@ fn main() -> ! {
         "agreement: f32 RNEA, ABA, CRBA and CRBA forward dynamics on {} random states per model",
         STATES
     );
-    let passed = report("pendulum", &PENDULUM, &mut rng)
-        & report("panda", &PANDA, &mut rng)
-        & report("quadruped", &QUADRUPED, &mut rng);
+    let passed = report("pendulum", &PENDULUM, &PENDULUM_PLAN, &mut rng)
+        & report("panda", &PANDA, &PANDA_PLAN, &mut rng)
+        & report("quadruped", &QUADRUPED, &QUADRUPED_PLAN, &mut rng);
     exit_with(passed)
 }

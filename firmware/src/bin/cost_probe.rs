@@ -13,7 +13,7 @@
 #![no_main]
 
 use cortex_m_rt::entry;
-use rodyn::algorithm::crba::crba;
+use rodyn::algorithm::crba::{crba_planned, CrbaPlan};
 use rodyn::algorithm::forward_dynamics::{Aba, Crba, ForwardDynamics};
 use rodyn::algorithm::rnea::rnea;
 use rodyn::sim::SemiImplicitEuler;
@@ -24,11 +24,11 @@ use rodyn_firmware::measure::{
     branch_state, probe_scene, stack_bytes, Cost, InstructionCounter, StateIndex, SEED, STATES,
     WOUND,
 };
-use rodyn_firmware::models::aibo::MODEL_F32 as QUADRUPED;
-use rodyn_firmware::models::panda::MODEL_F32 as PANDA;
-use rodyn_firmware::models::pendulum::MODEL_F32 as PENDULUM;
+use rodyn_firmware::models::aibo::{CRBA_PLAN_F32 as QUADRUPED_PLAN, MODEL_F32 as QUADRUPED};
+use rodyn_firmware::models::panda::{CRBA_PLAN_F32 as PANDA_PLAN, MODEL_F32 as PANDA};
+use rodyn_firmware::models::pendulum::{CRBA_PLAN_F32 as PENDULUM_PLAN, MODEL_F32 as PENDULUM};
 use rodyn_firmware::models::quadruped::{self, QuadrupedLoads};
-use rodyn_firmware::models::{muscle_robot as robot, PENDULUM_PLANAR};
+use rodyn_firmware::models::{muscle_robot as robot, PENDULUM_PLANAR, PENDULUM_PLANAR_CRBA_PLAN};
 use rodyn_firmware::rng::XorShift32;
 
 /// The algorithms probed, as they appear in the table.
@@ -60,6 +60,7 @@ impl Algorithm {
 fn probe<const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     name: &str,
     model: &Model<f32, NB, NQ, NV, G>,
+    plan: &CrbaPlan<f32, NB, G>,
     counter: &InstructionCounter,
 ) -> bool {
     let mut data = Data::<f32, NB, NV, G>::new();
@@ -93,9 +94,10 @@ fn probe<const NB: usize, const NQ: usize, const NV: usize, G: Space>(
             let mut call = || -> bool {
                 match algorithm {
                     Algorithm::Rnea => rnea(model, &mut data, &q, &v, &u, None).is_ok(),
-                    Algorithm::Crba => crba(model, &mut data, &q).is_ok(),
+                    Algorithm::Crba => crba_planned(model, plan, &mut data, &q).is_ok(),
                     Algorithm::CrbaForwardDynamics => {
-                        Crba::forward_dynamics(model, &mut data, &q, &v, &u, None).is_ok()
+                        Crba::forward_dynamics_planned(model, plan, &mut data, &q, &v, &u, None)
+                            .is_ok()
                     }
                     Algorithm::Aba => {
                         Aba::forward_dynamics(model, &mut data, &q, &v, &u, None).is_ok()
@@ -274,10 +276,15 @@ fn main() -> ! {
         STATES
     );
     sin_cos_cost(&counter);
-    let passed = probe("pendulum", &PENDULUM, &counter)
-        & probe("pendulum-planar", &PENDULUM_PLANAR, &counter)
-        & probe("panda-7dof", &PANDA, &counter)
-        & probe("quadruped-floating", &QUADRUPED, &counter)
+    let passed = probe("pendulum", &PENDULUM, &PENDULUM_PLAN, &counter)
+        & probe(
+            "pendulum-planar",
+            &PENDULUM_PLANAR,
+            &PENDULUM_PLANAR_CRBA_PLAN,
+            &counter,
+        )
+        & probe("panda-7dof", &PANDA, &PANDA_PLAN, &counter)
+        & probe("quadruped-floating", &QUADRUPED, &QUADRUPED_PLAN, &counter)
         & probe_muscle_robot(&counter)
         & probe_quadruped_step(&counter);
     exit_with(passed)

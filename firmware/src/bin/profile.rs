@@ -10,16 +10,16 @@
 use core::hint::black_box;
 use core::sync::atomic::{AtomicU32, Ordering};
 use cortex_m_rt::entry;
-use rodyn::algorithm::crba::crba;
+use rodyn::algorithm::crba::{crba_planned, CrbaPlan};
 use rodyn::algorithm::forward_dynamics::{Aba, Crba, ForwardDynamics};
 use rodyn::algorithm::rnea::rnea;
 use rodyn::space::Space;
 use rodyn::{Data, Model};
 use rodyn_firmware::exit::{exit, SUCCESS};
-use rodyn_firmware::models::aibo::MODEL_F32 as QUADRUPED;
-use rodyn_firmware::models::panda::MODEL_F32 as PANDA;
-use rodyn_firmware::models::pendulum::MODEL_F32 as PENDULUM;
-use rodyn_firmware::models::PENDULUM_PLANAR;
+use rodyn_firmware::models::aibo::{CRBA_PLAN_F32 as QUADRUPED_PLAN, MODEL_F32 as QUADRUPED};
+use rodyn_firmware::models::panda::{CRBA_PLAN_F32 as PANDA_PLAN, MODEL_F32 as PANDA};
+use rodyn_firmware::models::pendulum::{CRBA_PLAN_F32 as PENDULUM_PLAN, MODEL_F32 as PENDULUM};
+use rodyn_firmware::models::{PENDULUM_PLANAR, PENDULUM_PLANAR_CRBA_PLAN};
 use rodyn_firmware::rng::XorShift32;
 
 /// Written by the markers, so that neither is empty and the two cannot be
@@ -50,6 +50,7 @@ extern "C" fn rodyn_profile_end() {
 fn profile<const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     name: &str,
     model: &Model<f32, NB, NQ, NV, G>,
+    plan: &CrbaPlan<f32, NB, G>,
 ) {
     let mut rng = XorShift32::new(0x5EED_0001);
     let mut q = [0.0f32; NQ];
@@ -78,13 +79,13 @@ fn profile<const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     report(ok);
     defmt::println!("profile model={=str} algorithm=CRBA", name);
     rodyn_profile_begin();
-    let ok = crba(model, &mut data, &q).is_ok();
+    let ok = crba_planned(model, plan, &mut data, &q).is_ok();
     rodyn_profile_end();
     black_box(&data);
     report(ok);
     defmt::println!("profile model={=str} algorithm=CRBA+LTDL-FD", name);
     rodyn_profile_begin();
-    let ok = Crba::forward_dynamics(model, &mut data, &q, &v, &u, None).is_ok();
+    let ok = Crba::forward_dynamics_planned(model, plan, &mut data, &q, &v, &u, None).is_ok();
     rodyn_profile_end();
     black_box(&data);
     report(ok);
@@ -106,9 +107,13 @@ fn report(ok: bool) {
 
 #[entry]
 fn main() -> ! {
-    profile("pendulum", &PENDULUM);
-    profile("pendulum-planar", &PENDULUM_PLANAR);
-    profile("panda-7dof", &PANDA);
-    profile("quadruped-floating", &QUADRUPED);
+    profile("pendulum", &PENDULUM, &PENDULUM_PLAN);
+    profile(
+        "pendulum-planar",
+        &PENDULUM_PLANAR,
+        &PENDULUM_PLANAR_CRBA_PLAN,
+    );
+    profile("panda-7dof", &PANDA, &PANDA_PLAN);
+    profile("quadruped-floating", &QUADRUPED, &QUADRUPED_PLAN);
     exit(SUCCESS)
 }

@@ -277,7 +277,7 @@ pub(crate) fn pose_step<S: Scalar, const NB: usize, const NQ: usize, const NV: u
         _ => data.o_m_i.get(p),
     });
     let o_m_i = match parent {
-        Some(o_m_p) => G::then_joint(o_m_p, &li_m_i, model.turned_frame(i)),
+        Some(o_m_p) => G::then_joint(o_m_p, &li_m_i, model.joint(i)),
         None => li_m_i,
     };
     data.li_m_i[i] = li_m_i;

@@ -140,7 +140,7 @@ pub(crate) fn joint_jacobians_from_transforms<
     let t = model.topology();
     for i in 0..NB {
         let o_m_i = match t.parents[i] {
-            Some(p) => G::then_joint(&data.o_m_i[p], &data.li_m_i[i], model.turned_frame(i)),
+            Some(p) => G::then_joint(&data.o_m_i[p], &data.li_m_i[i], model.joint(i)),
             None => data.li_m_i[i],
         };
         data.o_m_i[i] = o_m_i;

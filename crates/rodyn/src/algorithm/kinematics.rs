@@ -82,7 +82,7 @@ pub(crate) fn pose_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: u
                 let Some(o_m_p) = data.o_m_i.get(p) else {
                     return;
                 };
-                G::then_joint(o_m_p, &data.li_m_i[i], model.turned_frame(i))
+                G::then_joint(o_m_p, &data.li_m_i[i], model.joint(i))
             }
             None => data.li_m_i[i],
         };

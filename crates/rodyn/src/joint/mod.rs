@@ -21,6 +21,7 @@ mod axis;
 mod continuous;
 mod custom;
 mod free_flyer;
+mod planar;
 mod prismatic;
 mod revolute;
 
@@ -31,7 +32,7 @@ pub use free_flyer::FreeFlyer;
 pub use prismatic::Prismatic;
 pub use revolute::Revolute;
 
-use crate::space::Space;
+use crate::space::Geometry;
 use crate::spatial::{ArticulatedInertia6, Force, Motion, Spatial, Transform};
 use crate::Scalar;
 use core::fmt::Debug;
@@ -50,7 +51,7 @@ pub use crate::error::ConfigurationError;
 /// [`angle`](Self::angle), the motions) read them from the front and must
 /// accept longer slices: the algorithms pass a joint the state vector from
 /// its first coordinate on. Vectors are in the joint's moving frame.
-pub trait JointModel<S: Scalar, G: Space>: Copy + Debug {
+pub trait JointModel<S: Scalar, G: Geometry>: Copy + Debug {
     /// Number of configuration coordinates.
     fn nq(&self) -> usize;
     /// Number of velocity coordinates (degrees of freedom).
@@ -156,7 +157,7 @@ pub const MAX_RATE_NQ: usize = 8;
 /// about ε^⅔ relative: 4e-11 in f64, 2e-5 in f32), for joints with
 /// nq ≠ nv that do not state their rate. Writes `q_dot[..nq]`, nq at most
 /// [`MAX_RATE_NQ`] (entries beyond it are left untouched).
-pub fn rate_from_integrate<S: Scalar, G: Space, J: JointModel<S, G>>(
+pub fn rate_from_integrate<S: Scalar, G: Geometry, J: JointModel<S, G>>(
     joint: &J,
     q: &[S],
     v: &[S],

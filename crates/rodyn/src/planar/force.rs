@@ -1,7 +1,6 @@
 //! Planar force vectors `[n; fx; fy]`: moment about z, force in the x-y plane.
 
 use super::Vec2;
-use crate::space::{ForceVector, VectorOps};
 use crate::Scalar;
 use core::ops::{Add, AddAssign, Mul, Neg, Sub, SubAssign};
 
@@ -21,23 +20,6 @@ impl<S: Scalar> PlanarForce<S> {
         Self { ang, lin }
     }
 }
-
-impl<S: Scalar> VectorOps<S> for PlanarForce<S> {
-    const ZERO: Self = Self::new(S::ZERO, Vec2::ZERO);
-    #[inline]
-    fn is_finite(&self) -> bool {
-        self.ang.is_finite() && self.lin.is_finite()
-    }
-    #[inline]
-    fn component(&self, k: usize) -> S {
-        match k {
-            0 => self.ang,
-            1 => self.lin.x,
-            _ => self.lin.y,
-        }
-    }
-}
-
 impl<S: Scalar> Add for PlanarForce<S> {
     type Output = Self;
     #[inline]
@@ -78,9 +60,6 @@ impl<S: Scalar> SubAssign for PlanarForce<S> {
         *self = *self - o;
     }
 }
-
-impl<S: Scalar> ForceVector<S> for PlanarForce<S> {}
-
 impl<S: Scalar> PlanarForce<S> {
     /// A pure force `f` applied at point `p` (both in this frame).
     #[must_use]

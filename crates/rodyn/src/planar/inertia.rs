@@ -1,7 +1,7 @@
 //! Planar rigid-body inertia: mass, centre of mass and moment about z.
 
-use super::{PlanarForce, PlanarMotion, PlanarTransform, Vec2};
-use crate::space::{BodyInertia, RigidTransform};
+use super::Vec2;
+use crate::spatial::ParameterProblem;
 use crate::Scalar;
 
 /// Mass (kg), centre of mass in the plane (m), moment of inertia about the
@@ -17,6 +17,37 @@ pub struct PlanarInertia<S> {
 }
 
 impl<S: Scalar> PlanarInertia<S> {
+    /// `true` when every entry is finite.
+    #[inline]
+    #[must_use]
+    pub fn is_finite(&self) -> bool {
+        self.mass.is_finite() && self.com.is_finite() && self.izz.is_finite()
+    }
+    /// Checks that the inertia is physical: finite, a mass and an `izz`
+    /// that are not negative, and no overflowing products (`m |c|²`,
+    /// `m²`, and the square of the inertia about the origin, which ABA
+    /// forms).
+    ///
+    /// # Errors
+    /// The first [`ParameterProblem`] found.
+    pub fn validate(&self) -> Result<(), ParameterProblem> {
+        let ok = |x: S| x.is_finite() && x.to_f64() >= 0.0;
+        if !(self.mass.is_finite() && self.com.is_finite() && self.izz.is_finite()) {
+            Err(ParameterProblem::NonFinite)
+        } else if !ok(self.mass) {
+            Err(ParameterProblem::InvalidMass)
+        } else if !(self.mass * self.com.norm_squared() + self.izz).is_finite()
+            || !(self.mass * self.mass).is_finite()
+            || !((self.mass * self.com.norm_squared() + self.izz).squared()).is_finite()
+        {
+            // Also the products of two entries ABA forms (U Uᵀ).
+            Err(ParameterProblem::Overflow)
+        } else if !ok(self.izz) {
+            Err(ParameterProblem::InvalidInertia)
+        } else {
+            Ok(())
+        }
+    }
     /// An inertia from its parts.
     #[must_use]
     pub const fn new(mass: S, com: Vec2<S>, izz: S) -> Self {
@@ -30,46 +61,5 @@ impl<S: Scalar> PlanarInertia<S> {
             self.com.cast(),
             T::from_f64(self.izz.to_f64()),
         )
-    }
-}
-
-impl<S: Scalar> BodyInertia<S> for PlanarInertia<S> {
-    type Motion = PlanarMotion<S>;
-    type Force = PlanarForce<S>;
-    type Transform = PlanarTransform<S>;
-    const ZERO: Self = Self::new(S::ZERO, Vec2::ZERO, S::ZERO);
-
-    #[inline]
-    fn mass(&self) -> S {
-        self.mass
-    }
-    #[inline]
-    fn com(&self) -> Vec2<S> {
-        self.com
-    }
-    #[inline]
-    fn mul_motion(&self, v: &PlanarMotion<S>) -> PlanarForce<S> {
-        // Velocity of the centre of mass is v + ω ẑ × c.
-        let lin = (v.lin + self.com.perp_scaled(v.ang)) * self.mass;
-        PlanarForce::new(self.izz * v.ang + self.com.cross(&lin), lin)
-    }
-    #[inline]
-    fn act(&self, x: &PlanarTransform<S>) -> Self {
-        Self::new(self.mass, x.act_point(&self.com), self.izz)
-    }
-    fn combine(&self, o: &Self) -> Self {
-        let mass = self.mass + o.mass;
-        let inv = S::ONE / mass.max(S::from_f64(S::EPSILON));
-        let com = (self.com * self.mass + o.com * o.mass) * inv;
-        let d = self.com - o.com;
-        let izz = self.izz + o.izz + self.mass * o.mass * inv * d.norm_squared();
-        Self::new(mass, com, izz)
-    }
-    #[inline]
-    fn potential_energy(&self, gravity: &PlanarMotion<S>) -> S {
-        -(self.mass * gravity.lin.dot(&self.com))
-    }
-    fn is_finite(&self) -> bool {
-        self.mass.is_finite() && self.com.is_finite() && self.izz.is_finite()
     }
 }

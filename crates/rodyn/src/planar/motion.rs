@@ -1,7 +1,6 @@
 //! Planar motion vectors `[ω; vx; vy]`: rotation about z, velocity in the x-y plane.
 
 use super::Vec2;
-use crate::space::{MotionVector, VectorOps};
 use crate::Scalar;
 use core::ops::{Add, AddAssign, Mul, Neg, Sub, SubAssign};
 
@@ -21,23 +20,6 @@ impl<S: Scalar> PlanarMotion<S> {
         Self { ang, lin }
     }
 }
-
-impl<S: Scalar> VectorOps<S> for PlanarMotion<S> {
-    const ZERO: Self = Self::new(S::ZERO, Vec2::ZERO);
-    #[inline]
-    fn is_finite(&self) -> bool {
-        self.ang.is_finite() && self.lin.is_finite()
-    }
-    #[inline]
-    fn component(&self, k: usize) -> S {
-        match k {
-            0 => self.ang,
-            1 => self.lin.x,
-            _ => self.lin.y,
-        }
-    }
-}
-
 impl<S: Scalar> Add for PlanarMotion<S> {
     type Output = Self;
     #[inline]
@@ -76,25 +58,5 @@ impl<S: Scalar> SubAssign for PlanarMotion<S> {
     #[inline]
     fn sub_assign(&mut self, o: Self) {
         *self = *self - o;
-    }
-}
-
-impl<S: Scalar> MotionVector<S> for PlanarMotion<S> {
-    type Force = super::PlanarForce<S>;
-    #[inline]
-    fn cross_motion(&self, m: &Self) -> Self {
-        // ω × ω_m vanishes in the plane; ω × v_m + v × ω_m remains.
-        Self::new(
-            S::ZERO,
-            m.lin.perp_scaled(self.ang) - self.lin.perp_scaled(m.ang),
-        )
-    }
-    #[inline]
-    fn cross_force(&self, f: &super::PlanarForce<S>) -> super::PlanarForce<S> {
-        super::PlanarForce::new(self.lin.cross(&f.lin), f.lin.perp_scaled(self.ang))
-    }
-    #[inline]
-    fn dot(&self, f: &super::PlanarForce<S>) -> S {
-        self.ang * f.ang + self.lin.dot(&f.lin)
     }
 }

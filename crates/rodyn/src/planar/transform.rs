@@ -4,8 +4,8 @@
 //! x axis in a, and the origin of b in a; the method table of
 //! [`Transform`](crate::spatial::Transform) applies unchanged.
 
-use super::{PlanarForce, PlanarMotion, Vec2};
-use crate::space::RigidTransform;
+use super::Vec2;
+use crate::spatial::ParameterProblem;
 use crate::Scalar;
 
 /// A planar rigid transform `aMb`.
@@ -20,6 +20,31 @@ pub struct PlanarTransform<S> {
 }
 
 impl<S: Scalar> PlanarTransform<S> {
+    /// `true` when every entry is finite.
+    #[inline]
+    #[must_use]
+    pub fn is_finite(&self) -> bool {
+        self.cos.is_finite() && self.sin.is_finite() && self.trans.is_finite()
+    }
+    /// Checks a placement: finite, a translation whose `|p|⁴` is finite
+    /// (as the 3-D placements: ABA multiplies two `m |p|²` entries), and
+    /// `cos² + sin² = 1` to 10³ ε.
+    ///
+    /// # Errors
+    /// The first [`ParameterProblem`] found.
+    pub fn validate(&self) -> Result<(), ParameterProblem> {
+        let n = (self.cos * self.cos + self.sin * self.sin).to_f64();
+        if !self.is_finite() {
+            Err(ParameterProblem::NonFinite)
+        } else if !self.trans.norm_squared().squared().is_finite() {
+            // As the 3-D placements: ABA multiplies two m |p|² entries.
+            Err(ParameterProblem::Overflow)
+        } else if (n - 1.0).abs() <= 1e3 * S::EPSILON {
+            Ok(())
+        } else {
+            Err(ParameterProblem::RotationNotOrthonormal)
+        }
+    }
     /// From the cosine and sine of the angle and the translation (usable in `const`).
     #[must_use]
     pub const fn from_cos_sin(cos: S, sin: S, trans: Vec2<S>) -> Self {
@@ -67,56 +92,5 @@ impl<S: Scalar> PlanarTransform<S> {
             T::from_f64(self.sin.to_f64()),
             self.trans.cast(),
         )
-    }
-}
-
-impl<S: Scalar> RigidTransform<S> for PlanarTransform<S> {
-    type Motion = PlanarMotion<S>;
-    type Force = PlanarForce<S>;
-    type Point = Vec2<S>;
-    const IDENTITY: Self = Self::from_cos_sin(S::ONE, S::ZERO, Vec2::ZERO);
-
-    #[inline]
-    fn compose(&self, o: &Self) -> Self {
-        Self::from_cos_sin(
-            self.cos * o.cos - self.sin * o.sin,
-            self.sin * o.cos + self.cos * o.sin,
-            self.rotate(&o.trans) + self.trans,
-        )
-    }
-    #[inline]
-    fn inverse(&self) -> Self {
-        Self::from_cos_sin(self.cos, -self.sin, -self.rotate_inv(&self.trans))
-    }
-    #[inline]
-    fn act_motion(&self, m: &PlanarMotion<S>) -> PlanarMotion<S> {
-        PlanarMotion::new(m.ang, self.rotate(&m.lin) - self.trans.perp_scaled(m.ang))
-    }
-    #[inline]
-    fn act_inv_motion(&self, m: &PlanarMotion<S>) -> PlanarMotion<S> {
-        PlanarMotion::new(
-            m.ang,
-            self.rotate_inv(&(m.lin + self.trans.perp_scaled(m.ang))),
-        )
-    }
-    #[inline]
-    fn act_force(&self, f: &PlanarForce<S>) -> PlanarForce<S> {
-        let lin = self.rotate(&f.lin);
-        PlanarForce::new(f.ang + self.trans.cross(&lin), lin)
-    }
-    #[inline]
-    fn act_inv_force(&self, f: &PlanarForce<S>) -> PlanarForce<S> {
-        PlanarForce::new(f.ang - self.trans.cross(&f.lin), self.rotate_inv(&f.lin))
-    }
-    #[inline]
-    fn act_point(&self, p: &Vec2<S>) -> Vec2<S> {
-        self.rotate(p) + self.trans
-    }
-    #[inline]
-    fn translation(&self) -> Vec2<S> {
-        self.trans
-    }
-    fn is_finite(&self) -> bool {
-        self.cos.is_finite() && self.sin.is_finite() && self.trans.is_finite()
     }
 }

@@ -27,6 +27,11 @@ macro_rules! float_fn {
 }
 
 impl Scalar for f64 {
+    /// The bits of all, or-ed, without their signs.
+    #[inline(always)]
+    fn all_zero<const N: usize>(values: [Self; N]) -> bool {
+        values.iter().fold(0, |acc: u64, v| acc | v.to_bits()) << 1 == 0
+    }
     const ZERO: Self = 0.0;
     const ONE: Self = 1.0;
     const NEG_ONE: Self = -1.0;
@@ -92,6 +97,11 @@ impl Scalar for f64 {
 }
 
 impl Scalar for f32 {
+    /// The bits of all, or-ed, without their signs.
+    #[inline(always)]
+    fn all_zero<const N: usize>(values: [Self; N]) -> bool {
+        values.iter().fold(0, |acc: u32, v| acc | v.to_bits()) << 1 == 0
+    }
     const ZERO: Self = 0.0;
     const ONE: Self = 1.0;
     const NEG_ONE: Self = -1.0;

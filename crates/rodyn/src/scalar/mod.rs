@@ -133,4 +133,11 @@ pub trait Scalar:
     fn squared(self) -> Self {
         self * self
     }
+    /// `true` when every value is exactly zero (of either sign). A
+    /// floating-point type may test the bits of all at once: one branch
+    /// instead of one comparison each.
+    #[inline(always)]
+    fn all_zero<const N: usize>(values: [Self; N]) -> bool {
+        values.iter().all(|v| *v == Self::ZERO)
+    }
 }

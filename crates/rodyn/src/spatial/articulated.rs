@@ -4,8 +4,7 @@
 //! `n = A ω + B v`, `f = Bᵀ ω + C v`, with `A` and `C` symmetric.
 
 use super::mat3::dot3;
-use super::{Force, Inertia, Mat3, Motion, Sym3, Transform, Vec3};
-use crate::space::ArticulatedInertia;
+use super::{Force, Mat3, Motion, Sym3, Transform, Vec3};
 use crate::Scalar;
 
 /// A symmetric 6x6 articulated-body inertia in block form.
@@ -20,13 +19,13 @@ pub struct ArticulatedInertia6<S> {
 }
 
 /// `[p×]` as a matrix.
-fn cross_matrix<S: Scalar>(p: &Vec3<S>) -> Mat3<S> {
+pub(crate) fn cross_matrix<S: Scalar>(p: &Vec3<S>) -> Mat3<S> {
     let z = S::ZERO;
     Mat3::from_rows([[z, -p.z, p.y], [p.z, z, -p.x], [-p.y, p.x, z]])
 }
 
 /// The outer product `s a bᵀ`.
-fn outer<S: Scalar>(a: &Vec3<S>, b: &Vec3<S>, s: S) -> Mat3<S> {
+pub(crate) fn outer<S: Scalar>(a: &Vec3<S>, b: &Vec3<S>, s: S) -> Mat3<S> {
     let a = a.scale(s);
     Mat3::from_rows([
         [a.x * b.x, a.x * b.y, a.x * b.z],
@@ -47,7 +46,7 @@ fn cross<S: Scalar>(u: &[S; 3], v: &Vec3<S>) -> [S; 3] {
 
 /// `R B Rᵀ` for a general `B` (54 products).
 #[inline(always)]
-fn rotate_mat<S: Scalar>(b: &[[S; 3]; 3], r: &[[S; 3]; 3]) -> [[S; 3]; 3] {
+pub(crate) fn rotate_mat<S: Scalar>(b: &[[S; 3]; 3], r: &[[S; 3]; 3]) -> [[S; 3]; 3] {
     // Column j of B Rᵀ is B r_j.
     let t = [
         [dot3(&b[0], &r[0]), dot3(&b[1], &r[0]), dot3(&b[2], &r[0])],
@@ -73,7 +72,7 @@ impl<S: Scalar> ArticulatedInertia6<S> {
     /// `self` as soon as it is complete, so that few intermediates are alive
     /// at once (fewer spills); hence the rotations come as closures.
     #[inline(always)]
-    fn add_rotated_shifted(
+    pub(crate) fn add_rotated_shifted(
         &mut self,
         o: &Self,
         x: &Transform<S>,
@@ -141,7 +140,11 @@ impl<S: Scalar> ArticulatedInertia6<S> {
     // `crate::tuning`.
     #[cfg_attr(rodyn_tuning = "in_order", inline(never))]
     #[cfg_attr(rodyn_tuning = "out_of_order", inline)]
-    fn add_act_plane<const I: usize, const J: usize>(&mut self, o: &Self, x: &Transform<S>) {
+    pub(crate) fn add_act_plane<const I: usize, const J: usize>(
+        &mut self,
+        o: &Self,
+        x: &Transform<S>,
+    ) {
         let r = &x.rot.m;
         // B' = Σₘ R eₘ (R bₘ)ᵀ over the rows m = I, J of B.
         let rotated_b = || {
@@ -183,7 +186,7 @@ impl<S: Scalar> ArticulatedInertia6<S> {
     /// row and column K of `A` and the row K of `B` zero (set exactly), so
     /// only the other 15 entries are updated and enter the product.
     #[inline(always)]
-    fn project_plane<const I: usize, const J: usize>(
+    pub(crate) fn project_plane<const I: usize, const J: usize>(
         &mut self,
         u: &Force<S>,
         d_inv: S,
@@ -245,107 +248,5 @@ impl<S: Scalar> ArticulatedInertia6<S> {
             (false, true) => self.b.m[j][i - 3],
             (false, false) => self.c.get(i - 3, j - 3),
         }
-    }
-}
-
-impl<S: Scalar> ArticulatedInertia<S> for ArticulatedInertia6<S> {
-    type Motion = Motion<S>;
-    type Force = Force<S>;
-    type Transform = Transform<S>;
-    type Inertia = Inertia<S>;
-    const ZERO: Self = Self {
-        a: Sym3::ZERO,
-        b: Mat3::ZERO,
-        c: Sym3::ZERO,
-    };
-
-    #[inline]
-    fn from_rigid(i: &Inertia<S>) -> Self {
-        // A = I_c + m ([c]ₓ[c]ₓᵀ), formed from h = m c: 9 products, not 15.
-        let (c, h) = (&i.com, i.com.scale(i.mass));
-        let r = &i.rot_inertia;
-        let a = Sym3::new(
-            r.xx + (h.y * c.y + h.z * c.z),
-            r.xy - h.x * c.y,
-            r.xz - h.x * c.z,
-            r.yy + (h.x * c.x + h.z * c.z),
-            r.yz - h.y * c.z,
-            r.zz + (h.x * c.x + h.y * c.y),
-        );
-        Self {
-            a,
-            b: cross_matrix(&h),
-            c: Sym3::identity_scaled(i.mass),
-        }
-    }
-    #[inline]
-    fn mul_motion(&self, m: &Motion<S>) -> Force<S> {
-        Force::new(
-            self.a.mul_vec(&m.ang) + self.b.mul_vec(&m.lin),
-            self.b.tr_mul_vec(&m.ang) + self.c.mul_vec(&m.lin),
-        )
-    }
-    #[inline]
-    fn add_assign(&mut self, o: &Self) {
-        self.a += o.a;
-        self.b = self.b + o.b;
-        self.c += o.c;
-    }
-    #[inline]
-    fn sub_outer(&mut self, u: &Force<S>, s: S) {
-        self.a -= Sym3::outer(&u.ang, s);
-        self.b = self.b - outer(&u.ang, &u.lin, s);
-        self.c -= Sym3::outer(&u.lin, s);
-    }
-    fn sub_outer_sym(&mut self, u: &Force<S>, w: &Force<S>, s: S) {
-        self.a -= Sym3::outer_sym(&u.ang, &w.ang, s);
-        self.b = self.b - outer(&u.ang, &w.lin, s) - outer(&w.ang, &u.lin, s);
-        self.c -= Sym3::outer_sym(&u.lin, &w.lin, s);
-    }
-    fn act(&self, x: &Transform<S>) -> Self {
-        let mut out = Self::ZERO;
-        out.add_act(self, x);
-        out
-    }
-    #[inline]
-    fn add_act(&mut self, o: &Self, x: &Transform<S>) {
-        let r = &x.rot.m;
-        self.add_rotated_shifted(o, x, || rotate_mat(&o.b.m, r), || o.a.rotate(&x.rot));
-    }
-    #[inline(always)]
-    fn project_mul_motion(
-        &mut self,
-        u: &Force<S>,
-        d_inv: S,
-        m: &Motion<S>,
-        revolute_axis: Option<usize>,
-    ) -> Force<S> {
-        match revolute_axis {
-            Some(0) => self.project_plane::<1, 2>(u, d_inv, m),
-            Some(1) => self.project_plane::<2, 0>(u, d_inv, m),
-            Some(2) => self.project_plane::<0, 1>(u, d_inv, m),
-            _ => {
-                self.sub_outer(u, d_inv);
-                self.mul_motion(m)
-            }
-        }
-    }
-    #[inline(always)]
-    fn add_act_projected(&mut self, o: &Self, x: &Transform<S>, revolute_axis: Option<usize>) {
-        // Iᵃ S = 0 for the joint just projected out: about coordinate axis
-        // k, the angular row and column k of A and the row k of B vanish
-        // (exactly, in exact arithmetic; here they hold rounding residue,
-        // which is dropped). Rotating what remains costs 60 products
-        // instead of 99.
-        match revolute_axis {
-            Some(0) => self.add_act_plane::<1, 2>(o, x),
-            Some(1) => self.add_act_plane::<2, 0>(o, x),
-            Some(2) => self.add_act_plane::<0, 1>(o, x),
-            _ => self.add_act(o, x),
-        }
-    }
-    #[inline]
-    fn trace(&self) -> S {
-        self.a.trace() + self.c.trace()
     }
 }

@@ -4,8 +4,8 @@
 //! the rotation's matrix has one entry ±1 in each row and column. Such a
 //! rotation moves a vector by reordering its components and flipping
 //! signs, exactly in any scalar, and two of them compose by integer
-//! arithmetic, so a `const` model can carry them (see
-//! [`Model::with_placement_turns`](crate::Model::with_placement_turns)).
+//! arithmetic, so a `const` CRBA plan can carry them (see
+//! [`CrbaPlan::from_turns`](crate::algorithm::crba::CrbaPlan::from_turns)).
 
 use super::{Inertia, Mat3, Sym3, Transform, Vec3};
 use crate::Scalar;

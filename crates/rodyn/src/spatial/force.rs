@@ -4,7 +4,6 @@
 //! both in the frame's coordinates. Angular part first in memory.
 
 use super::Vec3;
-use crate::space::{ForceVector, VectorOps};
 use crate::Scalar;
 use core::ops::{Add, AddAssign, Mul, Neg, Sub, SubAssign};
 
@@ -41,25 +40,6 @@ impl<S: Scalar> Force<S> {
         Self::new(p.cross(&f), f)
     }
 }
-
-impl<S: Scalar> VectorOps<S> for Force<S> {
-    const ZERO: Self = Self::new(Vec3::ZERO, Vec3::ZERO);
-    #[inline]
-    fn is_finite(&self) -> bool {
-        self.ang.is_finite() && self.lin.is_finite()
-    }
-    #[inline]
-    fn component(&self, k: usize) -> S {
-        if k < 3 {
-            self.ang.get(k)
-        } else {
-            self.lin.get(k - 3)
-        }
-    }
-}
-
-impl<S: Scalar> ForceVector<S> for Force<S> {}
-
 impl<S: Scalar> Add for Force<S> {
     type Output = Self;
     #[inline]

@@ -4,9 +4,8 @@
 //! rotational inertia `I_c` about the centre of mass (kg m²), all in the
 //! body's frame. Ten numbers, and transforming it is a rotation and a shift.
 
-use super::{Force, Motion, Sym3, Transform, Vec3};
-use crate::error::ModelProblem;
-use crate::space::{BodyInertia, RigidTransform};
+use super::ParameterProblem;
+use super::{Sym3, Vec3};
 use crate::Scalar;
 
 /// Mass, centre of mass and rotational inertia about the centre of mass.
@@ -21,6 +20,12 @@ pub struct Inertia<S> {
 }
 
 impl<S: Scalar> Inertia<S> {
+    /// `true` when every entry is finite.
+    #[inline]
+    #[must_use]
+    pub fn is_finite(&self) -> bool {
+        self.mass.is_finite() && self.com.is_finite() && self.rot_inertia.is_finite()
+    }
     /// An inertia from mass, centre of mass and rotational inertia about the centre of mass.
     #[must_use]
     pub const fn new(mass: S, com: Vec3<S>, rot_inertia: Sym3<S>) -> Self {
@@ -50,77 +55,6 @@ impl<S: Scalar> Inertia<S> {
         )
     }
 }
-
-impl<S: Scalar> BodyInertia<S> for Inertia<S> {
-    type Motion = Motion<S>;
-    type Force = Force<S>;
-    type Transform = Transform<S>;
-    const ZERO: Self = Self::new(S::ZERO, Vec3::ZERO, Sym3::ZERO);
-
-    #[inline]
-    fn mass(&self) -> S {
-        self.mass
-    }
-    #[inline]
-    fn com(&self) -> Vec3<S> {
-        self.com
-    }
-    #[inline]
-    fn mul_motion(&self, v: &Motion<S>) -> Force<S> {
-        // Momentum of the centre of mass, then its moment about the origin.
-        let lin = (v.lin - self.com.cross(&v.ang)) * self.mass;
-        let ang = self.rot_inertia.mul_vec(&v.ang) + self.com.cross(&lin);
-        Force::new(ang, lin)
-    }
-    #[inline]
-    fn net_force(&self, v: &Motion<S>, a: &Motion<S>) -> Force<S> {
-        // Newton and Euler at the centre of mass, then the moment carried to
-        // the origin: 51 products instead of the 66 of I a + v ×* I v.
-        // The COM's classical acceleration is a_lin + α × c + ω × (v_lin + ω × c).
-        let (omega, alpha) = (&v.ang, &a.ang);
-        let v_com = v.lin + omega.cross(&self.com);
-        let lin = (a.lin + alpha.cross(&self.com) + omega.cross(&v_com)) * self.mass;
-        let spin = self.rot_inertia.mul_vec(omega);
-        let ang = self.rot_inertia.mul_vec(alpha) + omega.cross(&spin) + self.com.cross(&lin);
-        Force::new(ang, lin)
-    }
-    #[inline]
-    fn velocity_product_force(&self, v: &Motion<S>) -> Force<S> {
-        let omega = &v.ang;
-        let v_com = v.lin + omega.cross(&self.com);
-        let lin = omega.cross(&v_com) * self.mass;
-        let spin = self.rot_inertia.mul_vec(omega);
-        Force::new(omega.cross(&spin) + self.com.cross(&lin), lin)
-    }
-    #[inline(always)]
-    fn act(&self, x: &Transform<S>) -> Self {
-        Self::new(
-            self.mass,
-            x.act_point(&self.com),
-            self.rot_inertia.rotate(&x.rot),
-        )
-    }
-    #[inline(always)]
-    fn combine(&self, o: &Self) -> Self {
-        let mass = self.mass + o.mass;
-        // A massless pair keeps a zero inertia rather than dividing by zero.
-        let eps = S::from_f64(S::EPSILON);
-        let inv = S::ONE / mass.max(eps);
-        let com = (self.com * self.mass + o.com * o.mass) * inv;
-        let d = self.com - o.com;
-        let reduced = self.mass * o.mass * inv;
-        let rot_inertia = self.rot_inertia + o.rot_inertia + Sym3::parallel_axis(&d).scale(reduced);
-        Self::new(mass, com, rot_inertia)
-    }
-    #[inline]
-    fn potential_energy(&self, gravity: &Motion<S>) -> S {
-        -(self.mass * gravity.lin.dot(&self.com))
-    }
-    fn is_finite(&self) -> bool {
-        self.mass.is_finite() && self.com.is_finite() && self.rot_inertia.is_finite()
-    }
-}
-
 impl<S: Scalar> Inertia<S> {
     /// Checks that the inertia is physical: finite, non-negative mass,
     /// products that do not overflow (`m |c|²`, the trace, `m²` and the
@@ -131,13 +65,13 @@ impl<S: Scalar> Inertia<S> {
     /// the setters.
     ///
     /// # Errors
-    /// [`ModelProblem::NonFiniteParameter`], [`ModelProblem::InvalidMass`],
-    /// [`ModelProblem::Overflow`] or [`ModelProblem::InvalidInertia`].
+    /// [`ParameterProblem::NonFinite`], [`ParameterProblem::InvalidMass`],
+    /// [`ParameterProblem::Overflow`] or [`ParameterProblem::InvalidInertia`].
     ///
     /// # Example
     ///
     /// ```
-    /// use rodyn::error::ModelProblem;
+    /// use rodyn::spatial::ParameterProblem;
     /// use rodyn::spatial::{Inertia, Sym3, Vec3};
     /// // A 2 kg, 10 x 20 x 30 cm box about its centre is physical.
     /// let (m, a, b, c) = (2.0, 0.1, 0.2, 0.3);
@@ -145,15 +79,15 @@ impl<S: Scalar> Inertia<S> {
     /// assert_eq!(Inertia::new(m, Vec3::ZERO, box_).validate(), Ok(()));
     /// // No body has I_zz > I_xx + I_yy.
     /// let impossible = Sym3::diagonal(0.01, 0.01, 0.03);
-    /// assert_eq!(Inertia::new(m, Vec3::ZERO, impossible).validate(), Err(ModelProblem::InvalidInertia));
-    /// assert_eq!(Inertia::new(-1.0, Vec3::ZERO, box_).validate(), Err(ModelProblem::InvalidMass));
+    /// assert_eq!(Inertia::new(m, Vec3::ZERO, impossible).validate(), Err(ParameterProblem::InvalidInertia));
+    /// assert_eq!(Inertia::new(-1.0, Vec3::ZERO, box_).validate(), Err(ParameterProblem::InvalidMass));
     /// ```
-    pub fn validate(&self) -> Result<(), ModelProblem> {
+    pub fn validate(&self) -> Result<(), ParameterProblem> {
         if !self.is_finite() {
-            return Err(ModelProblem::NonFiniteParameter);
+            return Err(ParameterProblem::NonFinite);
         }
         if self.mass.to_f64() < 0.0 {
-            return Err(ModelProblem::InvalidMass);
+            return Err(ParameterProblem::InvalidMass);
         }
         // The algorithms form m c, m |c|² (the inertia about the body's
         // origin) and traces, and ABA products of two such entries (U Uᵀ):
@@ -169,7 +103,7 @@ impl<S: Scalar> Inertia<S> {
             || !trace.is_finite()
             || !self.rot_inertia_at_origin().is_finite()
         {
-            return Err(ModelProblem::Overflow);
+            return Err(ParameterProblem::Overflow);
         }
         // Scaled to the largest entry, so that the minors below cannot
         // overflow (an inertia with 1e308 entries would otherwise pass as NaN).
@@ -194,7 +128,7 @@ impl<S: Scalar> Inertia<S> {
         if psd && triangle {
             Ok(())
         } else {
-            Err(ModelProblem::InvalidInertia)
+            Err(ParameterProblem::InvalidInertia)
         }
     }
 }

@@ -149,6 +149,30 @@ impl<S: Scalar> Mat3<S> {
             _ => self.mul_plane_rotation::<0, 1>(s, c),
         }
     }
+    /// `self * r` for an `r` whose third axis (the one besides `I` and
+    /// `J`) it leaves alone: columns `I` and `J` mixed by `r`'s plane
+    /// block, each entry summed in the order `self * r` sums it, so that
+    /// the result is the full product's, bit for bit (up to the sign of
+    /// a zero).
+    #[inline(always)]
+    #[must_use]
+    pub fn mul_plane_block<const I: usize, const J: usize>(&self, r: &Self) -> Self {
+        let (ii, ij, ji, jj) = (r.m[I][I], r.m[I][J], r.m[J][I], r.m[J][J]);
+        let turn = |row: &[S; 3]| {
+            let mut out = *row;
+            // `self * r` adds the products in index order.
+            if I < J {
+                out[I] = row[I] * ii + row[J] * ji;
+                out[J] = row[I] * ij + row[J] * jj;
+            } else {
+                out[I] = row[J] * ji + row[I] * ii;
+                out[J] = row[J] * jj + row[I] * ij;
+            }
+            out
+        };
+        let m = &self.m;
+        Self::from_rows([turn(&m[0]), turn(&m[1]), turn(&m[2])])
+    }
     /// `self` with columns `I` and `J` turned by the angle of `(s, c)`.
     #[inline(always)]
     fn mul_plane_rotation<const I: usize, const J: usize>(&self, s: S, c: S) -> Self {

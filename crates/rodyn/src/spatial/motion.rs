@@ -5,8 +5,7 @@
 //! (Pinocchio's "local" convention). Angular part first in memory; use
 //! [`Motion::to_linear_first`] for Pinocchio's `[v; ω]` layout.
 
-use super::{Force, Vec3};
-use crate::space::{MotionVector, VectorOps};
+use super::Vec3;
 use crate::Scalar;
 use core::ops::{Add, AddAssign, Mul, Neg, Sub, SubAssign};
 
@@ -38,45 +37,6 @@ impl<S: Scalar> Motion<S> {
         Self::new(Vec3::new(a[3], a[4], a[5]), Vec3::new(a[0], a[1], a[2]))
     }
 }
-
-impl<S: Scalar> VectorOps<S> for Motion<S> {
-    const ZERO: Self = Self::new(Vec3::ZERO, Vec3::ZERO);
-    #[inline]
-    fn is_finite(&self) -> bool {
-        self.ang.is_finite() && self.lin.is_finite()
-    }
-    #[inline]
-    fn component(&self, k: usize) -> S {
-        if k < 3 {
-            self.ang.get(k)
-        } else {
-            self.lin.get(k - 3)
-        }
-    }
-}
-
-impl<S: Scalar> MotionVector<S> for Motion<S> {
-    type Force = Force<S>;
-    #[inline]
-    fn cross_motion(&self, m: &Self) -> Self {
-        Self::new(
-            self.ang.cross(&m.ang),
-            self.ang.cross(&m.lin) + self.lin.cross(&m.ang),
-        )
-    }
-    #[inline]
-    fn cross_force(&self, f: &Force<S>) -> Force<S> {
-        Force::new(
-            self.ang.cross(&f.ang) + self.lin.cross(&f.lin),
-            self.ang.cross(&f.lin),
-        )
-    }
-    #[inline]
-    fn dot(&self, f: &Force<S>) -> S {
-        self.ang.dot(&f.ang) + self.lin.dot(&f.lin)
-    }
-}
-
 impl<S: Scalar> Add for Motion<S> {
     type Output = Self;
     #[inline]

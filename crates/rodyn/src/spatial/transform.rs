@@ -12,9 +12,8 @@
 //! | `act_force`        | force b → a     | `ᵃX_b* f`       |
 //! | `act_inv_force`    | force a → b     | `ᵇX_a* f`       |
 
-use super::{Force, Mat3, Motion, Vec3};
-use crate::error::ModelProblem;
-use crate::space::RigidTransform;
+use super::ParameterProblem;
+use super::{Mat3, Vec3};
 use crate::Scalar;
 
 /// A rigid transform `aMb` (rotation, then translation).
@@ -27,6 +26,12 @@ pub struct Transform<S> {
 }
 
 impl<S: Scalar> Transform<S> {
+    /// `true` when every entry is finite.
+    #[inline]
+    #[must_use]
+    pub fn is_finite(&self) -> bool {
+        self.trans.is_finite() && self.rot.m.iter().flatten().all(|v| v.is_finite())
+    }
     /// The identity transform.
     pub const IDENTITY: Self = Self::new(Mat3::IDENTITY, Vec3::ZERO);
     /// A transform from rotation and translation.
@@ -56,61 +61,6 @@ impl<S: Scalar> Default for Transform<S> {
         Self::IDENTITY
     }
 }
-
-impl<S: Scalar> RigidTransform<S> for Transform<S> {
-    type Motion = Motion<S>;
-    type Force = Force<S>;
-    type Point = Vec3<S>;
-    const IDENTITY: Self = Transform::IDENTITY;
-
-    #[inline]
-    fn compose(&self, o: &Self) -> Self {
-        Self::new(
-            self.rot.mul_mat(&o.rot),
-            self.rot.mul_vec(&o.trans) + self.trans,
-        )
-    }
-    #[inline]
-    fn inverse(&self) -> Self {
-        Self::new(self.rot.transpose(), -self.rot.tr_mul_vec(&self.trans))
-    }
-    #[inline]
-    fn act_motion(&self, m: &Motion<S>) -> Motion<S> {
-        let ang = self.rot.mul_vec(&m.ang);
-        let lin = self.rot.mul_vec(&m.lin) + self.trans.cross(&ang);
-        Motion::new(ang, lin)
-    }
-    #[inline]
-    fn act_inv_motion(&self, m: &Motion<S>) -> Motion<S> {
-        let ang = self.rot.tr_mul_vec(&m.ang);
-        let lin = self.rot.tr_mul_vec(&(m.lin - self.trans.cross(&m.ang)));
-        Motion::new(ang, lin)
-    }
-    #[inline]
-    fn act_force(&self, f: &Force<S>) -> Force<S> {
-        let lin = self.rot.mul_vec(&f.lin);
-        let ang = self.rot.mul_vec(&f.ang) + self.trans.cross(&lin);
-        Force::new(ang, lin)
-    }
-    #[inline]
-    fn act_inv_force(&self, f: &Force<S>) -> Force<S> {
-        let lin = self.rot.tr_mul_vec(&f.lin);
-        let ang = self.rot.tr_mul_vec(&(f.ang - self.trans.cross(&f.lin)));
-        Force::new(ang, lin)
-    }
-    #[inline]
-    fn act_point(&self, p: &Vec3<S>) -> Vec3<S> {
-        self.rot.mul_vec(p) + self.trans
-    }
-    #[inline]
-    fn translation(&self) -> Vec3<S> {
-        self.trans
-    }
-    fn is_finite(&self) -> bool {
-        self.trans.is_finite() && self.rot.m.iter().flatten().all(|v| v.is_finite())
-    }
-}
-
 impl<S: Scalar> Transform<S> {
     /// Checks a placement: finite, with a translation whose `|p|⁴` is
     /// finite, and a proper rotation: orthonormal to 10³ ε (`RᵀR = 1`) and
@@ -118,32 +68,32 @@ impl<S: Scalar> Transform<S> {
     /// [`Model::validate`](crate::Model::validate) and the setters.
     ///
     /// # Errors
-    /// [`ModelProblem::NonFiniteParameter`], [`ModelProblem::Overflow`],
-    /// [`ModelProblem::RotationNotOrthonormal`] or
-    /// [`ModelProblem::Reflection`].
+    /// [`ParameterProblem::NonFinite`], [`ParameterProblem::Overflow`],
+    /// [`ParameterProblem::RotationNotOrthonormal`] or
+    /// [`ParameterProblem::Reflection`].
     ///
     /// # Example
     ///
     /// ```
-    /// use rodyn::error::ModelProblem;
+    /// use rodyn::spatial::ParameterProblem;
     /// use rodyn::spatial::{Mat3, Transform, Vec3};
     /// let turned = Transform::from_rotation(Mat3::from_axis_angle(&Vec3::new(0.0, 0.6, 0.8), 1.2));
     /// assert_eq!(turned.validate(), Ok(()));
     /// // A rotation scaled by 1 % is not a rotation.
     /// let mut scaled = turned;
     /// scaled.rot.m[0] = [scaled.rot.m[0][0] * 1.01, scaled.rot.m[0][1] * 1.01, scaled.rot.m[0][2] * 1.01];
-    /// assert_eq!(scaled.validate(), Err(ModelProblem::RotationNotOrthonormal));
+    /// assert_eq!(scaled.validate(), Err(ParameterProblem::RotationNotOrthonormal));
     /// ```
-    pub fn validate(&self) -> Result<(), ModelProblem> {
+    pub fn validate(&self) -> Result<(), ParameterProblem> {
         if !self.is_finite() {
-            return Err(ModelProblem::NonFiniteParameter);
+            return Err(ParameterProblem::NonFinite);
         }
         // Moving an inertia by p forms m |p|², and ABA multiplies two such
         // entries: a translation whose |p|⁴ overflows (beyond 1e77 m in
         // f64, 1e9 m in f32) is refused here, naming the body, rather than
         // read later as a singular joint.
         if !self.trans.norm_squared().squared().is_finite() {
-            return Err(ModelProblem::Overflow);
+            return Err(ParameterProblem::Overflow);
         }
         let rtr = self.rot.tr_mul_mat(&self.rot);
         let tol = 1e3 * S::EPSILON;
@@ -151,7 +101,7 @@ impl<S: Scalar> Transform<S> {
             for b in 0..3 {
                 let expect = if a == b { 1.0 } else { 0.0 };
                 if (rtr.m[a][b].to_f64() - expect).abs() > tol {
-                    return Err(ModelProblem::RotationNotOrthonormal);
+                    return Err(ParameterProblem::RotationNotOrthonormal);
                 }
             }
         }
@@ -161,7 +111,7 @@ impl<S: Scalar> Transform<S> {
             - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
             + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
         if det.to_f64() < 0.0 {
-            return Err(ModelProblem::Reflection);
+            return Err(ParameterProblem::Reflection);
         }
         Ok(())
     }

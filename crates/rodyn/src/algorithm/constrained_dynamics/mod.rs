@@ -55,7 +55,7 @@ use super::jacobian::JacobianData;
 use crate::data::Data;
 use crate::error::{Error, Quantity, Result};
 use crate::model::{check_finite, check_result, Model};
-use crate::space::{RigidTransform, VectorOps};
+use crate::space::VectorOps;
 use crate::spatial::{Motion, Spatial};
 use crate::Scalar;
 

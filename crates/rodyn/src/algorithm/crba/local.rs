@@ -8,6 +8,7 @@
 //! default pass ([`CrbaPass::Local`](super::CrbaPass::Local)) for every
 //! model but long `f64` chains.
 
+use super::TurnedFrame;
 use super::ENTRIES_IN_PASS;
 use crate::data::Data;
 use crate::joint::{JointModel, MAX_JOINT_NV};
@@ -15,7 +16,7 @@ use crate::model::Model;
 use crate::space::{Space, VectorOps};
 use crate::Scalar;
 
-/// Body i's step of the backward pass: its columns `Iᶜᵢ Sₖ`, its entries
+/// Body i's step of the backward pass, in its `frame`: its columns `Iᶜᵢ Sₖ`, its entries
 /// of `M` against every coordinate of its subtree (whose columns
 /// `columns` hold in body i's frame), then the subtree's columns and `Iᶜᵢ`
 /// moved through `step` (`ˡⁱXᵢ`; `None` at a root) to the parent's frame.
@@ -36,6 +37,7 @@ pub(super) fn backward_body<
     G: Space,
 >(
     model: &Model<S, NB, NQ, NV, G>,
+    frame: &TurnedFrame,
     data: &mut Data<S, NB, NV, G>,
     i: usize,
     step: Option<&G::Step<S>>,
@@ -44,7 +46,6 @@ pub(super) fn backward_body<
 ) {
     let t = model.topology();
     let joint = model.joint(i);
-    let frame = model.turned_frame(i);
     let (iv, nv) = (t.idx_v[i], t.nv[i]);
     let end = t.subtree_end_v[i];
     if ENTRIES_IN_PASS && t.subtrees_contiguous && end < NV {

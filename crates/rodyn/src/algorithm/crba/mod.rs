@@ -4,6 +4,12 @@
 //! |-----------------|-------------------------------------------------------------------|
 //! | [`textbook`]    | the book's algorithm as written, the oracle the tests hold the rest to |
 //! | `mod.rs`        | the public entries, the choice of pass ([`CrbaPass`]), the steps   |
+//! | `plan.rs`       | [`CrbaPlan`]: the turned frames, computed once per model          |
+//! | `turned_frame.rs` | [`TurnedFrame`]: a body's frame turned by the quarter turns above it |
+//! | `space.rs`      | [`CrbaSpace`]: the hooks CRBA needs from a geometry               |
+//! | `spatial.rs`, `planar.rs` | [`CrbaSpace`] for 3-D space and the plane               |
+//! | `step.rs`       | [`TransformStep`]: a joint transform prepared to move many columns |
+//! | `fused_body.rs` | one body's whole step fused: a joint about its own axis, a free-flying root |
 //! | `local.rs`      | the default backward pass, in each body's (turned) frame          |
 //! | `root_frame.rs` | the backward pass for long `f64` chains, in the root frame        |
 //! | `triangle.rs`   | the mirror above the diagonal and the zeros between limbs         |
@@ -15,30 +21,39 @@
 //! the parent through `ˡⁱXᵢ`. They differ from the book in three ways, each
 //! for speed and none for the result:
 //! - a subtree's columns move up together, one step per body
-//!   ([`Space::step_forces`]); a revolute joint about a coordinate axis
+//!   ([`CrbaSpace::step_forces`]); a revolute joint about a coordinate axis
 //!   whose placement does not rotate (or turns about the same axis) moves
-//!   them by mixing two components ([`Space::joint_step`]), and the geometry
-//!   may fuse a whole body's step ([`Space::crba_axis_body`],
-//!   [`Space::crba_free_root`]);
-//! - bodies behind quarter-turn placements (a URDF arm's) are expressed in
-//!   frames turned by the quarter turns above them
-//!   ([`TurnedFrame`](crate::spatial::TurnedFrame)), where their joints
-//!   turn about coordinate axes again; `ic` is left in those frames;
+//!   them by mixing two components ([`CrbaSpace::joint_step`]), and the geometry
+//!   may fuse a whole body's step ([`CrbaSpace::crba_axis_body`],
+//!   [`CrbaSpace::crba_free_root`]);
+//! - with a [`CrbaPlan`] ([`crba_planned`]), bodies behind quarter-turn
+//!   placements (a URDF arm's) are expressed in frames turned by the
+//!   quarter turns above them ([`TurnedFrame`]), where their joints turn
+//!   about coordinate axes again; `ic` is left in those frames. Without
+//!   one ([`crba`]) every body keeps its own frame;
 //! - with the bodies numbered depth first (URDF order), a body's subtree
 //!   holds a contiguous range of coordinates, so a column's rows are one
 //!   slice; any other tree takes the same steps with a test of support
 //!   per coordinate.
 //!
-//! Which backward pass runs is [`CrbaPass`], chosen by [`crba_with`]'s
-//! caller or, for [`crba`], by [`CrbaPass::default_for`]. Whether the
+//! Which backward pass runs is [`CrbaPass`], chosen by the caller of
+//! [`crba_with`] or [`crba_planned_with`] or, for [`crba`] and
+//! [`crba_planned`], by [`CrbaPass::default_for`]. Whether the
 //! passes write the upper triangle and the zeros as they go or in separate
 //! loops afterwards is the build's tuning profile
 //! (`ENTRIES_IN_PASS`); `M` is the same either way.
 
+mod fused_body;
 mod local;
+mod plan;
+mod planar;
 mod root_frame;
+mod space;
+mod spatial;
+mod step;
 pub mod textbook;
 mod triangle;
+mod turned_frame;
 
 use crate::algorithm::kinematics::{
     body_transform_with, check_state, joint_configuration, JointSinCos, ANGLES_FIRST,
@@ -51,8 +66,13 @@ use crate::space::{Space, VectorOps};
 use crate::topology::Topology;
 use crate::Scalar;
 use local::backward_body;
+pub use plan::CrbaPlan;
+use plan::{BodyFrames, Unturned};
 use root_frame::about_root;
+pub use space::CrbaSpace;
+pub use step::TransformStep;
 use triangle::{clear_lower, mirror_lower};
+pub use turned_frame::{TurnedAxis, TurnedFrame};
 
 // Whether the local backward pass writes `M`'s zeros and, for `crba`, its
 // entries above the diagonal itself (the root-frame pass, for `crba`, the
@@ -101,28 +121,41 @@ impl CrbaPass {
 }
 
 /// The joint-space mass matrix `M(q)` (symmetric, NV x NV), by the pass
-/// [`CrbaPass::default_for`] chooses.
+/// [`CrbaPass::default_for`] chooses, every body in its own frame.
+/// [`crba_planned`] gives the same matrix faster on models whose
+/// placements are quarter turns (a URDF arm's).
 ///
 /// Inputs: `q` (NQ). Returns `data.mass_matrix` with both triangles filled.
 /// Leaves valid: `mass_matrix`, and `ic`, each body's composite inertia
-/// (its own and its subtree's) in its turned frame (see the module
-/// documentation; the body's own frame at a root and in a model without
-/// declared quarter turns).
+/// (its own and its subtree's) in its own frame.
 /// Reads and writes nothing else of `data`.
 ///
 /// # Errors
 /// An invalid configuration.
+///
+/// # Example
+///
+/// ```
+/// use rodyn::algorithm::crba::crba;
+/// # use rodyn::prelude::*;
+/// // A 2 kg point mass 0.5 m from a pivot about z: M = m l².
+/// const PENDULUM: Model<f64, 1, 1, 1> = Model::new(
+///     [None], [Joint::revolute(Axis::Z)], [Transform::IDENTITY],
+///     [Inertia::point_mass(2.0, Vec3::new(0.5, 0.0, 0.0))],
+///     Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
+/// );
+/// let mut data = Data::new();
+/// let m = crba(&PENDULUM, &mut data, &[0.7])?;
+/// assert!((m[0][0] - 0.5).abs() < 1e-15);
+/// # Ok::<(), rodyn::Error>(())
+/// ```
 pub fn crba<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     model: &Model<S, NB, NQ, NV, G>,
     data: &'d mut Data<S, NB, NV, G>,
     q: &[S; NQ],
 ) -> Result<&'d [[S; NV]; NV]> {
-    crba_with(
-        model,
-        data,
-        q,
-        CrbaPass::default_for::<S, NB, NV>(model.topology()),
-    )
+    let pass = CrbaPass::default_for::<S, NB, NV>(model.topology());
+    mass_matrix(model, &Unturned(model), data, q, pass)
 }
 
 /// [`crba`] by the backward pass `pass`; same inputs, results and errors.
@@ -133,11 +166,84 @@ pub fn crba_with<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usiz
     q: &[S; NQ],
     pass: CrbaPass,
 ) -> Result<&'d [[S; NV]; NV]> {
+    mass_matrix(model, &Unturned(model), data, q, pass)
+}
+
+/// [`crba`] in the frames of `plan`, which must be `model`'s
+/// ([`CrbaPlan::is_for`], checked in debug builds): the same matrix, with
+/// each joint behind quarter-turn placements stepped about a coordinate
+/// axis. Leaves valid what [`crba`] leaves, `ic` in the plan's turned
+/// frames ([`TurnedFrame::turn`](crate::algorithm::crba::TurnedFrame::turn) of
+/// [`CrbaPlan::frame`]; the body's own frame at a root).
+///
+/// # Errors
+/// As [`crba`].
+#[inline]
+pub fn crba_planned<'d, S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
+    model: &Model<S, NB, NQ, NV, G>,
+    plan: &CrbaPlan<S, NB, G>,
+    data: &'d mut Data<S, NB, NV, G>,
+    q: &[S; NQ],
+) -> Result<&'d [[S; NV]; NV]> {
+    debug_assert!(plan.is_for(model), "a CRBA plan made for another model");
+    let pass = CrbaPass::default_for::<S, NB, NV>(model.topology());
+    if G::TURNS_FRAMES {
+        mass_matrix(model, plan, data, q, pass)
+    } else {
+        mass_matrix(model, &Unturned(model), data, q, pass)
+    }
+}
+
+/// [`crba_planned`] by the backward pass `pass`.
+///
+/// # Errors
+/// As [`crba`].
+#[inline]
+pub fn crba_planned_with<
+    'd,
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    plan: &CrbaPlan<S, NB, G>,
+    data: &'d mut Data<S, NB, NV, G>,
+    q: &[S; NQ],
+    pass: CrbaPass,
+) -> Result<&'d [[S; NV]; NV]> {
+    debug_assert!(plan.is_for(model), "a CRBA plan made for another model");
+    if G::TURNS_FRAMES {
+        mass_matrix(model, plan, data, q, pass)
+    } else {
+        mass_matrix(model, &Unturned(model), data, q, pass)
+    }
+}
+
+/// The entries' common body: checks `q`, forms `M` by `pass` with the
+/// bodies in `frames`, mirrors it and checks its diagonal.
+#[inline]
+fn mass_matrix<
+    'd,
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+    F: BodyFrames<S, NB, G>,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    frames: &F,
+    data: &'d mut Data<S, NB, NV, G>,
+    q: &[S; NQ],
+    pass: CrbaPass,
+) -> Result<&'d [[S; NV]; NV]> {
     check_state(model, q, None)?;
     let upper_written = if ENTRIES_IN_PASS {
-        mass_matrix_pass::<S, NB, NQ, NV, G, true>(model, data, Some(q), pass)
+        mass_matrix_pass::<S, NB, NQ, NV, G, F, true>(model, frames, data, Some(q), pass)
     } else {
-        mass_matrix_pass::<S, NB, NQ, NV, G, false>(model, data, Some(q), pass);
+        mass_matrix_pass::<S, NB, NQ, NV, G, F, false>(model, frames, data, Some(q), pass);
         false
     };
     if !upper_written {
@@ -161,8 +267,47 @@ pub(crate) fn crba_lower<S: Scalar, const NB: usize, const NQ: usize, const NV: 
     data: &mut Data<S, NB, NV, G>,
     q: Option<&[S; NQ]>,
 ) {
+    crba_lower_in(model, &Unturned(model), data, q);
+}
+
+/// [`crba_lower`] in the frames of `plan`.
+#[inline(always)]
+pub(crate) fn crba_lower_planned<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    plan: &CrbaPlan<S, NB, G>,
+    data: &mut Data<S, NB, NV, G>,
+    q: Option<&[S; NQ]>,
+) {
+    if G::TURNS_FRAMES {
+        crba_lower_in(model, plan, data, q);
+    } else {
+        crba_lower_in(model, &Unturned(model), data, q);
+    }
+}
+
+/// [`crba_lower`] with the bodies in `frames`.
+#[inline(always)]
+fn crba_lower_in<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+    F: BodyFrames<S, NB, G>,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    frames: &F,
+    data: &mut Data<S, NB, NV, G>,
+    q: Option<&[S; NQ]>,
+) {
     let pass = CrbaPass::default_for::<S, NB, NV>(model.topology());
-    mass_matrix_pass::<S, NB, NQ, NV, G, false>(model, data, q, pass);
+    mass_matrix_pass::<S, NB, NQ, NV, G, F, false>(model, frames, data, q, pass);
 }
 
 /// [`crba_lower`], which with `UPPER` writes the entries above the
@@ -176,22 +321,24 @@ fn mass_matrix_pass<
     const NQ: usize,
     const NV: usize,
     G: Space,
+    F: BodyFrames<S, NB, G>,
     const UPPER: bool,
 >(
     model: &Model<S, NB, NQ, NV, G>,
+    frames: &F,
     data: &mut Data<S, NB, NV, G>,
     q: Option<&[S; NQ]>,
     pass: CrbaPass,
 ) -> bool {
     let t = model.topology();
     for (i, ic) in data.ic.iter_mut().enumerate() {
-        *ic = *model.turned_inertia(i);
+        *ic = *frames.inertia(i);
     }
     let upper_written = if pass == CrbaPass::RootFrame {
         clear_lower(t, &mut data.mass_matrix, UPPER);
         // Its steps are formed in a pass of their own already.
-        about_root::<S, NB, NQ, NV, G, UPPER>(model, data, |li_m_i, i| {
-            joint_step(model, li_m_i, q, None, i)
+        about_root::<S, NB, NQ, NV, G, UPPER>(model, frames, data, |li_m_i, i| {
+            joint_step(model, frames, li_m_i, q, None, i)
         });
         UPPER
     } else {
@@ -199,12 +346,22 @@ fn mass_matrix_pass<
         if !(ENTRIES_IN_PASS && t.subtrees_contiguous) {
             clear_lower(t, &mut data.mass_matrix, false);
         }
-        let angles = q.filter(|_| ANGLES_FIRST).map(|q| step_sin_cos(model, q));
+        let angles = q
+            .filter(|_| ANGLES_FIRST)
+            .map(|q| step_sin_cos(model, frames, q));
         let mut columns = [G::Force::<S>::ZERO; NV];
         for i in (0..NB).rev() {
             let sin_cos = angles.as_ref().map(|a| a.get(i));
-            let step = joint_step(model, &data.li_m_i, q, sin_cos, i);
-            backward_body(model, data, i, step.as_ref(), &mut columns, UPPER);
+            let step = joint_step(model, frames, &data.li_m_i, q, sin_cos, i);
+            backward_body(
+                model,
+                frames.frame(i),
+                data,
+                i,
+                step.as_ref(),
+                &mut columns,
+                UPPER,
+            );
         }
         UPPER && ENTRIES_IN_PASS && t.subtrees_contiguous
     };
@@ -212,15 +369,23 @@ fn mass_matrix_pass<
     upper_written
 }
 
-/// The sines and cosines of each body's [`Space::step_angle`].
+/// The sines and cosines of each body's [`CrbaSpace::step_angle`].
 #[inline(always)]
-fn step_sin_cos<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
+fn step_sin_cos<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+    F: BodyFrames<S, NB, G>,
+>(
     model: &Model<S, NB, NQ, NV, G>,
+    frames: &F,
     q: &[S; NQ],
 ) -> JointSinCos<S, NB> {
     JointSinCos::from_angles(|i| {
         let q = joint_configuration(model, i, q);
-        G::step_angle(model.turned_frame(i), model.joint(i), q)
+        G::step_angle(frames.frame(i), model.joint(i), q)
     })
 }
 
@@ -229,23 +394,31 @@ fn step_sin_cos<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
 /// transform moves nothing. `sin_cos`: body i's entry of
 /// [`step_sin_cos`], when formed.
 #[inline(always)]
-fn joint_step<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
+fn joint_step<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+    F: BodyFrames<S, NB, G>,
+>(
     model: &Model<S, NB, NQ, NV, G>,
+    frames: &F,
     li_m_i: &[G::Transform<S>; NB],
     q: Option<&[S; NQ]>,
     sin_cos: Option<(S, S)>,
     i: usize,
 ) -> Option<G::Step<S>> {
-    let frame = model.turned_frame(i);
+    let frame = frames.frame(i);
     model.parent(i).map(|_| match q {
         Some(q) => G::turned_joint_step(
             frame,
             model.joint(i),
-            model.turned_placement(i),
+            frames.placement(i),
             joint_configuration(model, i, q),
             sin_cos,
         ),
-        None => G::turned_step(frame, &li_m_i[i], model.turned_placement(i)),
+        None => G::turned_step(frame, &li_m_i[i], frames.placement(i)),
     })
 }
 
@@ -255,7 +428,7 @@ fn joint_step<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: S
 /// its own, which reuse its joint transforms. Leaves `h` in `data.tau` and
 /// what [`nonlinear_effects`](crate::algorithm::rnea::nonlinear_effects)
 /// and [`crba_lower`] leave; checks nothing.
-#[inline]
+#[inline(always)]
 pub(crate) fn bias_and_mass_lower<
     S: Scalar,
     const NB: usize,
@@ -269,19 +442,62 @@ pub(crate) fn bias_and_mass_lower<
     v: &[S; NV],
     f_ext: Option<&[G::Force<S>; NB]>,
 ) {
+    bias_and_mass_lower_in(model, &Unturned(model), data, q, v, f_ext);
+}
+
+/// [`bias_and_mass_lower`] in the frames of `plan`.
+#[inline(always)]
+pub(crate) fn bias_and_mass_lower_planned<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    plan: &CrbaPlan<S, NB, G>,
+    data: &mut Data<S, NB, NV, G>,
+    q: &[S; NQ],
+    v: &[S; NV],
+    f_ext: Option<&[G::Force<S>; NB]>,
+) {
+    if G::TURNS_FRAMES {
+        bias_and_mass_lower_in(model, plan, data, q, v, f_ext);
+    } else {
+        bias_and_mass_lower_in(model, &Unturned(model), data, q, v, f_ext);
+    }
+}
+
+/// [`bias_and_mass_lower`] with the bodies in `frames`.
+#[inline]
+fn bias_and_mass_lower_in<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+    F: BodyFrames<S, NB, G>,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    frames: &F,
+    data: &mut Data<S, NB, NV, G>,
+    q: &[S; NQ],
+    v: &[S; NV],
+    f_ext: Option<&[G::Force<S>; NB]>,
+) {
     let t = model.topology();
     let minus_g = -*model.gravity();
     let sin_cos = JointSinCos::at(model, q);
     for i in 0..NB {
         let li_m_i = body_transform_with(model, i, q, sin_cos.as_ref());
-        data.ic[i] = *model.turned_inertia(i);
+        data.ic[i] = *frames.inertia(i);
         rnea::forward_body(model, data, i, li_m_i, v, None, f_ext, &minus_g);
     }
     if CrbaPass::default_for::<S, NB, NV>(t) == CrbaPass::RootFrame {
         clear_lower(t, &mut data.mass_matrix, false);
         rnea::backward_force_pass_with(model, data, None, |_, _| {});
-        about_root::<S, NB, NQ, NV, G, false>(model, data, |li_m_i, i| {
-            joint_step(model, li_m_i, None, None, i)
+        about_root::<S, NB, NQ, NV, G, false>(model, frames, data, |li_m_i, i| {
+            joint_step(model, frames, li_m_i, None, None, i)
         });
     } else {
         if !(ENTRIES_IN_PASS && t.subtrees_contiguous) {
@@ -289,8 +505,16 @@ pub(crate) fn bias_and_mass_lower<
         }
         let mut columns = [G::Force::<S>::ZERO; NV];
         rnea::backward_force_pass_with(model, data, None, |data, i| {
-            let step = joint_step(model, &data.li_m_i, None, None, i);
-            backward_body(model, data, i, step.as_ref(), &mut columns, false);
+            let step = joint_step(model, frames, &data.li_m_i, None, None, i);
+            backward_body(
+                model,
+                frames.frame(i),
+                data,
+                i,
+                step.as_ref(),
+                &mut columns,
+                false,
+            );
         });
     }
     add_armature(model, data);
@@ -309,7 +533,10 @@ fn add_armature<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
 
 #[cfg(all(test, feature = "std"))]
 mod tests {
-    use super::{bias_and_mass_lower, crba, crba_lower, CrbaPass};
+    use super::{
+        bias_and_mass_lower, bias_and_mass_lower_planned, crba, crba_lower, crba_lower_planned,
+        crba_planned, CrbaPass, CrbaPlan,
+    };
     use crate::algorithm::kinematics::body_transform;
     use crate::joint::{Axis, Joint};
     use crate::spatial::{AxisPermutation, Inertia, Mat3, Motion, Spatial, Sym3, Transform, Vec3};
@@ -369,17 +596,22 @@ mod tests {
     #[test]
     fn turned_frames_give_the_unturned_mass_matrix_on_every_path() {
         let plain = model();
-        let declared = plain.with_placement_turns([
-            Some(QUARTER_Y),
-            Some(QUARTER_X),
-            Some(HALF_Z_THEN_X),
-            Some(CYCLE),
-            None,
-            Some(QUARTER_X),
-            Some(CYCLE),
-        ]);
-        let recognised = plain.with_recognised_turns();
-        assert_eq!(declared.turned_frame(3), recognised.turned_frame(3));
+        let declared = CrbaPlan::<f64, 7>::from_turns(
+            &plain,
+            [
+                Some(QUARTER_Y),
+                Some(QUARTER_X),
+                Some(HALF_Z_THEN_X),
+                Some(CYCLE),
+                None,
+                Some(QUARTER_X),
+                Some(CYCLE),
+            ],
+        );
+        let recognised = CrbaPlan::new(&plain);
+        assert_eq!(declared.frame(3), recognised.frame(3));
+        assert!(declared.is_for(&plain) && recognised.is_for(&plain));
+        assert!(CrbaPlan::unturned(&plain).is_for(&plain));
         // Bodies 1-3 turn; 4 (tilted), 5 (prismatic) and 6 (general axis) keep their frames.
         for (i, turned) in [
             (1, true),
@@ -389,11 +621,7 @@ mod tests {
             (5, false),
             (6, false),
         ] {
-            assert_eq!(
-                recognised.turned_frame(i).axis().is_some(),
-                turned,
-                "body {i}"
-            );
+            assert_eq!(recognised.frame(i).axis().is_some(), turned, "body {i}");
         }
         let mut seed = 0x2545_f491_4f6c_dd1du64;
         let mut random = move || {
@@ -408,7 +636,8 @@ mod tests {
             let q: [f64; 7] = core::array::from_fn(|_| random());
             let v: [f64; 7] = core::array::from_fn(|_| random());
             let expected = *crba(&plain, &mut reference, &q).unwrap();
-            for model in [&declared, &recognised] {
+            let model = &plain;
+            for plan in [&declared, &recognised] {
                 let lower = |m: &[[f64; 7]; 7], what: &str| {
                     for r in 0..7 {
                         for c in 0..=r {
@@ -417,14 +646,14 @@ mod tests {
                         }
                     }
                 };
-                lower(crba(model, &mut data, &q).unwrap(), "crba");
+                lower(crba_planned(model, plan, &mut data, &q).unwrap(), "crba");
                 // From the joint transforms RNEA leaves (the Cortex-M's path).
                 for i in 0..7 {
                     data.li_m_i[i] = body_transform(model, i, &q);
                 }
-                crba_lower(model, &mut data, None);
+                crba_lower_planned(model, plan, &mut data, None);
                 lower(&data.mass_matrix, "from transforms");
-                bias_and_mass_lower(model, &mut data, &q, &v, None);
+                bias_and_mass_lower_planned(model, plan, &mut data, &q, &v, None);
                 lower(&data.mass_matrix, "fused with the bias forces");
             }
         }
@@ -478,17 +707,13 @@ mod tests {
 
     #[test]
     fn the_root_frame_pass_gives_rneas_columns_with_and_without_turns() {
-        let plain = long_chain();
-        assert!(CrbaPass::default_for::<f64, 52, 52>(plain.topology()) == CrbaPass::RootFrame);
-        let turned = plain.with_recognised_turns();
-        let turned_bodies = (0..52)
-            .filter(|&i| turned.turned_frame(i).axis().is_some())
-            .count();
+        let model = long_chain();
+        assert!(CrbaPass::default_for::<f64, 52, 52>(model.topology()) == CrbaPass::RootFrame);
+        let plan = CrbaPlan::new(&model);
+        let turned_bodies = (0..52).filter(|&i| plan.frame(i).axis().is_some()).count();
         assert!(turned_bodies >= 8, "{turned_bodies} turned bodies");
         let q: [f64; 52] = core::array::from_fn(|k| (0.7 * k as f64).sin() * 1.5);
-        for model in [&plain, &turned] {
-            assert_rneas_columns(model, &q);
-        }
+        assert_rneas_columns(&model, &q);
     }
 
     #[test]
@@ -526,10 +751,21 @@ mod tests {
 
     /// Holds `M` from [`crba`], from the joint transforms and fused with
     /// the bias forces to RNEA's columns (column k is the torque for the
-    /// unit acceleration of coordinate k, without velocities), to 1e-12.
+    /// unit acceleration of coordinate k, without velocities), to 1e-12,
+    /// without a plan and with the model's recognised turns.
     /// The model has no gravity.
     fn assert_rneas_columns<const NB: usize, const NQ: usize, const NV: usize>(
         model: &Model<f64, NB, NQ, NV, Spatial>,
+        q: &[f64; NQ],
+    ) {
+        assert_rneas_columns_in(model, None, q);
+        assert_rneas_columns_in(model, Some(&CrbaPlan::new(model)), q);
+    }
+
+    /// [`assert_rneas_columns`] with `plan`, or without one.
+    fn assert_rneas_columns_in<const NB: usize, const NQ: usize, const NV: usize>(
+        model: &Model<f64, NB, NQ, NV, Spatial>,
+        plan: Option<&CrbaPlan<f64, NB>>,
         q: &[f64; NQ],
     ) {
         use crate::algorithm::rnea::rnea;
@@ -547,15 +783,24 @@ mod tests {
         let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * (1.0 + a.abs().max(b.abs()));
         // Every entry written, the zeros of unrelated limbs included.
         data.mass_matrix = [[f64::NAN; NV]; NV];
-        let m = *crba(model, &mut data, q).unwrap();
+        let m = match plan {
+            Some(plan) => *crba_planned(model, plan, &mut data, q).unwrap(),
+            None => *crba(model, &mut data, q).unwrap(),
+        };
         for i in 0..NB {
             data.li_m_i[i] = body_transform(model, i, q);
         }
         data.mass_matrix = [[f64::NAN; NV]; NV];
-        crba_lower(model, &mut data, None);
+        match plan {
+            Some(plan) => crba_lower_planned(model, plan, &mut data, None),
+            None => crba_lower(model, &mut data, None),
+        }
         let from_transforms = data.mass_matrix;
         data.mass_matrix = [[f64::NAN; NV]; NV];
-        bias_and_mass_lower(model, &mut data, q, &v, None);
+        match plan {
+            Some(plan) => bias_and_mass_lower_planned(model, plan, &mut data, q, &v, None),
+            None => bias_and_mass_lower(model, &mut data, q, &v, None),
+        }
         for r in 0..NV {
             for c in 0..NV {
                 let e = expected[r][c];
@@ -617,7 +862,6 @@ mod tests {
             }),
             Motion::new(Vec3::ZERO, Vec3::ZERO),
         )
-        .with_recognised_turns()
     }
 
     #[test]
@@ -648,9 +892,8 @@ mod tests {
         ]);
         assert!(!interleaved.topology().subtrees_contiguous);
         for model in [&contiguous, &interleaved] {
-            let turned = (1..8)
-                .filter(|&i| model.turned_frame(i).axis().is_some())
-                .count();
+            let plan = CrbaPlan::new(model);
+            let turned = (1..8).filter(|&i| plan.frame(i).axis().is_some()).count();
             assert!(turned >= 3, "{turned} turned bodies");
         }
         let mut q: [f64; 14] = core::array::from_fn(|k| (0.9 * k as f64 + 0.4).sin() * 1.3);
@@ -690,41 +933,37 @@ mod tests {
     }
 
     #[test]
-    fn a_placement_set_at_run_time_is_recognised_or_not() {
-        let plain = model();
-        let mut turned = plain.with_recognised_turns();
+    fn a_plan_goes_stale_when_the_model_changes() {
+        let mut model = model();
+        let plan = CrbaPlan::new(&model);
+        assert!(plan.is_for(&model));
         let tilted = Transform::new(
             Mat3::from_axis_angle(&Vec3::new(1.0, 0.0, 0.0), 0.3),
             Vec3::new(0.1, -0.2, 0.0),
         );
-        turned.set_placement(1, tilted).unwrap();
-        assert!(turned.turned_frame(1).axis().is_none());
+        model.set_placement(1, tilted).unwrap();
+        assert!(!plan.is_for(&model));
+        let replanned = CrbaPlan::new(&model);
+        assert!(replanned.frame(1).axis().is_none());
         // Its child's frame no longer includes the parent's turn.
-        assert_eq!(
-            turned.turned_frame(2).parent_turn(),
-            AxisPermutation::IDENTITY
-        );
-        let mut reference_model = plain;
-        reference_model.set_placement(1, tilted).unwrap();
+        assert_eq!(replanned.frame(2).parent_turn(), AxisPermutation::IDENTITY);
         let q = [0.3, -1.1, 0.7, 2.0, -0.4, 0.1, 0.9];
         let (mut a, mut b) = (Data::new(), Data::new());
-        let expected = *crba(&reference_model, &mut a, &q).unwrap();
-        let got = *crba(&turned, &mut b, &q).unwrap();
+        let expected = *crba(&model, &mut a, &q).unwrap();
+        let got = *crba_planned(&model, &replanned, &mut b, &q).unwrap();
         for r in 0..7 {
             for c in 0..7 {
                 assert!(close(got[r][c], expected[r][c]), "M[{r}][{c}]");
             }
         }
-        // Back to a quarter turn: recognised again.
-        turned
-            .set_placement(1, Transform::new(QUARTER_Y.matrix(), Vec3::ZERO))
-            .unwrap();
-        assert!(turned.turned_frame(1).axis().is_some());
+        // A new inertia: the plan's turned copy no longer matches.
         let inertia = Inertia::new(2.5, Vec3::new(0.0, 0.1, 0.0), Sym3::diagonal(0.2, 0.3, 0.4));
-        turned.set_inertia(2, inertia).unwrap();
+        model.set_inertia(2, inertia).unwrap();
+        assert!(!replanned.is_for(&model));
+        let replanned = CrbaPlan::new(&model);
         assert_eq!(
-            *turned.turned_inertia(2),
-            turned.turned_frame(2).turn().apply_inertia(&inertia)
+            *replanned.inertia(2),
+            replanned.frame(2).turn().apply_inertia(&inertia)
         );
     }
 }

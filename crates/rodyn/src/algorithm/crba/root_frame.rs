@@ -9,6 +9,7 @@
 //! with the distance from the root and cancel, so only `f64` takes it
 //! ([`CrbaPass::RootFrame`](super::CrbaPass::RootFrame)).
 
+use super::plan::BodyFrames;
 use crate::algorithm::ltdl::supporting_ranges;
 use crate::data::Data;
 use crate::joint::MAX_JOINT_NV;
@@ -38,6 +39,7 @@ pub(super) fn about_root<
     const MIRROR: bool,
 >(
     model: &Model<S, NB, NQ, NV, G>,
+    frames: &impl BodyFrames<S, NB, G>,
     data: &mut Data<S, NB, NV, G>,
     step: impl Fn(&[G::Transform<S>; NB], usize) -> Option<G::Step<S>>,
 ) {
@@ -55,7 +57,7 @@ pub(super) fn about_root<
         if let (Some(p), Some(step)) = (t.parents[i], &steps[i]) {
             to_root[i] = G::then_step(&to_root[p], step);
         }
-        let (joint, frame) = (model.joint(i), model.turned_frame(i));
+        let (joint, frame) = (model.joint(i), frames.frame(i));
         for k in 0..t.nv[i] {
             let s = G::act_turned_subspace_column(&to_root[i], frame, joint, k);
             for (d, s_d) in s_root.iter_mut().take(G::DIM).enumerate() {
@@ -67,7 +69,7 @@ pub(super) fn about_root<
     // of coordinates (cleared once, not per body: a `memset` call each).
     let mut f_root = [[S::ZERO; 6]; MAX_JOINT_NV];
     for i in (0..NB).rev() {
-        let (joint, frame) = (model.joint(i), model.turned_frame(i));
+        let (joint, frame) = (model.joint(i), frames.frame(i));
         let iv = t.idx_v[i];
         for (k, f_k) in f_root.iter_mut().enumerate().take(t.nv[i]) {
             let f = G::turned_inertia_column(frame, &data.ic[i], joint, k);

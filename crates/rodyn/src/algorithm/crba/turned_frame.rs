@@ -16,7 +16,7 @@
 //! body's inertia once (a reordering of its entries with sign flips, exact)
 //! and read each joint's subspace column on its turned axis.
 
-use super::{AxisPermutation, Mat3};
+use crate::spatial::{AxisPermutation, Mat3};
 use crate::Scalar;
 
 /// How CRBA expresses one body: its frame turned by [`Self::turn`]
@@ -28,10 +28,6 @@ pub struct TurnedFrame {
     turn: AxisPermutation,
     parent_turn: AxisPermutation,
     axis: Option<TurnedAxis>,
-    /// `K` when the joint turns about coordinate axis K behind a placement
-    /// without rotation (and the body has a parent); a byte, which the
-    /// frame's padding holds, so that models keep their size.
-    unturned_axis: Option<u8>,
 }
 
 /// A revolute joint's coordinate axis `K` and its image in the turned frame.
@@ -77,7 +73,6 @@ impl TurnedFrame {
         turn: AxisPermutation::IDENTITY,
         parent_turn: AxisPermutation::IDENTITY,
         axis: None,
-        unturned_axis: None,
     };
 
     /// The frames of a tree, parents before children: `placements[i]` is
@@ -110,9 +105,6 @@ impl TurnedFrame {
                     let (cos_row, cos_negative) = back.row(a);
                     let (sin_row, sin_negative) = back.row(b);
                     frames[i].turn = turn;
-                    if placement.is_identity() {
-                        frames[i].unturned_axis = Some(k as u8);
-                    }
                     frames[i].axis = Some(TurnedAxis {
                         joint: k,
                         turned,
@@ -146,68 +138,10 @@ impl TurnedFrame {
     pub const fn parent_turn(&self) -> AxisPermutation {
         self.parent_turn
     }
-    /// `Some(K)` when the body has a parent, its placement has no rotation
-    /// and its joint turns about coordinate axis K: its joint transform's
-    /// rotation is then `R_K(q)` itself.
-    #[must_use]
-    pub const fn unturned_axis(&self) -> Option<usize> {
-        match self.unturned_axis {
-            Some(k) => Some(k as usize),
-            None => None,
-        }
-    }
     /// The joint's axis in the turned frame, when its step is a rotation
     /// about that coordinate axis by the joint angle.
     #[must_use]
     pub const fn axis(&self) -> Option<TurnedAxis> {
         self.axis
-    }
-}
-
-#[cfg(all(test, feature = "std"))]
-mod tests {
-    use super::TurnedFrame;
-    use crate::joint::{Axis, Joint, JointModel};
-    use crate::space::{RigidTransform, Space};
-    use crate::spatial::{AxisPermutation, Mat3, Spatial, Transform, Vec3};
-
-    /// `Spatial::then_joint` gives the composition `parent x`, bit for bit,
-    /// behind every placement a model may declare (none, the identity, a
-    /// quarter turn) for joints about each coordinate axis and others.
-    #[test]
-    fn then_joint_is_the_composition() {
-        let parent = Transform::new(
-            Mat3::from_axis_angle(&Vec3::new(0.36, -0.48, 0.8), 0.9),
-            Vec3::new(0.4, -1.3, 0.7),
-        );
-        let quarter = AxisPermutation::from_rows([[1, 0, 0], [0, 0, -1], [0, 1, 0]]);
-        let joints = [
-            Joint::revolute(Axis::X),
-            Joint::revolute(Axis::Y),
-            Joint::revolute(Axis::Z),
-            Joint::revolute(Axis::Unit(Vec3::new(0.0, 0.6, 0.8))),
-            Joint::prismatic(Axis::Y),
-        ];
-        for turn in [None, Some(AxisPermutation::IDENTITY), Some(quarter)] {
-            for joint in &joints {
-                let axis = joint.revolute_axis_index();
-                let frames = TurnedFrame::tree(&[None, Some(0)], &[None, turn], &[None, axis]);
-                let rot = turn.map_or(Mat3::IDENTITY, |t| t.matrix());
-                let placement = Transform::new(rot, Vec3::new(0.1, -0.25, 0.3));
-                for q in [0.0, 0.7, -2.9] {
-                    let x = joint.placed_transform(&placement, &[q]);
-                    let expected = parent.compose(&x);
-                    assert_eq!(
-                        Spatial::then_joint(&parent, &x, &frames[1]),
-                        expected,
-                        "{turn:?} {joint:?} {q}"
-                    );
-                }
-                assert_eq!(
-                    frames[1].unturned_axis().is_some(),
-                    turn == Some(AxisPermutation::IDENTITY) && axis.is_some()
-                );
-            }
-        }
     }
 }

@@ -14,12 +14,12 @@
 //!   its composite inertia and its entries against the subtree are the
 //!   columns themselves, reordered; nothing moves.
 
-use super::step::{rotate_about, rotate_inertia_about};
-use super::{add_shifted_inertia, revolute_inertia_column};
-use super::{Force, Inertia, TransformStep, Vec3};
+use super::spatial::{add_shifted_inertia, revolute_inertia_column};
+use super::step::{rotate_about, rotate_inertia_about, TransformStep};
+use crate::spatial::{Force, Inertia, Vec3};
 use crate::Scalar;
 
-/// [`Space::crba_axis_body`](crate::space::Space::crba_axis_body) for
+/// [`CrbaSpace::crba_axis_body`](super::CrbaSpace::crba_axis_body) for
 /// [`Spatial`](super::Spatial).
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
@@ -135,7 +135,7 @@ impl<S: Scalar> AxisTurn<S> {
     }
 }
 
-/// [`Space::crba_free_root`](crate::space::Space::crba_free_root) for
+/// [`CrbaSpace::crba_free_root`](super::CrbaSpace::crba_free_root) for
 /// [`Spatial`](super::Spatial), once the joint is known to be a free flyer.
 #[inline(always)]
 pub(super) fn free_flyer_root<S: Scalar, const NV: usize>(

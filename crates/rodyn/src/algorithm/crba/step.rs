@@ -7,8 +7,8 @@
 //! each vector: 4 products where a general rotation takes 9, and 12
 //! instead of 45 for an inertia.
 
-use super::{Force, Inertia, Mat3, Sym3, Transform, Vec3};
 use crate::space::RigidTransform;
+use crate::spatial::{Force, Inertia, Mat3, Sym3, Transform, Vec3};
 use crate::Scalar;
 
 /// `ˡⁱXᵢ`, ready to act on forces and inertias.
@@ -287,8 +287,9 @@ mod tests {
 
     #[test]
     fn a_joint_step_agrees_with_its_placed_transform() {
+        use crate::algorithm::crba::CrbaSpace;
         use crate::joint::{Axis, Joint, JointModel};
-        use crate::space::{Space, VectorOps};
+        use crate::space::VectorOps;
         use crate::spatial::Spatial;
         let f = Force::new(Vec3::new(0.3, -1.2, 0.7), Vec3::new(2.0, 0.5, -0.4));
         let trans = Vec3::new(0.2, -0.1, 0.3);
