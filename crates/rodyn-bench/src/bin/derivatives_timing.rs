@@ -13,7 +13,8 @@
 //! one model for exactly CALLS calls and prints nothing: under callgrind
 //! the difference between two call counts' totals, over the difference of
 //! the counts, is the instructions per call. MODEL is one of the timed
-//! models or, for this mode only, `chain20` or `chain60` (spatial chains
+//! models or, for this mode only, `chain20`, `chain30`, `chain40` or
+//! `chain60` (spatial chains
 //! of revolute joints).
 
 use std::hint::black_box;
@@ -91,6 +92,8 @@ fn main() {
             "panda" => run(model, &PANDA, &mode),
             "solo12" => run(model, &SOLO12, &mode),
             "chain20" => run(model, &planar_chain_3d::<20>(), &mode),
+            "chain30" => run(model, &planar_chain_3d::<30>(), &mode),
+            "chain40" => run(model, &planar_chain_3d::<40>(), &mode),
             "chain60" => run(model, &planar_chain_3d::<60>(), &mode),
             _ => panic!("unknown model {model}"),
         },
