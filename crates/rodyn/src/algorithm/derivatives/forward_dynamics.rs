@@ -7,7 +7,8 @@
 //! `q̈`, see `inverse_dynamics::forward_dynamics_passes`) instead of an
 //! articulated-body pass; [`aba_derivatives_by_solves`] is the plain form,
 //! ABA then RNEA's derivatives at its result, kept as its oracle. `M⁻¹`
-//! and the two products come from the branch-aware `Lᵀ D L` factorisation.
+//! and the two products come from the branch-aware `Lᵀ D L` factorisation
+//! (`M⁻¹` on deep trees through articulated-body sweeps over its factors).
 
 use super::inverse_dynamics::forward_dynamics_passes;
 use super::{rnea_derivatives, DerivativeData, DerivativeSpace};
