@@ -15,8 +15,9 @@ use rodyn::algorithm::derivatives::{
 use rodyn::algorithm::rnea::rnea;
 use rodyn::planar::Planar;
 use rodyn::prelude::*;
+use rodyn::topology::Topology;
 use rodyn_host_tests::random::{
-    random_configuration, random_floating_tree, random_planar_chain, random_tree, Rng,
+    gravity, random_configuration, random_floating_tree, random_planar_chain, random_tree, Rng,
 };
 
 fn assert_close<const N: usize>(what: &str, x: &[[f64; N]; N], y: &[[f64; N]; N], tol: f64) {
@@ -377,4 +378,62 @@ fn multi_column_solve_matches_column_by_column() {
     let mut rng = Rng::new(17);
     check(&random_tree::<9>(&mut rng), &mut rng);
     check(&random_floating_tree::<8, 13, 12>(&mut rng), &mut rng);
+}
+
+/// A tree of one-degree-of-freedom joints with the given parents (random
+/// axes, placements and inertias).
+fn tree_with_parents<const N: usize>(
+    rng: &mut Rng,
+    parents: [Option<usize>; N],
+) -> Model<f64, N, N, N> {
+    Model::from_parts(
+        Topology::new(parents, [1; N], [1; N], N),
+        core::array::from_fn(|_| rng.one_dof_joint()),
+        core::array::from_fn(|_| rng.placement()),
+        core::array::from_fn(|_| rng.inertia()),
+        gravity(),
+    )
+}
+
+/// `aba_derivatives` against its plain form on trees deep enough (their
+/// coordinates 15 moving bodies deep on average) that hosts form `M⁻¹` by
+/// articulated-body sweeps: a 40-link chain, and a trunk of 20 links
+/// carrying two branches of 12.
+#[test]
+fn deep_trees_match_the_plain_solves() {
+    fn check<const N: usize>(what: &str, model: &Model<f64, N, N, N>, rng: &mut Rng) {
+        assert!(
+            model.topology().mean_support_depth >= 15,
+            "{what}: not deep"
+        );
+        let mut data = Box::new(Data::<f64, N, N>::new());
+        let mut deriv = Box::new(DerivativeData::<f64, N, N>::new());
+        for state in 0..3 {
+            let q = random_configuration(model, rng);
+            let v: [f64; N] = rng.vector(2.0);
+            let tau: [f64; N] = rng.vector(5.0);
+            let f_ext: [Force<f64>; N] = core::array::from_fn(|_| rng.force());
+            aba_derivatives(model, &mut data, &mut deriv, &q, &v, &tau, Some(&f_ext)).unwrap();
+            let tuned = deriv.clone();
+            aba_derivatives_by_solves(model, &mut data, &mut deriv, &q, &v, &tau, Some(&f_ext))
+                .unwrap();
+            let ctx = |x: &str| format!("{what} state {state}: {x} vs plain");
+            assert_close(&ctx("M⁻¹"), &tuned.minv, &deriv.minv, 1e-12);
+            assert_close(&ctx("dq"), &tuned.ddq_dq, &deriv.ddq_dq, 1e-12);
+            assert_close(&ctx("dv"), &tuned.ddq_dv, &deriv.ddq_dv, 1e-12);
+        }
+    }
+    let mut rng = Rng::new(40);
+    let chain = tree_with_parents::<40>(&mut rng, core::array::from_fn(|i| i.checked_sub(1)));
+    check("40-link chain", &chain, &mut rng);
+    let branched = tree_with_parents::<44>(
+        &mut rng,
+        core::array::from_fn(|i| match i {
+            0 => None,
+            32 => Some(19),
+            _ => Some(i - 1),
+        }),
+    );
+    assert!(branched.topology().depth_first);
+    check("trunk and two branches", &branched, &mut rng);
 }

@@ -7,7 +7,8 @@
 //! `q̈`, see `inverse_dynamics::forward_dynamics_passes`) instead of an
 //! articulated-body pass; [`aba_derivatives_by_solves`] is the plain form,
 //! ABA then RNEA's derivatives at its result, kept as its oracle. `M⁻¹`
-//! and the two products come from the branch-aware `Lᵀ D L` factorisation.
+//! and the two products come from the branch-aware `Lᵀ D L` factorisation
+//! (`M⁻¹` on deep trees through articulated-body sweeps over its factors).
 
 use super::inverse_dynamics::forward_dynamics_passes;
 use super::{rnea_derivatives, DerivativeData, DerivativeSpace};
@@ -16,6 +17,9 @@ use crate::algorithm::ltdl::{ltdl_factor, ltdl_solve_columns, solve_columns_by_r
 use crate::data::Data;
 use crate::error::{Quantity, Result};
 use crate::model::{check_matrix_result, Model};
+use crate::space::{MotionVector, VectorOps};
+use crate::topology::Topology;
+use crate::tuning::HOST_ORDER;
 use crate::Scalar;
 
 /// Forward dynamics and its derivatives at `(q, v, τ)`: `q̈` in
@@ -88,7 +92,11 @@ fn minv_and_products<
     data: &Data<S, NB, NV, G>,
     deriv: &mut DerivativeData<S, NB, NV, G>,
 ) -> Result<()> {
-    solve_columns_by_rows(model, data, None, &mut deriv.minv);
+    if articulated_sweeps_pay(model.topology()) {
+        minv_by_articulated_sweeps(model, data, deriv);
+    } else {
+        solve_columns_by_rows(model, data, None, &mut deriv.minv);
+    }
     let minus = -S::ONE;
     solve_columns_by_rows(
         model,
@@ -105,6 +113,95 @@ fn minv_and_products<
     check_matrix_result(deriv.ddq_dq.as_flattened(), Quantity::Derivative)?;
     check_matrix_result(deriv.ddq_dv.as_flattened(), Quantity::Derivative)?;
     check_matrix_result(deriv.minv.as_flattened(), Quantity::Derivative)
+}
+
+/// Whether [`minv_by_articulated_sweeps`] forms `M⁻¹`: on hosts, in
+/// depth-first trees whose coordinates sit below at least `MIN_DEPTH`
+/// moving bodies on average (chains of 31 links or more). Its sweeps cost
+/// a fixed twelve products per entry of `M⁻¹` where the row sweeps cost
+/// one per supporting coordinate, so it pays only on deep trees (counts
+/// per chain length in the performance notebook, "Derivatives: sparse
+/// solves"). The condition on `NV` is known at compile time, so small
+/// models carry no second copy.
+#[inline(always)]
+fn articulated_sweeps_pay<const NB: usize, const NV: usize>(t: &Topology<NB, NV>) -> bool {
+    const MIN_DEPTH: usize = 15;
+    HOST_ORDER && NV > 2 * MIN_DEPTH && t.depth_first && t.mean_support_depth >= MIN_DEPTH
+}
+
+/// `M⁻¹` by articulated-body sweeps (Carpentier & Mansard 2018, as Pinocchio's
+/// `computeMinverse`), in a [`depth_first`](crate::topology::Topology::depth_first)
+/// tree, from the factors and the passes' world-frame `S_c` and `Yᶜ S_c`.
+///
+/// The factors are ABA's: `L[d][c] = U_d · S_c / D_d` for c supporting d,
+/// with `U_d = Iᴬ S_d` the articulated inertia's column, so
+/// `U_c = Yᶜ S_c − Σ L[d][c] U_d` over the d that c supports. The sums over
+/// a coordinate's subtree or path that the row sweeps form with rows of `L`
+/// are then formed through six-dimensional accumulators per column: leaves
+/// to root, `F_j = Σ U_d Y[d][j] / D_d` gives `Y[c][j] / D_c = −S_c · F_j / D_c`
+/// (`Y = L⁻ᵀ`, j below c); root to leaves, `A_k = Σ S_m M⁻¹[m][j]` over
+/// k's path gives the upper triangle `M⁻¹[i][j] = Y[i][j] / D_i − (U_i / D_i) · A_λ(i)`.
+fn minv_by_articulated_sweeps<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: DerivativeSpace,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &Data<S, NB, NV, G>,
+    deriv: &mut DerivativeData<S, NB, NV, G>,
+) {
+    let t = model.topology();
+    let h = &data.ltdl;
+    let zero_f = <G::Force<S> as VectorOps<S>>::ZERO;
+    let zero_m = <G::Motion<S> as VectorOps<S>>::ZERO;
+    let s = &deriv.s;
+    // U_c, leaves to root.
+    let mut u = [zero_f; NV];
+    for c in (0..NV).rev() {
+        let end = t.last_supported_v[c] + 1;
+        let mut u_c = deriv.df_da[c];
+        for d in c + 1..end {
+            u_c -= u[d] * h[c][d];
+        }
+        u[c] = u_c;
+    }
+    // Y / D in the upper triangle, leaves to root.
+    let minv = &mut deriv.minv;
+    let mut f = [zero_f; NV];
+    for c in (0..NV).rev() {
+        let end = t.last_supported_v[c] + 1;
+        let d_inv = S::ONE / h[c][c];
+        minv[c][c] = d_inv;
+        f[c] += u[c] * d_inv;
+        for j in c + 1..end {
+            let m = -s[c].dot(&f[j]) * d_inv;
+            minv[c][j] = m;
+            f[j] += u[c] * m;
+        }
+    }
+    // M⁻¹'s upper triangle, a column at a time, root to leaves.
+    let w: [G::Force<S>; NV] = core::array::from_fn(|i| u[i] * (S::ONE / h[i][i]));
+    let mut a = [zero_m; NV];
+    for j in 0..NV {
+        for i in 0..=j {
+            let a_parent = t.lambda_v[i].map_or(zero_m, |k| a[k]);
+            let y = if j <= t.last_supported_v[i] {
+                minv[i][j]
+            } else {
+                S::ZERO
+            };
+            let m = y - a_parent.dot(&w[i]);
+            minv[i][j] = m;
+            a[i] = a_parent + s[i] * m;
+        }
+    }
+    for r in 0..NV {
+        for c in 0..r {
+            minv[r][c] = minv[c][r];
+        }
+    }
 }
 
 /// `M⁻¹` and the two products as three plain solves of NV columns
