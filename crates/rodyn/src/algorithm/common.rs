@@ -135,12 +135,10 @@ pub(crate) fn joint_configuration<
     i: usize,
     q: &'q [S; NQ],
 ) -> &'q [S] {
-    let t = model.topology();
-    // A valid topology keeps `idx_q[i] + nq[i] <= NQ` (`Topology::try_new`
-    // lays it out); the clamp, which then changes nothing, lets the
-    // compiler see the start in range, and the joints check their length
-    // (`first_chunk`), so no end is cut here.
-    &q[t.idx_q[i].min(NQ)..]
+    // The start is in range (`Model::configuration_range`); the joints
+    // check their length (`first_chunk`), so no end is cut here.
+    let (iq, _) = model.configuration_range(i);
+    &q[iq..]
 }
 
 /// Body `i`'s joint rates: `v` (which holds every joint's rates, or
@@ -158,9 +156,8 @@ pub(crate) fn joint_rates<
     i: usize,
     v: &'v [S; NV],
 ) -> &'v [S] {
-    let t = model.topology();
-    // Clamped as in `joint_configuration`.
-    &v[t.idx_v[i].min(NV)..]
+    let (iv, _) = model.topology().velocity_range(i);
+    &v[iv..]
 }
 
 /// Checks `q` (finite, unit quaternions) and `v` (finite).

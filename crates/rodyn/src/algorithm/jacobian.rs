@@ -139,7 +139,7 @@ pub(crate) fn joint_jacobians_from_transforms<
 ) {
     let t = model.topology();
     for i in 0..NB {
-        let o_m_i = match t.parents[i] {
+        let o_m_i = match t.parent(i) {
             Some(p) => G::then_joint(&data.o_m_i[p], &data.li_m_i[i], model.turned_frame(i)),
             None => data.li_m_i[i],
         };
@@ -224,7 +224,7 @@ fn for_each_supporting_coordinate<
         for k in t.idx_v[i]..t.idx_v[i] + t.nv[i] {
             f(k);
         }
-        b = t.parents[i];
+        b = t.parent(i);
     }
 }
 

@@ -474,7 +474,7 @@ pub(crate) fn solve_transposed_on_path<
             path[len] = k;
             len += 1;
         }
-        i = t.parents[j];
+        i = t.parent(j);
     }
     for (n, &k) in path[..len].iter().enumerate() {
         let l = &h[k];

@@ -180,30 +180,62 @@ fn unit_response<S: Scalar, const NB: usize, const NQ: usize, const NV: usize>(
     let mut p_a = -*force;
     let mut i = body;
     loop {
-        let (iv, nv) = (t.idx_v[i], t.nv[i]);
-        model.joint(i).project_force(&p_a, &mut st[..nv]);
-        for k in 0..nv {
-            u[iv + k] = -st[k];
+        let (iv, nv) = t.joint_velocity_range(i);
+        let joint = model.joint(i);
+        // One coordinate without the loops, as in ABA: with the joint's
+        // range known, the loops over it unroll and cost the common case
+        // instructions on the Cortex-M4.
+        if nv == 1 {
+            let mut s = [S::ZERO];
+            joint.project_force(&p_a, &mut s);
+            let u_k = -s[0];
+            u[iv] = u_k;
+            let Some(parent) = t.parent(i) else { break };
+            p_a += data.u_cols[iv] * (data.d_inv[iv][0] * u_k);
+            p_a = data.li_m_i[i].act_force(&p_a);
+            i = parent;
+            continue;
         }
-        let Some(parent) = t.parents[i] else { break };
+        joint.project_force(&p_a, &mut st[..nv]);
+        // The joint's stretch of each vector, sliced once (see ABA's
+        // `backward_pass`).
+        let u_i = &mut u[iv..iv + nv];
         for k in 0..nv {
-            let dinv_u = (0..nv).fold(S::ZERO, |acc, l| acc + data.d_inv[iv + k][l] * u[iv + l]);
-            p_a += data.u_cols[iv + k] * dinv_u;
+            u_i[k] = -st[k];
+        }
+        let Some(parent) = t.parent(i) else { break };
+        let (d_inv, u_cols) = (&data.d_inv[iv..iv + nv], &data.u_cols[iv..iv + nv]);
+        for k in 0..nv {
+            let dinv_u = (0..nv).fold(S::ZERO, |acc, l| acc + d_inv[k][l] * u_i[l]);
+            p_a += u_cols[k] * dinv_u;
         }
         p_a = data.li_m_i[i].act_force(&p_a);
         i = parent;
     }
     // Forward over the tree: a' = ⁱXₚ aₚ, q̈ = D⁻¹ (u − Uᵀ a'), a = a' + S q̈.
     for i in 0..NB {
-        let (iv, nv) = (t.idx_v[i], t.nv[i]);
-        let a_parent = t.parents[i].map_or(Motion::ZERO, |p| accel[p]);
+        let (iv, nv) = t.joint_velocity_range(i);
+        let a_parent = t.parent(i).map_or(Motion::ZERO, |p| accel[p]);
         let a_prime = data.li_m_i[i].act_inv_motion(&a_parent);
-        for k in 0..nv {
-            st[k] = u[iv + k] - a_prime.dot(&data.u_cols[iv + k]);
+        let joint = model.joint(i);
+        if nv == 1 {
+            let x = data.d_inv[iv][0] * (u[iv] - a_prime.dot(&data.u_cols[iv]));
+            ddq[iv] = x;
+            accel[i] = joint.add_motion(&a_prime, &[x]);
+            continue;
         }
+        let (u_i, d_inv, u_cols) = (
+            &u[iv..iv + nv],
+            &data.d_inv[iv..iv + nv],
+            &data.u_cols[iv..iv + nv],
+        );
         for k in 0..nv {
-            ddq[iv + k] = (0..nv).fold(S::ZERO, |acc, l| acc + data.d_inv[iv + k][l] * st[l]);
+            st[k] = u_i[k] - a_prime.dot(&u_cols[k]);
         }
-        accel[i] = a_prime + model.joint(i).motion(&ddq[iv..iv + nv]);
+        let ddq_i = &mut ddq[iv..iv + nv];
+        for k in 0..nv {
+            ddq_i[k] = (0..nv).fold(S::ZERO, |acc, l| acc + d_inv[k][l] * st[l]);
+        }
+        accel[i] = a_prime + joint.motion(ddq_i);
     }
 }

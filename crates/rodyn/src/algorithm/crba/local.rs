@@ -45,7 +45,7 @@ pub(super) fn backward_body<
     let t = model.topology();
     let joint = model.joint(i);
     let frame = model.turned_frame(i);
-    let (iv, nv) = (t.idx_v[i], t.nv[i]);
+    let (iv, nv) = t.velocity_range(i);
     let end = t.subtree_end_v[i];
     if ENTRIES_IN_PASS && t.subtrees_contiguous && end < NV {
         let m = &mut data.mass_matrix;
@@ -70,7 +70,7 @@ pub(super) fn backward_body<
         G::FUSES_CRBA_STEPS && t.subtrees_contiguous,
         nv,
         axis,
-        t.parents[i],
+        t.parent(i),
         step,
     ) {
         let end = t.subtree_end_v[i];
@@ -88,7 +88,7 @@ pub(super) fn backward_body<
             }
         }
     }
-    if G::FUSES_CRBA_STEPS && t.subtrees_contiguous && t.parents[i].is_none() && nv == 6 {
+    if G::FUSES_CRBA_STEPS && t.subtrees_contiguous && t.parent(i).is_none() && nv == 6 {
         let end = t.subtree_end_v[i];
         if let (Some(ic_i), Some(subtree), Some(rows)) = (
             data.ic.get(i),
@@ -140,7 +140,7 @@ pub(super) fn backward_body<
             }
         }
     }
-    if let (Some(p), Some(step)) = (t.parents[i], step) {
+    if let (Some(p), Some(step)) = (t.parent(i), step) {
         let ic_i = *ic_i;
         if let Some(ic_p) = data.ic.get_mut(p) {
             G::add_stepped_inertia(ic_p, step, &ic_i);
