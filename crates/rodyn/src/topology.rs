@@ -369,6 +369,18 @@ impl<const NB: usize, const NV: usize> Topology<NB, NV> {
         (iv, nv)
     }
 
+    /// Body `i`'s velocity coordinates, `idx_v[i]..idx_v[i] + nv[i]`, with
+    /// the end known to the optimiser to be at most `NV`.
+    #[must_use]
+    #[inline(always)]
+    pub const fn velocity_coordinates(&self, i: usize) -> core::ops::Range<usize> {
+        let (iv, nv) = self.velocity_range(i);
+        let end = iv + nv;
+        // SAFETY: as in `velocity_range`, of which this is the sum.
+        unsafe { core::hint::assert_unchecked(iv <= end && end <= NV) };
+        iv..end
+    }
+
     /// [`Self::velocity_range`], with `nv[i] <= MAX_JOINT_NV` also known to
     /// the optimiser, for code that keeps a joint's rows in buffers of
     /// that length. (Not in `velocity_range` itself: the bound lets loops
@@ -400,6 +412,62 @@ impl<const NB: usize, const NV: usize> Topology<NB, NV> {
             );
         }
         (iq, nq)
+    }
+
+    /// Featherstone's λ of velocity coordinate `k`, known to the optimiser
+    /// to come before `k`.
+    #[must_use]
+    #[inline(always)]
+    pub const fn lambda(&self, k: usize) -> Option<usize> {
+        let lambda = self.tables.lambda_v[k];
+        if let Some(l) = lambda {
+            // SAFETY: `try_new` sets `lambda_v[k]` to `None`, to `k - 1`, or
+            // to the last coordinate of a body before k's (all smaller than
+            // k); the tables cannot be changed afterwards.
+            unsafe { core::hint::assert_unchecked(l < k) };
+        }
+        lambda
+    }
+
+    /// Where the unbroken stretch of λ ending at coordinate `k` starts
+    /// (`chain_start_v[k]`), known to the optimiser to be at most `k`.
+    #[must_use]
+    #[inline(always)]
+    pub const fn chain_start(&self, k: usize) -> usize {
+        let start = self.tables.chain_start_v[k];
+        // SAFETY: `try_new` sets `chain_start_v[k]` to `k` or to the chain
+        // start of `lambda_v[k] = k - 1`, by induction at most `k`; the
+        // tables cannot be changed afterwards.
+        unsafe { core::hint::assert_unchecked(start <= k) };
+        start
+    }
+
+    /// The last coordinate that coordinate `k` supports
+    /// (`last_supported_v[k]`), known to the optimiser to lie in `k..NV`.
+    #[must_use]
+    #[inline(always)]
+    pub const fn last_supported(&self, k: usize) -> usize {
+        let last = self.tables.last_supported_v[k];
+        // SAFETY: `try_new` starts every entry at least at its own
+        // coordinate and raises it only to coordinates (below `NV`); the
+        // tables cannot be changed afterwards.
+        unsafe { core::hint::assert_unchecked(k <= last && last < NV) };
+        last
+    }
+
+    /// One past the last coordinate of body `i`'s subtree
+    /// (`subtree_end_v[i]`), known to the optimiser to lie in
+    /// `idx_v[i] + nv[i] ..= NV`.
+    #[must_use]
+    #[inline(always)]
+    pub const fn subtree_end(&self, i: usize) -> usize {
+        let end = self.tables.subtree_end_v[i];
+        let (iv, nv) = self.velocity_range(i);
+        // SAFETY: `try_new` starts `subtree_end_v[i]` at `idx_v[i] + nv[i]`
+        // and raises it only to children's ends (at most `NV`); the tables
+        // cannot be changed afterwards.
+        unsafe { core::hint::assert_unchecked(iv + nv <= end && end <= NV) };
+        end
     }
 
     /// Body `i`'s parent, known to the optimiser to come before it.
@@ -482,9 +550,17 @@ mod tests {
             );
             assert!(t.nv[i] <= MAX_JOINT_NV, "body {i}: nv");
         }
+        for i in 0..NB {
+            let end = t.subtree_end_v[i];
+            assert!(
+                t.idx_v[i] + t.nv[i] <= end && end <= NV,
+                "body {i}: subtree"
+            );
+        }
         for k in 0..NV {
             assert!(t.body_of_v[k] < NB);
             assert!(t.chain_start_v[k] <= k);
+            assert!(k <= t.last_supported_v[k] && t.last_supported_v[k] < NV);
             if let Some(l) = t.lambda_v[k] {
                 assert!(l < k);
             }
@@ -545,8 +621,18 @@ mod tests {
                                 for i in 0..3 {
                                     assert_eq!(t.velocity_range(i), (t.idx_v[i], t.nv[i]));
                                     assert_eq!(t.joint_velocity_range(i), t.velocity_range(i));
+                                    assert_eq!(
+                                        t.velocity_coordinates(i),
+                                        t.idx_v[i]..t.idx_v[i] + t.nv[i]
+                                    );
                                     assert_eq!(t.configuration_range(i), (t.idx_q[i], t.nq[i]));
                                     assert_eq!(t.parent(i), t.parents[i]);
+                                    assert_eq!(t.subtree_end(i), t.subtree_end_v[i]);
+                                }
+                                for k in 0..NV {
+                                    assert_eq!(t.lambda(k), t.lambda_v[k]);
+                                    assert_eq!(t.chain_start(k), t.chain_start_v[k]);
+                                    assert_eq!(t.last_supported(k), t.last_supported_v[k]);
                                 }
                                 accepted += 1;
                             }

@@ -295,10 +295,14 @@ pub(crate) fn supporting_ranges<const NB: usize, const NV: usize>(
     let mut last = k;
     core::iter::from_fn(move || {
         let end = last?;
-        // Coordinates of a valid topology (`Topology::try_new`); one past
-        // the end ends the ranges.
-        let first = *topology.chain_start_v.get(end)?;
-        last = *topology.lambda_v.get(first)?;
+        // `end` is a coordinate (`Topology::lambda` is below its argument,
+        // which the caller takes in range); a test the optimiser removes
+        // where it knows that.
+        if end >= NV {
+            return None;
+        }
+        let first = topology.chain_start(end);
+        last = topology.lambda(first);
         Some((first, end))
     })
 }

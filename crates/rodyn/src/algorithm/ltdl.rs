@@ -241,7 +241,7 @@ fn factor_by_dots<S: Scalar, const NB: usize, const NV: usize>(
 ) -> Result<()> {
     let mut d_l = [S::ZERO; NV];
     for k in (0..NV).rev() {
-        let below = k + 1..topology.last_supported_v[k] + 1;
+        let below = k + 1..topology.last_supported(k) + 1;
         let d = pivots.form(k, m[k][k], &h[k], below.clone(), &mut d_l)?;
         h[k][k] = d;
         if !topology.depth_first {
@@ -273,7 +273,7 @@ fn column_by_dots<S: Scalar, const NB: usize, const NV: usize>(
     inverse: S,
 ) {
     let below = k + 1..k + 1 + d_l.len();
-    for (first, last) in supporting_ranges(topology, topology.lambda_v[k]) {
+    for (first, last) in supporting_ranges(topology, topology.lambda(k)) {
         let rows = h[first..=last].iter_mut().zip(&m_k[first..=last]);
         if d_l.is_empty() {
             for (row, m_ki) in rows {
@@ -299,7 +299,7 @@ fn factor_by_rows<S: Scalar, const NB: usize, const NV: usize>(
 ) -> Result<()> {
     let mut d_l = [S::ZERO; NV];
     for k in (0..NV).rev() {
-        let end = topology.last_supported_v[k] + 1;
+        let end = topology.last_supported(k) + 1;
         let (to_k, below_k) = h.split_at_mut(k + 1);
         let (above_k, row_k) = to_k.split_at_mut(k);
         let row_k = &mut row_k[0];
@@ -316,7 +316,7 @@ fn factor_by_rows<S: Scalar, const NB: usize, const NV: usize>(
         let inverse = S::ONE / d;
         let rows_below = &below_k[..end - k - 1];
         let d_l = &d_l[k + 1..end];
-        for (first, last) in supporting_ranges(topology, topology.lambda_v[k]) {
+        for (first, last) in supporting_ranges(topology, topology.lambda(k)) {
             let (l_k, l_k_transposed) = (&mut row_k[first..=last], &mut above_k[first..=last]);
             let m_k = &m[k][first..=last];
             if rows_below.len() >= ROWS_PER_COMBINATION && l_k.len() >= ROWS_PER_COMBINATION {
@@ -403,7 +403,7 @@ pub(crate) fn solve_transposed<
     let h = &data.ltdl;
     for k in (0..NV).rev() {
         let (b_to_k, b_below) = b.split_at_mut(k + 1);
-        let end = topology.last_supported_v[k] + 1;
+        let end = topology.last_supported(k) + 1;
         let (l, b_below) = (&h[k][k + 1..end], &b_below[..end - k - 1]);
         match (l, b_below) {
             // `b[k + 1]`, final only just now, enters last.
@@ -432,7 +432,7 @@ pub(crate) fn solve_lower<
     let h = &data.ltdl;
     for k in 0..NV {
         let (b_to_k, b_below) = b.split_at_mut(k + 1);
-        let end = topology.last_supported_v[k] + 1;
+        let end = topology.last_supported(k) + 1;
         match (&mut b_below[..end - k - 1], &h[k][k + 1..end]) {
             // `b[k + 1]`, final after this update, on its own; the rest
             // then starts at `k + 2`, where the next pass's reads start.
@@ -470,7 +470,7 @@ pub(crate) fn solve_transposed_on_path<
     let mut len = 0;
     let mut i = Some(body);
     while let Some(j) = i {
-        for k in (t.idx_v[j]..t.idx_v[j] + t.nv[j]).rev() {
+        for k in (t.velocity_coordinates(j)).rev() {
             path[len] = k;
             len += 1;
         }
@@ -534,7 +534,7 @@ pub fn ltdl_solve_columns<
     let h = &data.ltdl;
     // Lᵀ Y = B, leaves to root.
     for k in (0..NV).rev() {
-        let end = topology.last_supported_v[k] + 1;
+        let end = topology.last_supported(k) + 1;
         let (head, below) = b.split_at_mut(k + 1);
         let row_k = &mut head[k];
         for (row_s, l) in below.iter().zip(&h[k][k + 1..end]) {
@@ -552,7 +552,7 @@ pub fn ltdl_solve_columns<
     }
     // L X = Z, root to leaves.
     for k in 0..NV {
-        let end = topology.last_supported_v[k] + 1;
+        let end = topology.last_supported(k) + 1;
         let (head, below) = b.split_at_mut(k + 1);
         let row_k = &head[k];
         for (row_s, l) in below.iter_mut().zip(&h[k][k + 1..end]) {
@@ -605,7 +605,7 @@ pub(crate) fn solve_columns_by_rows<
             }
         };
         // Through `get`: no bounds checks in firmware images.
-        let end = topology.last_supported_v[k] + 1;
+        let end = topology.last_supported(k) + 1;
         let (head, below) = x.split_at_mut(k + 1);
         for (row_s, l) in below.iter().zip(h[k].get(k + 1..end).unwrap_or_default()) {
             for (a, y) in acc.iter_mut().zip(row_s) {
@@ -627,7 +627,7 @@ pub(crate) fn solve_columns_by_rows<
         // The coordinates supporting s, a chain of them at a time (as
         // `supporting_ranges` walks them, but through `get`: no bounds
         // checks in firmware images).
-        let mut support = topology.lambda_v[s];
+        let mut support = topology.lambda(s);
         while let Some(end) = support {
             let first = topology.chain_start_v.get(end).copied().unwrap_or(end);
             let (above, h) = (above.get(first..=end), h.get(first..=end));

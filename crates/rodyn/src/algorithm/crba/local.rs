@@ -46,7 +46,7 @@ pub(super) fn backward_body<
     let joint = model.joint(i);
     let frame = model.turned_frame(i);
     let (iv, nv) = t.velocity_range(i);
-    let end = t.subtree_end_v[i];
+    let end = t.subtree_end(i);
     if ENTRIES_IN_PASS && t.subtrees_contiguous && end < NV {
         let m = &mut data.mass_matrix;
         // Bounds known to the compiler: no checks inside.
@@ -73,7 +73,7 @@ pub(super) fn backward_body<
         t.parent(i),
         step,
     ) {
-        let end = t.subtree_end_v[i];
+        let end = t.subtree_end(i);
         let (ancestors, rest) = data.ic.split_at_mut(i);
         // A valid topology has `p < i` and its subtree's coordinates in
         // range; one that does not is left to the general step below.
@@ -89,7 +89,7 @@ pub(super) fn backward_body<
         }
     }
     if G::FUSES_CRBA_STEPS && t.subtrees_contiguous && t.parent(i).is_none() && nv == 6 {
-        let end = t.subtree_end_v[i];
+        let end = t.subtree_end(i);
         if let (Some(ic_i), Some(subtree), Some(rows)) = (
             data.ic.get(i),
             columns.get(iv + 6..end),
@@ -105,7 +105,7 @@ pub(super) fn backward_body<
         columns[iv + k] = G::turned_inertia_column(frame, ic_i, joint, k);
     }
     if t.subtrees_contiguous {
-        let end = t.subtree_end_v[i];
+        let end = t.subtree_end(i);
         let rows = iv..end;
         project_rows(
             joint,

@@ -70,14 +70,14 @@ pub(super) fn clear_lower<S: Scalar, const NB: usize, const NV: usize>(
         // Most rows have nothing to clear (every row of a chain): they
         // skip the fill, which can become a call into `memset` (fewer
         // instructions on the M4's Panda CRBA; see the notebook, "CRBA").
-        let start = t.chain_start_v[k];
+        let start = t.chain_start(k);
         if start > 0 {
             row[..start].fill(S::ZERO);
         }
     }
     if mirrored {
-        for (k, &start) in t.chain_start_v.iter().enumerate() {
-            for row in &mut m[..start] {
+        for k in 0..NV {
+            for row in &mut m[..t.chain_start(k)] {
                 row[k] = S::ZERO;
             }
         }
