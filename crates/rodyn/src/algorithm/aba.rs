@@ -400,7 +400,11 @@ fn invert_joint_d<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, 
                 s += x[m][r] * inv_d[m] * x[m][c];
             }
             d_inv[r][c] = s;
-            d_inv[c][r] = s;
+            // `r < n <= MAX_JOINT_NV`, which the optimiser loses track of
+            // here; an entry past a row is never written.
+            if let Some(mirror) = d_inv[c].get_mut(r) {
+                *mirror = s;
+            }
         }
     }
     Ok(())

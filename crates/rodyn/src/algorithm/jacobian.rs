@@ -221,6 +221,10 @@ fn for_each_supporting_coordinate<
     let mut b = Some(body);
     // Parents come before children, so the walk ends within NB steps.
     while let Some(i) = b {
+        // `body` is the caller's; the parents are in range.
+        if i >= NB {
+            break;
+        }
         for k in t.velocity_coordinates(i) {
             f(k);
         }

@@ -242,7 +242,7 @@ fn factor_by_dots<S: Scalar, const NB: usize, const NV: usize>(
     let mut d_l = [S::ZERO; NV];
     for k in (0..NV).rev() {
         let below = k + 1..topology.last_supported(k) + 1;
-        let d = pivots.form(k, m[k][k], &h[k], below.clone(), &mut d_l)?;
+        let d = pivots.form(k, m[k][k], &h[k], below, &mut d_l)?;
         h[k][k] = d;
         if !topology.depth_first {
             // The rows that do not support k read this column as zeros.
@@ -250,7 +250,7 @@ fn factor_by_dots<S: Scalar, const NB: usize, const NV: usize>(
                 row[k] = S::ZERO;
             }
         }
-        column_by_dots(topology, &m[k], h, &d_l[below], k, S::ONE / d);
+        column_by_dots(topology, &m[k], h, &d_l, k, S::ONE / d);
     }
     Ok(())
 }
@@ -268,11 +268,13 @@ fn column_by_dots<S: Scalar, const NB: usize, const NV: usize>(
     topology: &Topology<NB, NV>,
     m_k: &[S; NV],
     h: &mut [[S; NV]; NV],
-    d_l: &[S],
+    d_l: &[S; NV],
     k: usize,
     inverse: S,
 ) {
-    let below = k + 1..k + 1 + d_l.len();
+    // Sliced here, where `last_supported` states the range in bounds.
+    let below = k + 1..topology.last_supported(k) + 1;
+    let d_l = &d_l[below.clone()];
     for (first, last) in supporting_ranges(topology, topology.lambda(k)) {
         let rows = h[first..=last].iter_mut().zip(&m_k[first..=last]);
         if d_l.is_empty() {
@@ -470,7 +472,11 @@ pub(crate) fn solve_transposed_on_path<
     let mut len = 0;
     let mut i = Some(body);
     while let Some(j) = i {
-        for k in (t.velocity_coordinates(j)).rev() {
+        // `body` is the caller's; the parents are in range.
+        if j >= NB {
+            break;
+        }
+        for k in t.velocity_coordinates(j).rev() {
             path[len] = k;
             len += 1;
         }

@@ -179,7 +179,8 @@ fn unit_response<S: Scalar, const NB: usize, const NQ: usize, const NV: usize>(
     // receives pᵃ = pᴬ + U D⁻¹ u (no velocity: no c term).
     let mut p_a = -*force;
     let mut i = body;
-    loop {
+    // `body` is the caller's; the parents are in range.
+    while i < NB {
         let (iv, nv) = t.joint_velocity_range(i);
         let joint = model.joint(i);
         // One coordinate without the loops, as in ABA: with the joint's

@@ -163,7 +163,9 @@ pub(crate) fn form_delassus<
             let mut on_path = [false; NB];
             for contact in contacts {
                 let mut body = Some(contact.held_frame().body);
-                while let Some(i) = body.filter(|&i| !on_path[i]) {
+                // The contact's body is the caller's (`get`: past the end
+                // ends the walk); the parents are in range.
+                while let Some(i) = body.filter(|&i| on_path.get(i) == Some(&false)) {
                     on_path[i] = true;
                     body = model.parent(i);
                 }

@@ -101,8 +101,8 @@ pub(super) fn backward_body<
         }
     }
     let Some(ic_i) = data.ic.get(i) else { return };
-    for k in 0..nv {
-        columns[iv + k] = G::turned_inertia_column(frame, ic_i, joint, k);
+    for (k, column) in columns[iv..iv + nv].iter_mut().enumerate() {
+        *column = G::turned_inertia_column(frame, ic_i, joint, k);
     }
     if t.subtrees_contiguous {
         let end = t.subtree_end(i);

@@ -198,8 +198,7 @@ fn world_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: D
             <G::Motion<S> as VectorOps<S>>::ZERO,
             <G::Motion<S> as VectorOps<S>>::ZERO,
         );
-        for k in 0..t.nv[i] {
-            let c = t.idx_v[i] + k;
+        for (k, c) in t.velocity_coordinates(i).enumerate() {
             let s = G::act_subspace_column(&o_m_i, joint, k);
             deriv.s[c] = s;
             joint_velocity += s * v[c];
