@@ -335,6 +335,9 @@ fn check_pivot<S: Scalar>(joint: usize, d: S, scale: S) -> Result<()> {
 /// each division doubled the latency). `D` is padded with the identity to
 /// `MAX_JOINT_NV` so that every loop has a constant trip count and the
 /// optimiser unrolls it (on a host; at opt-level "s" they stay loops).
+// Out of line: inlined, its 6 x 6 work arrays grew the stack of every
+// caller of ABA, also of models without a multi-coordinate joint.
+#[inline(never)]
 fn invert_joint_d<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     model: &Model<S, NB, NQ, NV, G>,
     i: usize,
@@ -343,6 +346,11 @@ fn invert_joint_d<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, 
     d_inv: &mut [[S; MAX_JOINT_NV]; NV],
 ) -> Result<()> {
     const N: usize = MAX_JOINT_NV;
+    // Never taken (the caller passes a body of its loop), but out of line
+    // the optimiser does not know `i < NB`.
+    if i >= NB {
+        return Ok(());
+    }
     let (iv, n) = model.topology().joint_velocity_range(i);
     let joint = model.joint(i);
     let (u_cols, armature) = (&u_cols[iv..iv + n], &model.armature()[iv..iv + n]);
@@ -393,18 +401,19 @@ fn invert_joint_d<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, 
         }
     }
     // D⁻¹[r][c] = Σₘ X[m][r] X[m][c] / Δₘ over m ≥ r ≥ c.
-    for r in 0..n {
+    // Over `0..N` with an exit at `n`, so that `r < N` bounds the columns
+    // (`n <= N` alone the optimiser does not carry this far).
+    for r in 0..N {
+        if r >= n {
+            break;
+        }
         for c in 0..=r {
             let mut s = S::ZERO;
             for m in r..N {
                 s += x[m][r] * inv_d[m] * x[m][c];
             }
             d_inv[r][c] = s;
-            // `r < n <= MAX_JOINT_NV`, which the optimiser loses track of
-            // here; an entry past a row is never written.
-            if let Some(mirror) = d_inv[c].get_mut(r) {
-                *mirror = s;
-            }
+            d_inv[c][r] = s;
         }
     }
     Ok(())
