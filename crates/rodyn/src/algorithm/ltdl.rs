@@ -433,16 +433,16 @@ pub(crate) fn solve_lower<
     let topology = model.topology();
     let h = &data.ltdl;
     for k in 0..NV {
-        let (b_to_k, b_below) = b.split_at_mut(k + 1);
+        let b_k = b[k];
         let end = topology.last_supported(k) + 1;
-        match (&mut b_below[..end - k - 1], &h[k][k + 1..end]) {
+        match (&mut b[k + 1..end], &h[k][k + 1..end]) {
             // `b[k + 1]`, final after this update, on its own; the rest
             // then starts at `k + 2`, where the next pass's reads start.
             ([b_next, b_rest @ ..], [l_next, l_rest @ ..]) if HOST_ORDER => {
-                *b_next -= *l_next * b_to_k[k];
-                sub_scaled(b_rest, b_to_k[k], l_rest);
+                *b_next -= *l_next * b_k;
+                sub_scaled(b_rest, b_k, l_rest);
             }
-            (b_below, l) => sub_scaled(b_below, b_to_k[k], l),
+            (b_below, l) => sub_scaled(b_below, b_k, l),
         }
     }
 }

@@ -257,6 +257,11 @@ fn composite_pass<
             *df_da_c = df_da;
             let mut row_body = Some(j);
             while let Some(i) = row_body {
+                // The walk's bodies are in range (`p < i`), which the optimiser
+                // does not carry from step to step; a test, not a panic path.
+                if i >= NB {
+                    break;
+                }
                 let first = t.idx_v.get(i).copied().unwrap_or(0);
                 for r in first..first + t.nv.get(i).copied().unwrap_or(0) {
                     let m = deriv.s.get(r).map_or(S::ZERO, |s_r| s_r.dot(&df_da));
@@ -381,6 +386,11 @@ fn backward_pass<
             let dy_row = dy.row(&deriv.s[r]);
             let mut above = model.parent(j);
             while let Some(i) = above {
+                // The walk's bodies are in range (`p < i`), which the optimiser
+                // does not carry from step to step; a test, not a panic path.
+                if i >= NB {
+                    break;
+                }
                 for c in t.velocity_coordinates(i) {
                     deriv.dtau_dq[r][c] = deriv.da_dq[c].dot(&y_s)
                         + G::Variation::<S>::dot_row(&dy_row, &deriv.dv_dq[c]);
@@ -429,6 +439,11 @@ fn subtree_columns_pass<
             let df_dq_above = df_dq + deriv.s[c].cross_force(&deriv.o_fc[i]);
             let mut row_body = Some(i);
             while let Some(j) = row_body {
+                // The walk's bodies are in range (`p < i`), which the optimiser
+                // does not carry from step to step; a test, not a panic path.
+                if j >= NB {
+                    break;
+                }
                 let df_dq = if j == i { df_dq } else { df_dq_above };
                 for r in t.velocity_coordinates(j) {
                     let s_r = &deriv.s[r];
