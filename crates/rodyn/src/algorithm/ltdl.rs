@@ -477,15 +477,33 @@ pub(crate) fn solve_transposed_on_path<
             break;
         }
         for k in t.velocity_coordinates(j).rev() {
-            path[len] = k;
-            len += 1;
+            // A path holds each coordinate once, so it fits (`get_mut`: no
+            // panic path).
+            if let Some(slot) = path.get_mut(len) {
+                *slot = k;
+                len += 1;
+            }
         }
         i = t.parent(j);
     }
-    for (n, &k) in path[..len].iter().enumerate() {
-        let l = &h[k];
+    for (n, &k) in path.iter().take(len).enumerate() {
+        // The coordinates read back are in range: tests, not panic paths
+        // (one per entry, where indexing `l` and `b` checked twice).
+        let Some(l) = h.get(k) else {
+            continue;
+        };
         for b in rows.iter_mut() {
-            let below = path[..n].iter().fold(S::ZERO, |acc, &s| acc + l[s] * b[s]);
+            let below =
+                path.iter().take(n).fold(
+                    S::ZERO,
+                    |acc, &s| {
+                        if s < NV {
+                            acc + l[s] * b[s]
+                        } else {
+                            acc
+                        }
+                    },
+                );
             b[k] -= below;
         }
     }

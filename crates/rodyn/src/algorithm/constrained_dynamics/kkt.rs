@@ -235,7 +235,8 @@ pub(crate) fn form_delassus<
     // "Constrained dynamics").
     for r in 0..rows {
         let d_w: [S; NV] = core::array::from_fn(|k| data.ltdl[k][k] * cdata.responses[r][k]);
-        for s in 0..=r {
+        // `0..r + 1`, not `0..=r`: the optimiser then bounds `s` by `rows`.
+        for s in 0..r + 1 {
             let g = dot(&d_w, &cdata.responses[s]);
             cdata.delassus[r][s] = g;
             cdata.delassus[s][r] = g;
