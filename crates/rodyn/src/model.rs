@@ -719,8 +719,8 @@ fn all_finite<S: Scalar>(x: &[S]) -> bool {
 }
 
 /// The error of a topology whose index tables do not fit the model's
-/// vectors at body `i` (never one built by `Topology::try_new`; a
-/// [`Topology`] assembled by hand can be).
+/// vectors at body `i`: the early exit of a range tested in safe code,
+/// never taken (every [`Topology`] is built by `Topology::try_new`).
 #[cold]
 pub(crate) fn inconsistent_topology(i: usize) -> Error {
     Error::InvalidModel {

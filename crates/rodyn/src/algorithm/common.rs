@@ -284,9 +284,9 @@ pub(crate) fn pose_step<S: Scalar, const NB: usize, const NQ: usize, const NV: u
 
 /// The ranges of coordinates that support coordinate `k` (`k` included),
 /// from `k` towards the root: `(first, last)` pairs, each one unbroken
-/// stretch of the λ chain (see [`Topology::chain_start_v`]).
+/// stretch of the λ chain (see [`TopologyTables::chain_start_v`]).
 ///
-/// [`Topology::chain_start_v`]: crate::topology::Topology::chain_start_v
+/// [`TopologyTables::chain_start_v`]: crate::topology::TopologyTables::chain_start_v
 #[inline]
 pub(crate) fn supporting_ranges<const NB: usize, const NV: usize>(
     topology: &Topology<NB, NV>,

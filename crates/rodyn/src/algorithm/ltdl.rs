@@ -8,7 +8,7 @@
 //! order of Pinocchio's `cholesky::decompose`, not the row updates of
 //! Table 6.3): `L[k][i]` for every i supporting k is one dot product over
 //! the coordinates that k supports, which follow k in a
-//! [`depth_first`](crate::topology::Topology::depth_first) tree. `L` is
+//! [`depth_first`](crate::topology::TopologyTables::depth_first) tree. `L` is
 //! therefore stored transposed, `ltdl[i][k] = L[k][i]`, so that these dot
 //! products and the solves run along rows.
 //!
@@ -140,7 +140,7 @@ fn row_by_combination<S: Scalar, const NV: usize>(
 /// diagonal and upper triangle of `ltdl`; the lower one is working storage
 /// (on long chains it holds `L` untransposed). Entries of `L` that the
 /// sparsity makes zero are not written either, except in a tree that is
-/// not [`depth_first`](crate::topology::Topology::depth_first), where the
+/// not [`depth_first`](crate::topology::TopologyTables::depth_first), where the
 /// factorisation and the solves read them.
 ///
 /// Pivots are formed and tested leaves to root, so the coordinate reported

@@ -56,7 +56,7 @@ pub(super) fn mirror_lower<S: Scalar, const NV: usize>(m: &mut [[S; NV]; NV]) {
 
 /// Zeroes the entries below the diagonal that no column reaches: those
 /// left of each coordinate's unbroken stretch of supporting coordinates
-/// (see [`Topology::chain_start_v`]) that do not support it. A chain has
+/// (see [`TopologyTables::chain_start_v`](crate::topology::TopologyTables::chain_start_v)) that do not support it. A chain has
 /// none. With `mirrored`, their mirrors above the diagonal too. The local
 /// pass on a tree with contiguous subtrees writes its zeros itself
 /// ([`backward_body`]).
