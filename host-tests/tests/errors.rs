@@ -268,148 +268,22 @@ fn a_tree_built_at_run_time_reports_its_inconsistency() {
     );
 }
 
-/// A topology assembled by hand (its fields are public) whose index tables
-/// do not fit the model: ABA reports it instead of indexing past the ends
-/// (the algorithms keep no panic path for it; `Topology::try_new` never
-/// builds one).
+/// A model's topology is always one `Topology::try_new` laid out (its
+/// tables cannot be written: a doctest on `Topology` fails to compile),
+/// and `Model::from_parts` refuses one laid out for another `NQ`: the
+/// algorithms index the model's vectors by these tables without checks.
 #[test]
-fn hand_built_inconsistent_topology_is_an_error_not_a_panic() {
+#[should_panic(expected = "do not add up to the model's NQ")]
+fn from_parts_refuses_a_topology_for_another_nq() {
     use rodyn::topology::Topology;
-    let good = arm(1.0, 0.01);
-    let mut topology = *good.topology();
-    // The second joint's velocity coordinate past the end of v.
-    topology.idx_v[1] = 2;
-    let model: Model<f64, 2, 2, 2> = Model::from_parts(
+    let topology = Topology::<2, 2>::new([None, Some(0)], [1; 2], [1; 2], 2);
+    let _: Model<f64, 2, 3, 2> = Model::from_parts(
         topology,
         [Joint::revolute(Axis::Z), Joint::revolute(Axis::Z)],
-        [
-            Transform::IDENTITY,
-            Transform::from_translation(Vec3::new(0.5, 0.0, 0.0)),
-        ],
-        [
-            Inertia::new(
-                1.0,
-                Vec3::new(0.25, 0.0, 0.0),
-                Sym3::diagonal(0.01, 0.02, 0.02),
-            ),
-            Inertia::new(1.0, Vec3::ZERO, Sym3::diagonal(0.01, 0.01, 0.01)),
-        ],
+        [Transform::IDENTITY; 2],
+        [Inertia::point_mass(1.0, Vec3::new(0.5, 0.0, 0.0)); 2],
         Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
     );
-    let mut data = Data::new();
-    let err = Aba::forward_dynamics(&model, &mut data, &[0.1, 0.2], &[0.0; 2], &[0.0; 2], None)
-        .unwrap_err();
-    assert!(
-        matches!(
-            err,
-            Error::InvalidModel {
-                body: 1,
-                problem: ModelProblem::InconsistentTopology
-            }
-        ),
-        "{err:?}"
-    );
-    // The second joint's configuration coordinate past the end of q: the
-    // model's own checks report it, and nothing panics.
-    let mut topology: Topology<2, 2> = *good.topology();
-    topology.idx_q[1] = 2;
-    let model: Model<f64, 2, 2, 2> = Model::from_parts(
-        topology,
-        [Joint::revolute(Axis::Z), Joint::revolute(Axis::Z)],
-        [Transform::IDENTITY, Transform::IDENTITY],
-        [
-            Inertia::new(
-                1.0,
-                Vec3::new(0.25, 0.0, 0.0),
-                Sym3::diagonal(0.01, 0.02, 0.02),
-            ),
-            Inertia::new(1.0, Vec3::ZERO, Sym3::diagonal(0.01, 0.01, 0.01)),
-        ],
-        Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
-    );
-    let mut q = [0.1, 0.2];
-    assert!(matches!(
-        model.normalize(&mut q),
-        Err(Error::InvalidModel {
-            body: 1,
-            problem: ModelProblem::InconsistentTopology
-        })
-    ));
-    assert_eq!(model.neutral_configuration(), [0.0, 0.0]);
-    assert!(model.integrate(&q, &[1.0, 1.0], 0.1).is_ok());
-    // A parent after its child.
-    let mut topology: Topology<2, 2> = *good.topology();
-    topology.parents[0] = Some(1);
-    topology.parents[1] = None;
-    let model: Model<f64, 2, 2, 2> = Model::from_parts(
-        topology,
-        [Joint::revolute(Axis::Z), Joint::revolute(Axis::Z)],
-        [Transform::IDENTITY, Transform::IDENTITY],
-        [
-            Inertia::new(
-                1.0,
-                Vec3::new(0.25, 0.0, 0.0),
-                Sym3::diagonal(0.01, 0.02, 0.02),
-            ),
-            Inertia::new(1.0, Vec3::ZERO, Sym3::diagonal(0.01, 0.01, 0.01)),
-        ],
-        Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
-    );
-    let err = Aba::forward_dynamics(&model, &mut data, &[0.1, 0.2], &[0.0; 2], &[0.0; 2], None)
-        .unwrap_err();
-    assert!(
-        matches!(
-            err,
-            Error::InvalidModel {
-                body: 0,
-                problem: ModelProblem::InconsistentTopology
-            }
-        ),
-        "{err:?}"
-    );
-}
-
-/// CRBA's local pass on hand-built topologies whose subtree ranges or
-/// parents do not fit the model: it skips what does not fit instead of
-/// indexing past the ends (a joint's own coordinates past the end of v
-/// are still indexed: the firmware's cost table kept that check).
-#[test]
-fn crba_on_a_hand_built_inconsistent_topology_does_not_panic() {
-    use rodyn::topology::Topology;
-    let good = arm(1.0, 0.01);
-    let inertias = [
-        Inertia::new(
-            1.0,
-            Vec3::new(0.25, 0.0, 0.0),
-            Sym3::diagonal(0.01, 0.02, 0.02),
-        ),
-        Inertia::new(1.0, Vec3::ZERO, Sym3::diagonal(0.01, 0.01, 0.01)),
-    ];
-    let edits: [fn(&mut Topology<2, 2>); 3] = [
-        // A subtree's coordinates past the end of v.
-        |t| t.subtree_end_v[0] = 5,
-        // A subtree that ends before it starts.
-        |t| t.subtree_end_v[1] = 0,
-        // A body its own parent.
-        |t| t.parents[1] = Some(1),
-    ];
-    for edit in edits {
-        let mut topology = *good.topology();
-        edit(&mut topology);
-        let model: Model<f64, 2, 2, 2> = Model::from_parts(
-            topology,
-            [Joint::revolute(Axis::Z), Joint::revolute(Axis::Z)],
-            [
-                Transform::IDENTITY,
-                Transform::from_translation(Vec3::new(0.5, 0.0, 0.0)),
-            ],
-            inertias,
-            Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
-        );
-        let mut data = Data::new();
-        // Whatever it returns, it returns.
-        let _ = crba(&model, &mut data, &[0.1, 0.2]);
-    }
 }
 
 /// The built-in joints read their coordinates from the front of the

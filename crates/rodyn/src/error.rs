@@ -66,9 +66,11 @@ pub enum ModelProblem {
     /// the scalar type, so the algorithms could not use them.
     Overflow,
     /// The topology's index tables do not fit the model's vectors (a
-    /// parent after its child, coordinates past the end): a
-    /// [`Topology`](crate::topology::Topology) assembled by hand rather
-    /// than by [`Topology::try_new`](crate::topology::Topology::try_new).
+    /// parent after its child, coordinates past the end). Never reported
+    /// since every [`Topology`](crate::topology::Topology) comes from
+    /// [`Topology::try_new`](crate::topology::Topology::try_new) and its
+    /// tables cannot be written; kept for the model's checks that test
+    /// the ranges in safe code and for compatibility.
     InconsistentTopology,
 }
 

@@ -137,6 +137,10 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
 {
     /// Assembles a model from a checked topology (used by the per-geometry
     /// `const` constructors).
+    ///
+    /// # Panics
+    /// When the topology was laid out for another `NQ` than the model's; in
+    /// a `const` this is a compile error.
     #[must_use]
     pub const fn from_parts(
         topology: Topology<NB, NV>,
@@ -145,6 +149,12 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
         inertias: [G::Inertia<S>; NB],
         gravity: G::Motion<S>,
     ) -> Self {
+        // The algorithms index `q: &[S; NQ]` by the topology's ranges
+        // (`Model::configuration_range`).
+        assert!(
+            topology.tables().nq_total == NQ,
+            "rodyn model: the topology's configuration coordinates do not add up to the model's NQ"
+        );
         Self {
             topology,
             joints,
@@ -179,7 +189,20 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
     /// Parent of body `i` (`None`: the world).
     #[must_use]
     pub const fn parent(&self, i: usize) -> Option<usize> {
-        self.topology.parents[i]
+        self.topology.parent(i)
+    }
+
+    /// Body `i`'s first configuration coordinate and their count, with
+    /// `idx_q[i] + nq[i] <= NQ` known to the optimiser.
+    #[must_use]
+    #[inline(always)]
+    pub const fn configuration_range(&self, i: usize) -> (usize, usize) {
+        let (iq, nq) = self.topology.configuration_range(i);
+        // SAFETY: every constructor makes the topology's `nq_total` equal
+        // `NQ` (`new` lays it out for `NQ`, `from_parts` refuses another,
+        // `cast` copies it) and the model never replaces its topology.
+        unsafe { core::hint::assert_unchecked(self.topology.tables().nq_total == NQ) };
+        (iq, nq)
     }
     /// The joint that moves body `i`.
     #[must_use]
@@ -592,8 +615,8 @@ fn all_finite<S: Scalar>(x: &[S]) -> bool {
 }
 
 /// The error of a topology whose index tables do not fit the model's
-/// vectors at body `i` (never one built by `Topology::try_new`; a
-/// [`Topology`] assembled by hand can be).
+/// vectors at body `i`: the early exit of a range tested in safe code,
+/// never taken (every [`Topology`] is built by `Topology::try_new`).
 #[cold]
 pub(crate) fn inconsistent_topology(i: usize) -> Error {
     Error::InvalidModel {

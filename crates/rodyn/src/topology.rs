@@ -80,9 +80,30 @@ impl core::fmt::Display for TopologyError {
 #[cfg(feature = "std")]
 impl std::error::Error for TopologyError {}
 
-/// Where each body's coordinates start, and the tree over velocity coordinates.
+/// A checked tree: where each body's coordinates start, and the tree over
+/// velocity coordinates.
+///
+/// Built only by [`Topology::try_new`] (or [`Topology::new`]), and never
+/// changed afterwards: its tables are read through
+/// [`Deref`](core::ops::Deref) to [`TopologyTables`], which gives no way
+/// to write them. Every `Topology` therefore keeps what `try_new` checked,
+/// and the index accessors ([`Self::velocity_range`], [`Self::parent`], ...)
+/// tell the optimiser so; the algorithms then index the model's vectors
+/// without bounds checks that it could not otherwise remove.
+///
+/// ```compile_fail
+/// use rodyn::topology::Topology;
+/// let mut t = Topology::<2, 2>::new([None, Some(0)], [1; 2], [1; 2], 2);
+/// t.idx_v[1] = 5; // the tables cannot be written
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Topology<const NB: usize, const NV: usize> {
+    tables: TopologyTables<NB, NV>,
+}
+
+/// The index tables of a [`Topology`], read through it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct TopologyTables<const NB: usize, const NV: usize> {
     /// Parent body of each body; `None` for a body attached to the world.
     pub parents: [Option<usize>; NB],
     /// First configuration coordinate of each body's joint.
@@ -127,6 +148,16 @@ pub struct Topology<const NB: usize, const NV: usize> {
     /// for a single joint, `(n - 1) / 2` for a chain of n links. CRBA
     /// chooses its backward pass by it.
     pub mean_support_depth: usize,
+    /// The configuration coordinates of all joints (the model's `NQ`).
+    pub nq_total: usize,
+}
+
+impl<const NB: usize, const NV: usize> core::ops::Deref for Topology<NB, NV> {
+    type Target = TopologyTables<NB, NV>;
+    #[inline(always)]
+    fn deref(&self) -> &TopologyTables<NB, NV> {
+        &self.tables
+    }
 }
 
 impl<const NB: usize, const NV: usize> Topology<NB, NV> {
@@ -180,6 +211,14 @@ impl<const NB: usize, const NV: usize> Topology<NB, NV> {
             }
             if nv[i] > crate::joint::MAX_JOINT_NV {
                 return Err(TopologyError::TooManyJointDofs { body: i });
+            }
+            // Checked before the sum, which must not wrap: `idx_q[i] +
+            // nq[i] <= nq_total` is what the accessors promise.
+            if nq[i] > nq_total - q {
+                return Err(TopologyError::ConfigurationCount {
+                    declared: nq_total,
+                    found: configuration_count(&nq),
+                });
             }
             idx_q[i] = q;
             idx_v[i] = v;
@@ -286,23 +325,162 @@ impl<const NB: usize, const NV: usize> Topology<NB, NV> {
             i += 1;
         }
         Ok(Self {
-            parents,
-            idx_q,
-            nq,
-            idx_v,
-            nv,
-            lambda_v,
-            body_of_v,
-            chain_start_v,
-            last_supported_v,
-            depth_first,
-            subtree_end_v,
-            subtrees_contiguous,
-            mean_support_depth: match depth_sum.checked_div(NV) {
-                Some(mean) => mean,
-                None => 0,
+            tables: TopologyTables {
+                parents,
+                idx_q,
+                nq,
+                idx_v,
+                nv,
+                lambda_v,
+                body_of_v,
+                chain_start_v,
+                last_supported_v,
+                depth_first,
+                subtree_end_v,
+                subtrees_contiguous,
+                mean_support_depth: match depth_sum.checked_div(NV) {
+                    Some(mean) => mean,
+                    None => 0,
+                },
+                nq_total,
             },
         })
+    }
+
+    /// The tables, for `const` code (which cannot go through `Deref`).
+    #[must_use]
+    pub const fn tables(&self) -> &TopologyTables<NB, NV> {
+        &self.tables
+    }
+
+    /// Body `i`'s first velocity coordinate and their count, `(idx_v[i],
+    /// nv[i])`, with `idx_v[i] + nv[i] <= NV` known to the optimiser.
+    #[must_use]
+    #[inline(always)]
+    pub const fn velocity_range(&self, i: usize) -> (usize, usize) {
+        let (iv, nv) = (self.tables.idx_v[i], self.tables.nv[i]);
+        // SAFETY: `try_new`, the only constructor, stops with an error
+        // unless `v + nv[i] <= NV` for every joint, `idx_v[i] = v` the sum
+        // of the joints before it (no wrap); the tables cannot be changed
+        // afterwards. Tested in `every_small_tree_keeps_its_promises`.
+        unsafe {
+            core::hint::assert_unchecked(iv <= NV && nv <= NV - iv && iv.unchecked_add(nv) <= NV);
+        }
+        (iv, nv)
+    }
+
+    /// Body `i`'s velocity coordinates, `idx_v[i]..idx_v[i] + nv[i]`, with
+    /// the end known to the optimiser to be at most `NV`.
+    #[must_use]
+    #[inline(always)]
+    pub const fn velocity_coordinates(&self, i: usize) -> core::ops::Range<usize> {
+        let (iv, nv) = self.velocity_range(i);
+        let end = iv + nv;
+        // SAFETY: as in `velocity_range`, of which this is the sum.
+        unsafe { core::hint::assert_unchecked(iv <= end && end <= NV) };
+        iv..end
+    }
+
+    /// [`Self::velocity_range`], with `nv[i] <= MAX_JOINT_NV` also known to
+    /// the optimiser, for code that keeps a joint's rows in buffers of
+    /// that length. (Not in `velocity_range` itself: the bound lets loops
+    /// over a joint's coordinates unroll, which cost some callers
+    /// instructions on the Cortex-M4.)
+    #[must_use]
+    #[inline(always)]
+    pub const fn joint_velocity_range(&self, i: usize) -> (usize, usize) {
+        let (iv, nv) = self.velocity_range(i);
+        // SAFETY: `try_new` refuses a joint with more than `MAX_JOINT_NV`
+        // velocity coordinates; the tables cannot be changed afterwards.
+        unsafe { core::hint::assert_unchecked(nv <= crate::joint::MAX_JOINT_NV) };
+        (iv, nv)
+    }
+
+    /// Body `i`'s first configuration coordinate and their count,
+    /// `(idx_q[i], nq[i])`, with `idx_q[i] + nq[i] <= nq_total` known to
+    /// the optimiser.
+    #[must_use]
+    #[inline(always)]
+    pub const fn configuration_range(&self, i: usize) -> (usize, usize) {
+        let (iq, nq) = (self.tables.idx_q[i], self.tables.nq[i]);
+        // SAFETY: `try_new` refuses a joint with `nq[i] > nq_total - q`,
+        // `q = idx_q[i]` the sum of the joints before it, and `q` never
+        // exceeds `nq_total`; the tables cannot be changed afterwards.
+        unsafe {
+            core::hint::assert_unchecked(
+                iq <= self.tables.nq_total && nq <= self.tables.nq_total - iq,
+            );
+        }
+        (iq, nq)
+    }
+
+    /// Featherstone's λ of velocity coordinate `k`, known to the optimiser
+    /// to come before `k`.
+    #[must_use]
+    #[inline(always)]
+    pub const fn lambda(&self, k: usize) -> Option<usize> {
+        let lambda = self.tables.lambda_v[k];
+        if let Some(l) = lambda {
+            // SAFETY: `try_new` sets `lambda_v[k]` to `None`, to `k - 1`, or
+            // to the last coordinate of a body before k's (all smaller than
+            // k); the tables cannot be changed afterwards.
+            unsafe { core::hint::assert_unchecked(l < k) };
+        }
+        lambda
+    }
+
+    /// Where the unbroken stretch of λ ending at coordinate `k` starts
+    /// (`chain_start_v[k]`), known to the optimiser to be at most `k`.
+    #[must_use]
+    #[inline(always)]
+    pub const fn chain_start(&self, k: usize) -> usize {
+        let start = self.tables.chain_start_v[k];
+        // SAFETY: `try_new` sets `chain_start_v[k]` to `k` or to the chain
+        // start of `lambda_v[k] = k - 1`, by induction at most `k`; the
+        // tables cannot be changed afterwards.
+        unsafe { core::hint::assert_unchecked(start <= k) };
+        start
+    }
+
+    /// The last coordinate that coordinate `k` supports
+    /// (`last_supported_v[k]`), known to the optimiser to lie in `k..NV`.
+    #[must_use]
+    #[inline(always)]
+    pub const fn last_supported(&self, k: usize) -> usize {
+        let last = self.tables.last_supported_v[k];
+        // SAFETY: `try_new` starts every entry at least at its own
+        // coordinate and raises it only to coordinates (below `NV`); the
+        // tables cannot be changed afterwards.
+        unsafe { core::hint::assert_unchecked(k <= last && last < NV) };
+        last
+    }
+
+    /// One past the last coordinate of body `i`'s subtree
+    /// (`subtree_end_v[i]`), known to the optimiser to lie in
+    /// `idx_v[i] + nv[i] ..= NV`.
+    #[must_use]
+    #[inline(always)]
+    pub const fn subtree_end(&self, i: usize) -> usize {
+        let end = self.tables.subtree_end_v[i];
+        let (iv, nv) = self.velocity_range(i);
+        // SAFETY: `try_new` starts `subtree_end_v[i]` at `idx_v[i] + nv[i]`
+        // and raises it only to children's ends (at most `NV`); the tables
+        // cannot be changed afterwards.
+        unsafe { core::hint::assert_unchecked(iv + nv <= end && end <= NV) };
+        end
+    }
+
+    /// Body `i`'s parent, known to the optimiser to come before it.
+    #[must_use]
+    #[inline(always)]
+    pub const fn parent(&self, i: usize) -> Option<usize> {
+        let parent = self.tables.parents[i];
+        if let Some(p) = parent {
+            // SAFETY: `try_new` refuses a parent that is not smaller than
+            // its child; the tables cannot be changed afterwards.
+            unsafe { core::hint::assert_unchecked(p < i) };
+        }
+        parent
     }
 
     /// `true` when body `ancestor` is `body` or supports it.
@@ -321,6 +499,17 @@ impl<const NB: usize, const NV: usize> Topology<NB, NV> {
         }
         false
     }
+}
+
+/// The sum of the joints' configuration coordinates, for error reports
+/// (saturating: a count near `usize::MAX` must not wrap).
+const fn configuration_count<const NB: usize>(nq: &[usize; NB]) -> usize {
+    let (mut sum, mut i) = (0usize, 0);
+    while i < NB {
+        sum = sum.saturating_add(nq[i]);
+        i += 1;
+    }
+    sum
 }
 
 /// The sum of the joints' velocity coordinates, for error reports.
@@ -343,17 +532,35 @@ mod tests {
     /// parents precede children, each joint's coordinates lie within
     /// `q` and `v`, and no joint has more than `MAX_JOINT_NV` of them.
     fn assert_fits<const NB: usize, const NV: usize>(t: &Topology<NB, NV>, nq_total: usize) {
+        assert_eq!(t.nq_total, nq_total);
         for i in 0..NB {
             if let Some(p) = t.parents[i] {
                 assert!(p < i, "body {i}: parent {p}");
             }
-            assert!(t.idx_q[i] + t.nq[i] <= nq_total, "body {i}: q");
-            assert!(t.idx_v[i] + t.nv[i] <= NV, "body {i}: v");
+            // What the accessors state to the optimiser, without wrapping.
+            assert!(
+                t.idx_q[i]
+                    .checked_add(t.nq[i])
+                    .is_some_and(|end| end <= nq_total),
+                "body {i}: q"
+            );
+            assert!(
+                t.idx_v[i].checked_add(t.nv[i]).is_some_and(|end| end <= NV),
+                "body {i}: v"
+            );
             assert!(t.nv[i] <= MAX_JOINT_NV, "body {i}: nv");
+        }
+        for i in 0..NB {
+            let end = t.subtree_end_v[i];
+            assert!(
+                t.idx_v[i] + t.nv[i] <= end && end <= NV,
+                "body {i}: subtree"
+            );
         }
         for k in 0..NV {
             assert!(t.body_of_v[k] < NB);
             assert!(t.chain_start_v[k] <= k);
+            assert!(k <= t.last_supported_v[k] && t.last_supported_v[k] < NV);
             if let Some(l) = t.lambda_v[k] {
                 assert!(l < k);
             }
@@ -387,6 +594,59 @@ mod tests {
         ));
         assert!(Topology::<2, 2>::try_new([None, Some(0)], [1; 2], [1; 2], 3).is_err());
         assert!(Topology::<2, 3>::try_new([None, Some(0)], [1; 2], [1; 2], 2).is_err());
+    }
+
+    /// Every table `try_new` accepts keeps the promises of
+    /// `velocity_range`, `configuration_range` and `parent` (which tell
+    /// the optimiser so, in `unsafe`): all trees of three bodies, with
+    /// parents before, at and after each body, and coordinate counts
+    /// around the limits, including counts that would wrap a sum.
+    #[test]
+    fn every_small_tree_keeps_its_promises() {
+        fn sweep<const NV: usize>() -> usize {
+            let parent_choices = [None, Some(0), Some(1), Some(2)];
+            let nv_choices = [0, 1, 6, 7];
+            let nq_choices = [0, 1, 7, usize::MAX - 1];
+            let totals = [0, 2, 8, usize::MAX];
+            let mut accepted = 0;
+            for p in 0..64 {
+                let parents = [0, 1, 2].map(|k| parent_choices[(p >> (2 * k)) & 3]);
+                for v in 0..64 {
+                    let nv = [0, 1, 2].map(|k| nv_choices[(v >> (2 * k)) & 3]);
+                    for q in 0..64 {
+                        let nq = [0, 1, 2].map(|k| nq_choices[(q >> (2 * k)) & 3]);
+                        for nq_total in totals {
+                            if let Ok(t) = Topology::<3, NV>::try_new(parents, nq, nv, nq_total) {
+                                assert_fits(&t, nq_total);
+                                for i in 0..3 {
+                                    assert_eq!(t.velocity_range(i), (t.idx_v[i], t.nv[i]));
+                                    assert_eq!(t.joint_velocity_range(i), t.velocity_range(i));
+                                    assert_eq!(
+                                        t.velocity_coordinates(i),
+                                        t.idx_v[i]..t.idx_v[i] + t.nv[i]
+                                    );
+                                    assert_eq!(t.configuration_range(i), (t.idx_q[i], t.nq[i]));
+                                    assert_eq!(t.parent(i), t.parents[i]);
+                                    assert_eq!(t.subtree_end(i), t.subtree_end_v[i]);
+                                }
+                                for k in 0..NV {
+                                    assert_eq!(t.lambda(k), t.lambda_v[k]);
+                                    assert_eq!(t.chain_start(k), t.chain_start_v[k]);
+                                    assert_eq!(t.last_supported(k), t.last_supported_v[k]);
+                                }
+                                accepted += 1;
+                            }
+                        }
+                    }
+                }
+            }
+            accepted
+        }
+        // Each size accepts some trees (the sweep is not vacuous).
+        assert!(sweep::<0>() > 0);
+        assert!(sweep::<2>() > 0);
+        assert!(sweep::<7>() > 0);
+        assert!(sweep::<13>() > 0);
     }
 
     #[test]

@@ -21,7 +21,7 @@ use crate::algorithm::common::{
 use crate::data::Data;
 use crate::error::{Error, Quantity, Result};
 use crate::joint::{JointModel, MAX_JOINT_NV};
-use crate::model::{check_finite, check_result, inconsistent_topology, Model};
+use crate::model::{check_finite, check_result, Model};
 use crate::space::{
     ArticulatedInertia, BodyInertia, MotionVector, RigidTransform, Space, VectorOps,
 };
@@ -126,12 +126,7 @@ fn velocity_and_bias_pass<
     for i in 0..NB {
         data.li_m_i[i] = body_transform_with(model, i, q, sin_cos.as_ref());
         let v_parent = match model.parent(i) {
-            Some(p) => {
-                // A valid topology's parents are bodies (`p < i`); the
-                // backward pass reports one that is not.
-                let Some(v_p) = data.v.get(p) else { return };
-                data.li_m_i[i].act_inv_motion(v_p)
-            }
+            Some(p) => data.li_m_i[i].act_inv_motion(&data.v[p]),
             None => G::Motion::<S>::ZERO,
         };
         let joint = model.joint(i);
@@ -168,17 +163,12 @@ pub(crate) fn backward_pass<
     let t = model.topology();
     let mut st_pa = [S::ZERO; MAX_JOINT_NV];
     for i in (0..NB).rev() {
-        let (iv, nv) = (t.idx_v[i], t.nv[i]);
+        let (iv, nv) = t.joint_velocity_range(i);
         let joint = model.joint(i);
         let (ancestors, rest) = data.ia.split_at_mut(i);
         let i_a = &mut rest[0];
         let mut p_a = data.pa[i];
         if nv == 1 {
-            // A valid topology has `iv < NV`; tested once here, it puts every
-            // `[iv]` below in range.
-            if iv >= NV {
-                return Err(inconsistent_topology(i));
-            }
             // The common case, without the loops over the joint's columns.
             // On hosts into a local first: the column is read at once, and
             // a copy read back from `data` waits on store-to-load
@@ -195,12 +185,8 @@ pub(crate) fn backward_pass<
             let u = tau[iv] - s_t[0];
             data.d_inv[iv][0] = d_inv;
             data.u[iv] = u;
-            if let Some(p) = t.parents[i] {
-                // Parents precede their children (`Topology::try_new`), so
-                // `p < i`: within `ancestors`, and then within `data.pa`.
-                let Some(ancestor) = ancestors.get_mut(p) else {
-                    return Err(inconsistent_topology(i));
-                };
+            if let Some(p) = t.parent(i) {
+                let ancestor = &mut ancestors[p];
                 // Without armature, Iᵃ S = 0: a coordinate-axis revolute
                 // joint's row and column of Iᵃ are zero and skipped.
                 let axis = if model.armature()[iv] == S::ZERO {
@@ -218,33 +204,27 @@ pub(crate) fn backward_pass<
         }
         joint.articulated_columns(i_a, &mut data.u_cols[iv..iv + nv]);
         joint.project_force(&p_a, &mut st_pa[..nv]);
+        // The joint's stretch of each vector, sliced once: `k < nv` then
+        // indexes it without a check (`iv + k` alone the optimiser cannot
+        // bound).
+        let (u, tau_i) = (&mut data.u[iv..iv + nv], &tau[iv..iv + nv]);
         for k in 0..nv {
-            data.u[iv + k] = tau[iv + k] - st_pa[k];
+            u[k] = tau_i[k] - st_pa[k];
         }
         if nv > 1 {
-            invert_joint_d(
-                i,
-                joint,
-                &data.u_cols[iv..iv + nv],
-                &model.armature()[iv..iv + nv],
-                i_a.trace(),
-                &mut data.d_inv[iv..iv + nv],
-            )?;
+            invert_joint_d(model, i, &data.u_cols, i_a.trace(), &mut data.d_inv)?;
         }
-        if let Some(p) = t.parents[i] {
+        if let Some(p) = t.parent(i) {
+            let (u_cols, d_inv) = (&data.u_cols[iv..iv + nv], &data.d_inv[iv..iv + nv]);
             for k in 0..nv {
                 let mut dinv_u = S::ZERO;
                 for l in 0..nv {
-                    dinv_u += data.d_inv[iv + k][l] * data.u[iv + l];
+                    dinv_u += d_inv[k][l] * u[l];
                 }
-                p_a += data.u_cols[iv + k] * dinv_u;
-                i_a.sub_outer(&data.u_cols[iv + k], data.d_inv[iv + k][k]);
+                p_a += u_cols[k] * dinv_u;
+                i_a.sub_outer(&u_cols[k], d_inv[k][k]);
                 for l in 0..k {
-                    i_a.sub_outer_sym(
-                        &data.u_cols[iv + k],
-                        &data.u_cols[iv + l],
-                        data.d_inv[iv + k][l],
-                    );
+                    i_a.sub_outer_sym(&u_cols[k], &u_cols[l], d_inv[k][l]);
                 }
             }
             p_a += i_a.mul_motion(&data.c[i]);
@@ -295,35 +275,37 @@ pub(crate) fn forward_acceleration_pass<
     let minus_g = -*model.gravity();
     let mut ut_a = [S::ZERO; MAX_JOINT_NV];
     for i in 0..NB {
-        let (iv, nv) = (t.idx_v[i], t.nv[i]);
-        // A valid topology's parents are bodies (`p < i`), and its
-        // coordinates in range; `backward_pass` reported one that is not.
-        let a_parent = match t.parents[i] {
-            Some(p) => {
-                let Some(a_p) = data.a_gf.get(p) else { return };
-                *a_p
-            }
+        let (iv, nv) = t.joint_velocity_range(i);
+        let a_parent = match t.parent(i) {
+            Some(p) => data.a_gf[p],
             None => minus_g,
         };
         let a_prime = data.li_m_i[i].act_inv_motion(&a_parent) + data.c[i];
         let joint = model.joint(i);
-        if nv == 1 && iv < NV {
+        if nv == 1 {
             let ddq = data.d_inv[iv][0] * (data.u[iv] - a_prime.dot(&data.u_cols[iv]));
             data.ddq[iv] = ddq;
             data.a_gf[i] = joint.add_motion(&a_prime, &[ddq]);
             continue;
         }
+        // Sliced once, as in `backward_pass`.
+        let (u, u_cols, d_inv) = (
+            &data.u[iv..iv + nv],
+            &data.u_cols[iv..iv + nv],
+            &data.d_inv[iv..iv + nv],
+        );
         for k in 0..nv {
-            ut_a[k] = data.u[iv + k] - a_prime.dot(&data.u_cols[iv + k]);
+            ut_a[k] = u[k] - a_prime.dot(&u_cols[k]);
         }
+        let ddq = &mut data.ddq[iv..iv + nv];
         for k in 0..nv {
-            let mut ddq = S::ZERO;
+            let mut sum = S::ZERO;
             for l in 0..nv {
-                ddq += data.d_inv[iv + k][l] * ut_a[l];
+                sum += d_inv[k][l] * ut_a[l];
             }
-            data.ddq[iv + k] = ddq;
+            ddq[k] = sum;
         }
-        data.a_gf[i] = a_prime + joint.motion(&data.ddq[iv..iv + nv]);
+        data.a_gf[i] = a_prime + joint.motion(ddq);
     }
 }
 
@@ -353,27 +335,37 @@ fn check_pivot<S: Scalar>(joint: usize, d: S, scale: S) -> Result<()> {
 /// each division doubled the latency). `D` is padded with the identity to
 /// `MAX_JOINT_NV` so that every loop has a constant trip count and the
 /// optimiser unrolls it (on a host; at opt-level "s" they stay loops).
-fn invert_joint_d<S: Scalar, G: Space, J: JointModel<S, G>>(
+// Out of line: inlined, its 6 x 6 work arrays grew the stack of every
+// caller of ABA, also of models without a multi-coordinate joint.
+#[inline(never)]
+fn invert_joint_d<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
+    model: &Model<S, NB, NQ, NV, G>,
     i: usize,
-    joint: &J,
-    u_cols: &[G::Force<S>],
-    armature: &[S],
+    u_cols: &[G::Force<S>; NV],
     scale: S,
-    d_inv: &mut [[S; MAX_JOINT_NV]],
+    d_inv: &mut [[S; MAX_JOINT_NV]; NV],
 ) -> Result<()> {
     const N: usize = MAX_JOINT_NV;
-    let n = u_cols.len();
+    // Never taken (the caller passes a body of its loop), but out of line
+    // the optimiser does not know `i < NB`.
+    if i >= NB {
+        return Ok(());
+    }
+    let (iv, n) = model.topology().joint_velocity_range(i);
+    let joint = model.joint(i);
+    let (u_cols, armature) = (&u_cols[iv..iv + n], &model.armature()[iv..iv + n]);
+    let d_inv = &mut d_inv[iv..iv + n];
     let mut l = [[S::ZERO; N]; N];
     for k in n..N {
         l[k][k] = S::ONE;
     }
     let mut column = [S::ZERO; N];
-    for (k, (u, a)) in u_cols.iter().zip(armature).enumerate() {
-        joint.project_force(u, &mut column[..n]);
+    for k in 0..n {
+        joint.project_force(&u_cols[k], &mut column[..n]);
         for r in 0..n {
             l[r][k] = column[r];
         }
-        l[k][k] += *a;
+        l[k][k] += armature[k];
     }
     // In place: below the diagonal l becomes L Δ (column k of L times the
     // pivot Δₖ), and `inv_d` holds 1 / Δₖ.
@@ -409,7 +401,12 @@ fn invert_joint_d<S: Scalar, G: Space, J: JointModel<S, G>>(
         }
     }
     // D⁻¹[r][c] = Σₘ X[m][r] X[m][c] / Δₘ over m ≥ r ≥ c.
-    for r in 0..n {
+    // Over `0..N` with an exit at `n`, so that `r < N` bounds the columns
+    // (`n <= N` alone the optimiser does not carry this far).
+    for r in 0..N {
+        if r >= n {
+            break;
+        }
         for c in 0..=r {
             let mut s = S::ZERO;
             for m in r..N {

@@ -249,9 +249,9 @@ fn map_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Fra
     let t = model.topology();
     for i in 0..NB {
         let joint = model.joint(i);
-        let iv = t.idx_v[i];
-        for k in 0..t.nv[i] {
-            cd.ag[iv + k] = G::centroidal_column(&data.o_m_i[i], joint, k, &cd.o_ic[i], &com);
+        let (iv, nv) = t.velocity_range(i);
+        for (k, column) in cd.ag[iv..iv + nv].iter_mut().enumerate() {
+            *column = G::centroidal_column(&data.o_m_i[i], joint, k, &cd.o_ic[i], &com);
         }
     }
 }

@@ -135,12 +135,10 @@ pub(crate) fn joint_configuration<
     i: usize,
     q: &'q [S; NQ],
 ) -> &'q [S] {
-    let t = model.topology();
-    // A valid topology keeps `idx_q[i] + nq[i] <= NQ` (`Topology::try_new`
-    // lays it out); the clamp, which then changes nothing, lets the
-    // compiler see the start in range, and the joints check their length
-    // (`first_chunk`), so no end is cut here.
-    &q[t.idx_q[i].min(NQ)..]
+    // The start is in range (`Model::configuration_range`); the joints
+    // check their length (`first_chunk`), so no end is cut here.
+    let (iq, _) = model.configuration_range(i);
+    &q[iq..]
 }
 
 /// Body `i`'s joint rates: `v` (which holds every joint's rates, or
@@ -158,9 +156,8 @@ pub(crate) fn joint_rates<
     i: usize,
     v: &'v [S; NV],
 ) -> &'v [S] {
-    let t = model.topology();
-    // Clamped as in `joint_configuration`.
-    &v[t.idx_v[i].min(NV)..]
+    let (iv, _) = model.topology().velocity_range(i);
+    &v[iv..]
 }
 
 /// Checks `q` (finite, unit quaternions) and `v` (finite).
@@ -287,9 +284,9 @@ pub(crate) fn pose_step<S: Scalar, const NB: usize, const NQ: usize, const NV: u
 
 /// The ranges of coordinates that support coordinate `k` (`k` included),
 /// from `k` towards the root: `(first, last)` pairs, each one unbroken
-/// stretch of the λ chain (see [`Topology::chain_start_v`]).
+/// stretch of the λ chain (see [`TopologyTables::chain_start_v`]).
 ///
-/// [`Topology::chain_start_v`]: crate::topology::Topology::chain_start_v
+/// [`TopologyTables::chain_start_v`]: crate::topology::TopologyTables::chain_start_v
 #[inline]
 pub(crate) fn supporting_ranges<const NB: usize, const NV: usize>(
     topology: &Topology<NB, NV>,
@@ -298,10 +295,14 @@ pub(crate) fn supporting_ranges<const NB: usize, const NV: usize>(
     let mut last = k;
     core::iter::from_fn(move || {
         let end = last?;
-        // Coordinates of a valid topology (`Topology::try_new`); one past
-        // the end ends the ranges.
-        let first = *topology.chain_start_v.get(end)?;
-        last = *topology.lambda_v.get(first)?;
+        // `end` is a coordinate (`Topology::lambda` is below its argument,
+        // which the caller takes in range); a test the optimiser removes
+        // where it knows that.
+        if end >= NV {
+            return None;
+        }
+        let first = topology.chain_start(end);
+        last = topology.lambda(first);
         Some((first, end))
     })
 }

@@ -189,11 +189,15 @@ pub fn contact_inverse_dynamics<
         Poses::FromJointTransforms,
     )?;
     let cdata = &mut iddata.constraint;
-    let rows = cdata.rows;
+    let rows = cdata.rows.min(NC);
     let mut row = 0;
     for contact in contacts {
         let n = contact.rows();
-        baumgarte_less_drift(data, contact, constraint, &mut cdata.lambda[row..row + n])?;
+        // Within `NC` (`check_input`); `get` says so without a panic path.
+        let Some(lambda) = cdata.lambda.get_mut(row..row + n) else {
+            break;
+        };
+        baumgarte_less_drift(data, contact, constraint, lambda)?;
         row += n;
     }
     for r in 0..rows {
@@ -250,10 +254,15 @@ pub fn contact_inverse_dynamics<
     let mut row = 0;
     for (c, contact) in contacts.iter().enumerate() {
         if let Contact::Point { .. } = contact {
-            let l = &cdata.lambda[row..row + 3];
-            let tangential = (l[0] * l[0] + l[1] * l[1]).sqrt();
-            if l[2].to_f64() < 0.0 || tangential.to_f64() > (settings.friction * l[2]).to_f64() {
-                iddata.outside_cone[c] = true;
+            // Within `NC` (`check_input`); `get` says so without a panic path.
+            let Some(&[lx, ly, lz]) = cdata.lambda.get(row..).and_then(|l| l.first_chunk()) else {
+                break;
+            };
+            let tangential = (lx * lx + ly * ly).sqrt();
+            if lz.to_f64() < 0.0 || tangential.to_f64() > (settings.friction * lz).to_f64() {
+                if let Some(outside) = iddata.outside_cone.get_mut(c) {
+                    *outside = true;
+                }
             }
         }
         row += contact.rows();

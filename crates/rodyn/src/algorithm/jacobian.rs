@@ -112,9 +112,9 @@ pub fn joint_jacobians<
     for i in 0..NB {
         o_m_i = pose_step(model, data, i, q, sin_cos.as_ref(), Some(&o_m_i));
         let joint = model.joint(i);
-        let iv = t.idx_v[i];
-        for k in 0..t.nv[i] {
-            jac.j[iv + k] = G::act_subspace_column(&o_m_i, joint, k);
+        let (iv, nv) = t.velocity_range(i);
+        for (k, column) in jac.j[iv..iv + nv].iter_mut().enumerate() {
+            *column = G::act_subspace_column(&o_m_i, joint, k);
         }
     }
     Ok(())
@@ -139,7 +139,7 @@ pub(crate) fn joint_jacobians_from_transforms<
 ) {
     let t = model.topology();
     for i in 0..NB {
-        let o_m_i = match t.parents[i] {
+        let o_m_i = match t.parent(i) {
             Some(p) => G::then_joint(&data.o_m_i[p], &data.li_m_i[i], model.joint(i)),
             None => data.li_m_i[i],
         };
@@ -148,9 +148,9 @@ pub(crate) fn joint_jacobians_from_transforms<
             continue;
         }
         let joint = model.joint(i);
-        let iv = t.idx_v[i];
-        for k in 0..t.nv[i] {
-            jac.j[iv + k] = G::act_subspace_column(&o_m_i, joint, k);
+        let (iv, nv) = t.velocity_range(i);
+        for (k, column) in jac.j[iv..iv + nv].iter_mut().enumerate() {
+            *column = G::act_subspace_column(&o_m_i, joint, k);
         }
     }
 }
@@ -180,7 +180,7 @@ pub fn joint_jacobians_time_variation<
     let t = model.topology();
     for i in 0..NB {
         let o_v = data.o_m_i[i].act_motion(&data.v[i]);
-        for k in t.idx_v[i]..t.idx_v[i] + t.nv[i] {
+        for k in t.velocity_coordinates(i) {
             jac.dj[k] = o_v.cross_motion(&jac.j[k]);
         }
     }
@@ -196,9 +196,9 @@ fn columns_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
     let t = model.topology();
     for i in 0..NB {
         let joint = model.joint(i);
-        let iv = t.idx_v[i];
-        for k in 0..t.nv[i] {
-            jac.j[iv + k] = G::act_subspace_column(&data.o_m_i[i], joint, k);
+        let (iv, nv) = t.velocity_range(i);
+        for (k, column) in jac.j[iv..iv + nv].iter_mut().enumerate() {
+            *column = G::act_subspace_column(&data.o_m_i[i], joint, k);
         }
     }
 }
@@ -221,10 +221,14 @@ fn for_each_supporting_coordinate<
     let mut b = Some(body);
     // Parents come before children, so the walk ends within NB steps.
     while let Some(i) = b {
-        for k in t.idx_v[i]..t.idx_v[i] + t.nv[i] {
+        // `body` is the caller's; the parents are in range.
+        if i >= NB {
+            break;
+        }
+        for k in t.velocity_coordinates(i) {
             f(k);
         }
-        b = t.parents[i];
+        b = t.parent(i);
     }
 }
 

@@ -8,7 +8,7 @@
 //! order of Pinocchio's `cholesky::decompose`, not the row updates of
 //! Table 6.3): `L[k][i]` for every i supporting k is one dot product over
 //! the coordinates that k supports, which follow k in a
-//! [`depth_first`](crate::topology::Topology::depth_first) tree. `L` is
+//! [`depth_first`](crate::topology::TopologyTables::depth_first) tree. `L` is
 //! therefore stored transposed, `ltdl[i][k] = L[k][i]`, so that these dot
 //! products and the solves run along rows.
 //!
@@ -140,7 +140,7 @@ fn row_by_combination<S: Scalar, const NV: usize>(
 /// diagonal and upper triangle of `ltdl`; the lower one is working storage
 /// (on long chains it holds `L` untransposed). Entries of `L` that the
 /// sparsity makes zero are not written either, except in a tree that is
-/// not [`depth_first`](crate::topology::Topology::depth_first), where the
+/// not [`depth_first`](crate::topology::TopologyTables::depth_first), where the
 /// factorisation and the solves read them.
 ///
 /// Pivots are formed and tested leaves to root, so the coordinate reported
@@ -241,8 +241,8 @@ fn factor_by_dots<S: Scalar, const NB: usize, const NV: usize>(
 ) -> Result<()> {
     let mut d_l = [S::ZERO; NV];
     for k in (0..NV).rev() {
-        let below = k + 1..topology.last_supported_v[k] + 1;
-        let d = pivots.form(k, m[k][k], &h[k], below.clone(), &mut d_l)?;
+        let below = k + 1..topology.last_supported(k) + 1;
+        let d = pivots.form(k, m[k][k], &h[k], below, &mut d_l)?;
         h[k][k] = d;
         if !topology.depth_first {
             // The rows that do not support k read this column as zeros.
@@ -250,7 +250,7 @@ fn factor_by_dots<S: Scalar, const NB: usize, const NV: usize>(
                 row[k] = S::ZERO;
             }
         }
-        column_by_dots(topology, &m[k], h, &d_l[below], k, S::ONE / d);
+        column_by_dots(topology, &m[k], h, &d_l, k, S::ONE / d);
     }
     Ok(())
 }
@@ -268,12 +268,14 @@ fn column_by_dots<S: Scalar, const NB: usize, const NV: usize>(
     topology: &Topology<NB, NV>,
     m_k: &[S; NV],
     h: &mut [[S; NV]; NV],
-    d_l: &[S],
+    d_l: &[S; NV],
     k: usize,
     inverse: S,
 ) {
-    let below = k + 1..k + 1 + d_l.len();
-    for (first, last) in supporting_ranges(topology, topology.lambda_v[k]) {
+    // Sliced here, where `last_supported` states the range in bounds.
+    let below = k + 1..topology.last_supported(k) + 1;
+    let d_l = &d_l[below.clone()];
+    for (first, last) in supporting_ranges(topology, topology.lambda(k)) {
         let rows = h[first..=last].iter_mut().zip(&m_k[first..=last]);
         if d_l.is_empty() {
             for (row, m_ki) in rows {
@@ -299,7 +301,7 @@ fn factor_by_rows<S: Scalar, const NB: usize, const NV: usize>(
 ) -> Result<()> {
     let mut d_l = [S::ZERO; NV];
     for k in (0..NV).rev() {
-        let end = topology.last_supported_v[k] + 1;
+        let end = topology.last_supported(k) + 1;
         let (to_k, below_k) = h.split_at_mut(k + 1);
         let (above_k, row_k) = to_k.split_at_mut(k);
         let row_k = &mut row_k[0];
@@ -316,7 +318,7 @@ fn factor_by_rows<S: Scalar, const NB: usize, const NV: usize>(
         let inverse = S::ONE / d;
         let rows_below = &below_k[..end - k - 1];
         let d_l = &d_l[k + 1..end];
-        for (first, last) in supporting_ranges(topology, topology.lambda_v[k]) {
+        for (first, last) in supporting_ranges(topology, topology.lambda(k)) {
             let (l_k, l_k_transposed) = (&mut row_k[first..=last], &mut above_k[first..=last]);
             let m_k = &m[k][first..=last];
             if rows_below.len() >= ROWS_PER_COMBINATION && l_k.len() >= ROWS_PER_COMBINATION {
@@ -403,7 +405,7 @@ pub(crate) fn solve_transposed<
     let h = &data.ltdl;
     for k in (0..NV).rev() {
         let (b_to_k, b_below) = b.split_at_mut(k + 1);
-        let end = topology.last_supported_v[k] + 1;
+        let end = topology.last_supported(k) + 1;
         let (l, b_below) = (&h[k][k + 1..end], &b_below[..end - k - 1]);
         match (l, b_below) {
             // `b[k + 1]`, final only just now, enters last.
@@ -431,16 +433,16 @@ pub(crate) fn solve_lower<
     let topology = model.topology();
     let h = &data.ltdl;
     for k in 0..NV {
-        let (b_to_k, b_below) = b.split_at_mut(k + 1);
-        let end = topology.last_supported_v[k] + 1;
-        match (&mut b_below[..end - k - 1], &h[k][k + 1..end]) {
+        let b_k = b[k];
+        let end = topology.last_supported(k) + 1;
+        match (&mut b[k + 1..end], &h[k][k + 1..end]) {
             // `b[k + 1]`, final after this update, on its own; the rest
             // then starts at `k + 2`, where the next pass's reads start.
             ([b_next, b_rest @ ..], [l_next, l_rest @ ..]) if HOST_ORDER => {
-                *b_next -= *l_next * b_to_k[k];
-                sub_scaled(b_rest, b_to_k[k], l_rest);
+                *b_next -= *l_next * b_k;
+                sub_scaled(b_rest, b_k, l_rest);
             }
-            (b_below, l) => sub_scaled(b_below, b_to_k[k], l),
+            (b_below, l) => sub_scaled(b_below, b_k, l),
         }
     }
 }
@@ -470,16 +472,38 @@ pub(crate) fn solve_transposed_on_path<
     let mut len = 0;
     let mut i = Some(body);
     while let Some(j) = i {
-        for k in (t.idx_v[j]..t.idx_v[j] + t.nv[j]).rev() {
-            path[len] = k;
-            len += 1;
+        // `body` is the caller's; the parents are in range.
+        if j >= NB {
+            break;
         }
-        i = t.parents[j];
+        for k in t.velocity_coordinates(j).rev() {
+            // A path holds each coordinate once, so it fits (`get_mut`: no
+            // panic path).
+            if let Some(slot) = path.get_mut(len) {
+                *slot = k;
+                len += 1;
+            }
+        }
+        i = t.parent(j);
     }
-    for (n, &k) in path[..len].iter().enumerate() {
-        let l = &h[k];
+    for (n, &k) in path.iter().take(len).enumerate() {
+        // The coordinates read back are in range: tests, not panic paths
+        // (one per entry, where indexing `l` and `b` checked twice).
+        let Some(l) = h.get(k) else {
+            continue;
+        };
         for b in rows.iter_mut() {
-            let below = path[..n].iter().fold(S::ZERO, |acc, &s| acc + l[s] * b[s]);
+            let below =
+                path.iter().take(n).fold(
+                    S::ZERO,
+                    |acc, &s| {
+                        if s < NV {
+                            acc + l[s] * b[s]
+                        } else {
+                            acc
+                        }
+                    },
+                );
             b[k] -= below;
         }
     }
@@ -534,7 +558,7 @@ pub fn ltdl_solve_columns<
     let h = &data.ltdl;
     // Lᵀ Y = B, leaves to root.
     for k in (0..NV).rev() {
-        let end = topology.last_supported_v[k] + 1;
+        let end = topology.last_supported(k) + 1;
         let (head, below) = b.split_at_mut(k + 1);
         let row_k = &mut head[k];
         for (row_s, l) in below.iter().zip(&h[k][k + 1..end]) {
@@ -552,7 +576,7 @@ pub fn ltdl_solve_columns<
     }
     // L X = Z, root to leaves.
     for k in 0..NV {
-        let end = topology.last_supported_v[k] + 1;
+        let end = topology.last_supported(k) + 1;
         let (head, below) = b.split_at_mut(k + 1);
         let row_k = &head[k];
         for (row_s, l) in below.iter_mut().zip(&h[k][k + 1..end]) {
@@ -605,7 +629,7 @@ pub(crate) fn solve_columns_by_rows<
             }
         };
         // Through `get`: no bounds checks in firmware images.
-        let end = topology.last_supported_v[k] + 1;
+        let end = topology.last_supported(k) + 1;
         let (head, below) = x.split_at_mut(k + 1);
         for (row_s, l) in below.iter().zip(h[k].get(k + 1..end).unwrap_or_default()) {
             for (a, y) in acc.iter_mut().zip(row_s) {
@@ -627,7 +651,7 @@ pub(crate) fn solve_columns_by_rows<
         // The coordinates supporting s, a chain of them at a time (as
         // `supporting_ranges` walks them, but through `get`: no bounds
         // checks in firmware images).
-        let mut support = topology.lambda_v[s];
+        let mut support = topology.lambda(s);
         while let Some(end) = support {
             let first = topology.chain_start_v.get(end).copied().unwrap_or(end);
             let (above, h) = (above.get(first..=end), h.get(first..=end));

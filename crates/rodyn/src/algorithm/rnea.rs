@@ -176,7 +176,7 @@ pub(crate) fn backward_force_pass_with<
     const CARRY: bool = crate::tuning::CARRY;
     let mut carry = G::Force::<S>::ZERO;
     for i in (0..NB).rev() {
-        let (iv, nv) = (t.idx_v[i], t.nv[i]);
+        let (iv, nv) = t.velocity_range(i);
         let f_i = if CARRY {
             let f_i = data.f[i] + carry;
             carry = G::Force::<S>::ZERO;

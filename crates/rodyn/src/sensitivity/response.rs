@@ -36,19 +36,22 @@ pub fn aba_response<S: Scalar, const NB: usize, const NQ: usize, const NV: usize
     let mut u = [S::ZERO; NV];
     let mut st_pa = [S::ZERO; MAX_JOINT_NV];
     for i in (0..NB).rev() {
-        let (iv, nv) = (t.idx_v[i], t.nv[i]);
+        let (iv, nv) = t.joint_velocity_range(i);
         model.joint(i).project_force(&p_a[i], &mut st_pa[..nv]);
+        // The joint's stretch of each vector, sliced once (as in ABA).
+        let (u_i, tau_i) = (&mut u[iv..iv + nv], &tau[iv..iv + nv]);
         for k in 0..nv {
-            u[iv + k] = tau[iv + k] - st_pa[k];
+            u_i[k] = tau_i[k] - st_pa[k];
         }
-        if let Some(parent) = t.parents[i] {
+        if let Some(parent) = t.parent(i) {
             let mut p_i = p_a[i];
+            let (d_inv, u_cols) = (&data.d_inv[iv..iv + nv], &data.u_cols[iv..iv + nv]);
             for k in 0..nv {
                 let mut dinv_u = S::ZERO;
                 for l in 0..nv {
-                    dinv_u += data.d_inv[iv + k][l] * u[iv + l];
+                    dinv_u += d_inv[k][l] * u_i[l];
                 }
-                p_i += data.u_cols[iv + k] * dinv_u;
+                p_i += u_cols[k] * dinv_u;
             }
             let p_parent = data.li_m_i[i].act_force(&p_i);
             p_a[parent] += p_parent;
@@ -57,21 +60,27 @@ pub fn aba_response<S: Scalar, const NB: usize, const NQ: usize, const NV: usize
     let mut a = [G::Motion::<S>::ZERO; NB];
     let mut ut_a = [S::ZERO; MAX_JOINT_NV];
     for i in 0..NB {
-        let (iv, nv) = (t.idx_v[i], t.nv[i]);
-        let a_prime = match t.parents[i] {
+        let (iv, nv) = t.joint_velocity_range(i);
+        let a_prime = match t.parent(i) {
             Some(parent) => data.li_m_i[i].act_inv_motion(&a[parent]),
             None => G::Motion::<S>::ZERO,
         };
+        let (u_i, u_cols, d_inv) = (
+            &u[iv..iv + nv],
+            &data.u_cols[iv..iv + nv],
+            &data.d_inv[iv..iv + nv],
+        );
         for k in 0..nv {
-            ut_a[k] = u[iv + k] - a_prime.dot(&data.u_cols[iv + k]);
+            ut_a[k] = u_i[k] - a_prime.dot(&u_cols[k]);
         }
+        let ddq_i = &mut ddq[iv..iv + nv];
         for k in 0..nv {
             let mut x = S::ZERO;
             for l in 0..nv {
-                x += data.d_inv[iv + k][l] * ut_a[l];
+                x += d_inv[k][l] * ut_a[l];
             }
-            ddq[iv + k] = x;
+            ddq_i[k] = x;
         }
-        a[i] = a_prime + model.joint(i).motion(&ddq[iv..iv + nv]);
+        a[i] = a_prime + model.joint(i).motion(ddq_i);
     }
 }

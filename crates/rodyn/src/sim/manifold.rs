@@ -70,7 +70,7 @@ pub fn configuration_rate<
     let t = model.topology();
     let mut q_dot = [S::ZERO; NQ];
     for i in 0..NB {
-        let (iq, nq, iv, nv) = (t.idx_q[i], t.nq[i], t.idx_v[i], t.nv[i]);
+        let ((iq, nq), (iv, nv)) = (model.configuration_range(i), t.velocity_range(i));
         // A valid topology keeps the ranges in `q` and `v`
         // (`Topology::try_new`); one that does not fit leaves those rates zero.
         let (Some(q_i), Some(v_i), Some(q_dot_i)) = (

@@ -264,14 +264,17 @@ pub fn time_step<
         *b = dot(&cdata.jc[r], &v_free);
     }
     for (c, &p) in index[..active].iter().enumerate() {
-        let gap = sdata.gaps[p];
+        // `index` holds points of this step (`get`: no panic path).
+        let Some(&gap) = sdata.gaps.get(p) else {
+            continue;
+        };
         let closing = if gap.to_f64() > 0.0 {
             gap
         } else {
             settings.depth_recovery * gap
         };
         free[3 * c + 2] += closing / dt;
-        let warm = sdata.impulses[p].to_array();
+        let warm = sdata.impulses.get(p).map_or([S::ZERO; 3], |i| i.to_array());
         cdata.lambda[3 * c..3 * c + 3].copy_from_slice(&warm);
     }
     sdata.last_change =
@@ -283,7 +286,9 @@ pub fn time_step<
     check_result(&cdata.ddq, Quantity::Velocity)?;
     for (c, &p) in index[..active].iter().enumerate() {
         let l = &cdata.lambda[3 * c..3 * c + 3];
-        sdata.impulses[p] = Vec3::new(l[0], l[1], l[2]);
+        if let Some(impulse) = sdata.impulses.get_mut(p) {
+            *impulse = Vec3::new(l[0], l[1], l[2]);
+        }
     }
     let v_next = cdata.ddq;
     let mut q_next = model.integrate(q, &v_next, dt)?;

@@ -79,11 +79,11 @@ impl<S: Scalar> Mat3<S> {
         let k = k.min(2);
         Vec3::new(self.m[0][k], self.m[1][k], self.m[2][k])
     }
-    /// Row `k`.
+    /// Row `k`; a `k` past 2 reads the last row (as [`Self::column`]).
     #[inline]
     #[must_use]
     pub fn row(&self, k: usize) -> Vec3<S> {
-        Vec3::from_array(self.m[k])
+        Vec3::from_array(self.m[k.min(2)])
     }
 
     /// `self * v`.

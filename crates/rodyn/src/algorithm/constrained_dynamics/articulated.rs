@@ -55,12 +55,18 @@ pub(super) fn form_delassus<
     let ddq0 = *aba(model, data, q, v, tau, None)?;
     // The contacts' accelerations at q̈₀ (and the poses for their axes).
     forward_kinematics_acceleration(model, data, q, v, &ddq0)?;
-    let rows = constrained_rows(contacts);
+    // `check_input` refused more rows than `NC`; the clamp, which changes
+    // nothing then, lets the optimiser see it.
+    let rows = constrained_rows(contacts).min(NC);
     cdata.rows = rows;
     let mut row = 0;
     for contact in contacts {
         let n = contact.rows();
-        baumgarte_less_drift(data, contact, settings, &mut cdata.lambda[row..row + n])?;
+        // Within `NC` (`check_input`); `get` says so without a panic path.
+        let Some(lambda) = cdata.lambda.get_mut(row..row + n) else {
+            break;
+        };
+        baumgarte_less_drift(data, contact, settings, lambda)?;
         row += n;
     }
 
@@ -69,19 +75,29 @@ pub(super) fn form_delassus<
     for contact in contacts {
         for r in 0..contact.rows() {
             let force = test_force(data, contact, r);
+            // Columns and rows within `NC` (`check_input`): `get`.
+            let Some(response) = cdata.responses.get_mut(column) else {
+                break;
+            };
             unit_response(
                 model,
                 data,
                 contact.held_frame().body,
                 &force,
-                &mut cdata.responses[column],
+                response,
                 &mut accel,
             );
             let mut row = 0;
             for other in contacts {
                 let acceleration = contact_acceleration(data, other, &accel);
                 for (k, a) in acceleration.iter().take(other.rows()).enumerate() {
-                    cdata.delassus[row + k][column] = *a;
+                    if let Some(entry) = cdata
+                        .delassus
+                        .get_mut(row + k)
+                        .and_then(|d| d.get_mut(column))
+                    {
+                        *entry = *a;
+                    }
                 }
                 row += other.rows();
             }
@@ -106,7 +122,12 @@ pub(super) fn accelerations<S: Scalar, const NV: usize, const NC: usize>(
     ddq0: &[S; NV],
 ) {
     let mut ddq = *ddq0;
-    weighted_rows(&cdata.responses, &cdata.lambda, cdata.rows, &mut ddq);
+    weighted_rows(
+        &cdata.responses,
+        &cdata.lambda,
+        cdata.rows.min(NC),
+        &mut ddq,
+    );
     cdata.ddq = ddq;
 }
 
@@ -122,7 +143,11 @@ fn test_force<S: Scalar, const NB: usize, const NV: usize>(
     let frame = contact.held_frame();
     match contact {
         Contact::Point { .. } => {
-            let axis = data.o_m_i[frame.body].rot.row(r);
+            // A body in range (`check_input`): `get`, no panic path.
+            let Some(o_m_i) = data.o_m_i.get(frame.body) else {
+                return Force::ZERO;
+            };
+            let axis = o_m_i.rot.row(r);
             Force::at_point(axis, &frame.placement.trans)
         }
         Contact::Frame { .. } => {
@@ -145,11 +170,15 @@ fn contact_acceleration<S: Scalar, const NB: usize, const NV: usize>(
     accel: &[Motion<S>; NB],
 ) -> [S; 6] {
     let frame = contact.held_frame();
-    let a = frame.placement.act_inv_motion(&accel[frame.body]);
+    // A body in range (`check_input`): `get`, no panic path.
+    let (Some(accel), Some(o_m_i)) = (accel.get(frame.body), data.o_m_i.get(frame.body)) else {
+        return [S::ZERO; 6];
+    };
+    let a = frame.placement.act_inv_motion(accel);
     let mut out = [S::ZERO; 6];
     match contact {
         Contact::Point { .. } => {
-            let frame_axes = data.o_m_i[frame.body].rot.mul_mat(&frame.placement.rot);
+            let frame_axes = o_m_i.rot.mul_mat(&frame.placement.rot);
             out[..3].copy_from_slice(&frame_axes.mul_vec(&a.lin).to_array());
         }
         Contact::Frame { .. } => {
@@ -179,31 +208,64 @@ fn unit_response<S: Scalar, const NB: usize, const NQ: usize, const NV: usize>(
     // receives pᵃ = pᴬ + U D⁻¹ u (no velocity: no c term).
     let mut p_a = -*force;
     let mut i = body;
-    loop {
-        let (iv, nv) = (t.idx_v[i], t.nv[i]);
-        model.joint(i).project_force(&p_a, &mut st[..nv]);
-        for k in 0..nv {
-            u[iv + k] = -st[k];
+    // `body` is the caller's; the parents are in range.
+    while i < NB {
+        let (iv, nv) = t.joint_velocity_range(i);
+        let joint = model.joint(i);
+        // One coordinate without the loops, as in ABA: with the joint's
+        // range known, the loops over it unroll and cost the common case
+        // instructions on the Cortex-M4.
+        if nv == 1 {
+            let mut s = [S::ZERO];
+            joint.project_force(&p_a, &mut s);
+            let u_k = -s[0];
+            u[iv] = u_k;
+            let Some(parent) = t.parent(i) else { break };
+            p_a += data.u_cols[iv] * (data.d_inv[iv][0] * u_k);
+            p_a = data.li_m_i[i].act_force(&p_a);
+            i = parent;
+            continue;
         }
-        let Some(parent) = t.parents[i] else { break };
+        joint.project_force(&p_a, &mut st[..nv]);
+        // The joint's stretch of each vector, sliced once (see ABA's
+        // `backward_pass`).
+        let u_i = &mut u[iv..iv + nv];
         for k in 0..nv {
-            let dinv_u = (0..nv).fold(S::ZERO, |acc, l| acc + data.d_inv[iv + k][l] * u[iv + l]);
-            p_a += data.u_cols[iv + k] * dinv_u;
+            u_i[k] = -st[k];
+        }
+        let Some(parent) = t.parent(i) else { break };
+        let (d_inv, u_cols) = (&data.d_inv[iv..iv + nv], &data.u_cols[iv..iv + nv]);
+        for k in 0..nv {
+            let dinv_u = (0..nv).fold(S::ZERO, |acc, l| acc + d_inv[k][l] * u_i[l]);
+            p_a += u_cols[k] * dinv_u;
         }
         p_a = data.li_m_i[i].act_force(&p_a);
         i = parent;
     }
     // Forward over the tree: a' = ⁱXₚ aₚ, q̈ = D⁻¹ (u − Uᵀ a'), a = a' + S q̈.
     for i in 0..NB {
-        let (iv, nv) = (t.idx_v[i], t.nv[i]);
-        let a_parent = t.parents[i].map_or(Motion::ZERO, |p| accel[p]);
+        let (iv, nv) = t.joint_velocity_range(i);
+        let a_parent = t.parent(i).map_or(Motion::ZERO, |p| accel[p]);
         let a_prime = data.li_m_i[i].act_inv_motion(&a_parent);
-        for k in 0..nv {
-            st[k] = u[iv + k] - a_prime.dot(&data.u_cols[iv + k]);
+        let joint = model.joint(i);
+        if nv == 1 {
+            let x = data.d_inv[iv][0] * (u[iv] - a_prime.dot(&data.u_cols[iv]));
+            ddq[iv] = x;
+            accel[i] = joint.add_motion(&a_prime, &[x]);
+            continue;
         }
+        let (u_i, d_inv, u_cols) = (
+            &u[iv..iv + nv],
+            &data.d_inv[iv..iv + nv],
+            &data.u_cols[iv..iv + nv],
+        );
         for k in 0..nv {
-            ddq[iv + k] = (0..nv).fold(S::ZERO, |acc, l| acc + data.d_inv[iv + k][l] * st[l]);
+            st[k] = u_i[k] - a_prime.dot(&u_cols[k]);
         }
-        accel[i] = a_prime + model.joint(i).motion(&ddq[iv..iv + nv]);
+        let ddq_i = &mut ddq[iv..iv + nv];
+        for k in 0..nv {
+            ddq_i[k] = (0..nv).fold(S::ZERO, |acc, l| acc + d_inv[k][l] * st[l]);
+        }
+        accel[i] = a_prime + joint.motion(ddq_i);
     }
 }

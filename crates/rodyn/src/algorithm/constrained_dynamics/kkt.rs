@@ -54,7 +54,7 @@ pub(super) fn kkt_solve<
         settings.damping,
         Poses::FromJointTransformsAndMass,
     )?;
-    let rows = cdata.rows;
+    let rows = cdata.rows.min(NC);
     let mut z: [S; NV] = core::array::from_fn(|k| tau[k] - h[k]);
     solve_transposed(model, data, &mut z);
 
@@ -65,15 +65,22 @@ pub(super) fn kkt_solve<
     let gravity = *model.gravity();
     for contact in contacts {
         let i = contact.held_frame().body;
-        data.a[i] = data.a_gf[i] + data.o_m_i[i].act_inv_motion(&gravity);
+        // `check_input` refused a body past the end; a test, not a panic path.
+        if i < NB {
+            data.a[i] = data.a_gf[i] + data.o_m_i[i].act_inv_motion(&gravity);
+        }
     }
     let mut rhs = [S::ZERO; NC];
     let mut row = 0;
     for contact in contacts {
         let n = contact.rows();
-        baumgarte_less_drift(data, contact, settings, &mut rhs[row..row + n])?;
-        for (r, value) in rhs[row..row + n].iter_mut().enumerate() {
-            *value -= dot(&cdata.responses[row + r], &z);
+        // Within `NC` (`check_input`); `get` says so without a panic path.
+        let Some(rhs) = rhs.get_mut(row..row + n) else {
+            break;
+        };
+        baumgarte_less_drift(data, contact, settings, rhs)?;
+        for (value, response) in rhs.iter_mut().zip(cdata.responses.iter().skip(row)) {
+            *value -= dot(response, &z);
         }
         row += n;
     }
@@ -134,7 +141,9 @@ pub(crate) fn form_delassus<
     added_diagonal: Option<&[S; NV]>,
     poses: Poses,
 ) -> Result<()> {
-    let rows = constrained_rows(contacts);
+    // `check_input` refused more rows than `NC`; the clamp, which changes
+    // nothing then, lets the optimiser see it.
+    let rows = constrained_rows(contacts).min(NC);
     cdata.rows = rows;
     // M's lower triangle, which is all the factorisation reads.
     match poses {
@@ -163,7 +172,9 @@ pub(crate) fn form_delassus<
             let mut on_path = [false; NB];
             for contact in contacts {
                 let mut body = Some(contact.held_frame().body);
-                while let Some(i) = body.filter(|&i| !on_path[i]) {
+                // The contact's body is the caller's (`get`: past the end
+                // ends the walk); the parents are in range.
+                while let Some(i) = body.filter(|&i| on_path.get(i) == Some(&false)) {
                     on_path[i] = true;
                     body = model.parent(i);
                 }
@@ -181,12 +192,16 @@ pub(crate) fn form_delassus<
             contact.reference(),
             &mut cdata.columns,
         )?;
-        for (r, jc_row) in cdata.jc[row..row + contact.rows()].iter_mut().enumerate() {
+        let Some(jc_rows) = cdata.jc.get_mut(row..row + contact.rows()) else {
+            break;
+        };
+        for (r, jc_row) in jc_rows.iter_mut().enumerate() {
             for (entry, column) in jc_row.iter_mut().zip(&cdata.columns) {
+                // A contact has at most six rows: the clamp changes nothing.
                 *entry = if r < 3 {
                     column.lin.to_array()[r]
                 } else {
-                    column.ang.to_array()[r - 3]
+                    column.ang.to_array()[(r - 3).min(2)]
                 };
             }
         }
@@ -201,9 +216,14 @@ pub(crate) fn form_delassus<
     for contact in contacts {
         let body = contact.held_frame().body;
         let rows = row..row + contact.rows();
-        cdata.responses[rows.clone()].copy_from_slice(&cdata.jc[rows.clone()]);
-        solve_transposed_on_path(model, data, body, &mut cdata.responses[rows.clone()]);
-        for w in &mut cdata.responses[rows] {
+        let (Some(responses), Some(jc)) =
+            (cdata.responses.get_mut(rows.clone()), cdata.jc.get(rows))
+        else {
+            break;
+        };
+        responses.copy_from_slice(jc);
+        solve_transposed_on_path(model, data, body, responses);
+        for w in responses {
             for (wk, dk) in w.iter_mut().zip(&d_inv) {
                 *wk *= *dk;
             }
@@ -215,7 +235,8 @@ pub(crate) fn form_delassus<
     // "Constrained dynamics").
     for r in 0..rows {
         let d_w: [S; NV] = core::array::from_fn(|k| data.ltdl[k][k] * cdata.responses[r][k]);
-        for s in 0..=r {
+        // `0..r + 1`, not `0..=r`: the optimiser then bounds `s` by `rows`.
+        for s in 0..r + 1 {
             let g = dot(&d_w, &cdata.responses[s]);
             cdata.delassus[r][s] = g;
             cdata.delassus[s][r] = g;
@@ -273,7 +294,7 @@ fn sweep_with_response<
     cdata: &mut ConstraintData<S, NV, NC>,
     mut z: [S; NV],
 ) {
-    weighted_rows(&cdata.responses, &cdata.lambda, cdata.rows, &mut z);
+    weighted_rows(&cdata.responses, &cdata.lambda, cdata.rows.min(NC), &mut z);
     solve_lower(model, data, &mut z);
     cdata.ddq = z;
 }

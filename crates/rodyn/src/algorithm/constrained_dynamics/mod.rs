@@ -262,12 +262,12 @@ pub fn constrained_forward_dynamics_with<
             let ddq0 =
                 articulated::form_delassus(model, data, cdata, q, v, tau, contacts, settings)?;
             factor_delassus(cdata, contacts, settings.damping)?;
-            let rows = cdata.rows;
+            let rows = cdata.rows.min(NC);
             cholesky_solve(&cdata.delassus, rows, &mut cdata.lambda);
             articulated::accelerations(cdata, &ddq0);
         }
     }
-    let rows = cdata.rows;
+    let rows = cdata.rows.min(NC);
     check_result(&cdata.lambda[..rows], Quantity::Contact)?;
     check_result(&cdata.ddq, Quantity::Acceleration)?;
     Ok((&cdata.ddq, &cdata.lambda[..rows]))
@@ -319,7 +319,7 @@ pub fn impulse_dynamics<
     check_input(contacts, &settings, NB, NC)?;
     check_finite(v_before, Quantity::Velocity)?;
     prepare(model, data, cdata, q, contacts, damping, Poses::Compute)?;
-    let rows = cdata.rows;
+    let rows = cdata.rows.min(NC);
     for r in 0..rows {
         cdata.lambda[r] = -(S::ONE + restitution) * dot(&cdata.jc[r], v_before);
     }
@@ -370,7 +370,7 @@ pub(crate) fn factor_delassus<S: Scalar, const NV: usize, const NC: usize>(
     contacts: &[Contact<S>],
     damping: S,
 ) -> Result<()> {
-    for r in 0..cdata.rows {
+    for r in 0..cdata.rows.min(NC) {
         cdata.delassus[r][r] += damping;
     }
     cholesky_in_place(&mut cdata.delassus, cdata.rows, PIVOT_TOLERANCE).map_err(|row| {

@@ -46,8 +46,8 @@ pub(super) fn backward_body<
 ) {
     let t = model.topology();
     let joint = model.joint(i);
-    let (iv, nv) = (t.idx_v[i], t.nv[i]);
-    let end = t.subtree_end_v[i];
+    let (iv, nv) = t.velocity_range(i);
+    let end = t.subtree_end(i);
     if ENTRIES_IN_PASS && t.subtrees_contiguous && end < NV {
         let m = &mut data.mass_matrix;
         // Bounds known to the compiler: no checks inside.
@@ -71,10 +71,10 @@ pub(super) fn backward_body<
         G::FUSES_CRBA_STEPS && t.subtrees_contiguous,
         nv,
         axis,
-        t.parents[i],
+        t.parent(i),
         step,
     ) {
-        let end = t.subtree_end_v[i];
+        let end = t.subtree_end(i);
         let (ancestors, rest) = data.ic.split_at_mut(i);
         // A valid topology has `p < i` and its subtree's coordinates in
         // range; one that does not is left to the general step below.
@@ -89,8 +89,8 @@ pub(super) fn backward_body<
             }
         }
     }
-    if G::FUSES_CRBA_STEPS && t.subtrees_contiguous && t.parents[i].is_none() && nv == 6 {
-        let end = t.subtree_end_v[i];
+    if G::FUSES_CRBA_STEPS && t.subtrees_contiguous && t.parent(i).is_none() && nv == 6 {
+        let end = t.subtree_end(i);
         if let (Some(ic_i), Some(subtree), Some(rows)) = (
             data.ic.get(i),
             columns.get(iv + 6..end),
@@ -102,11 +102,11 @@ pub(super) fn backward_body<
         }
     }
     let Some(ic_i) = data.ic.get(i) else { return };
-    for k in 0..nv {
-        columns[iv + k] = G::turned_inertia_column(frame, ic_i, joint, k);
+    for (k, column) in columns[iv..iv + nv].iter_mut().enumerate() {
+        *column = G::turned_inertia_column(frame, ic_i, joint, k);
     }
     if t.subtrees_contiguous {
-        let end = t.subtree_end_v[i];
+        let end = t.subtree_end(i);
         let rows = iv..end;
         project_rows(
             joint,
@@ -141,7 +141,7 @@ pub(super) fn backward_body<
             }
         }
     }
-    if let (Some(p), Some(step)) = (t.parents[i], step) {
+    if let (Some(p), Some(step)) = (t.parent(i), step) {
         let ic_i = *ic_i;
         if let Some(ic_p) = data.ic.get_mut(p) {
             G::add_stepped_inertia(ic_p, step, &ic_i);

@@ -104,7 +104,7 @@ impl CrbaPass {
 
     /// The pass [`crba`] takes: [`CrbaPass::RootFrame`] in a scalar of
     /// `f64` precision on trees whose mean support depth
-    /// ([`Topology::mean_support_depth`]) is at least
+    /// ([`TopologyTables::mean_support_depth`](crate::topology::TopologyTables::mean_support_depth)) is at least
     /// [`ROOT_FRAME_MIN_DEPTH`](Self::ROOT_FRAME_MIN_DEPTH), else
     /// [`CrbaPass::Local`]. The condition on `NV` follows from the depth
     /// and is known at compile time, so a smaller model's code carries no

@@ -198,7 +198,7 @@ macro_rules! plan_from_turns_for {
                     }
                     i += 1;
                 }
-                let frames = TurnedFrame::tree(&model.topology().parents, &turns, &axes);
+                let frames = TurnedFrame::tree(&model.topology().tables().parents, &turns, &axes);
                 let mut plan = Self::unturned(model);
                 plan.frames = frames;
                 let mut i = 0;

@@ -54,7 +54,7 @@ pub(super) fn about_root<
     let mut s_root = [[S::ZERO; NV]; 6];
     for i in 0..NB {
         steps[i] = step(&data.li_m_i, i);
-        if let (Some(p), Some(step)) = (t.parents[i], &steps[i]) {
+        if let (Some(p), Some(step)) = (t.parent(i), &steps[i]) {
             to_root[i] = G::then_step(&to_root[p], step);
         }
         let (joint, frame) = (model.joint(i), frames.frame(i));
@@ -80,7 +80,7 @@ pub(super) fn about_root<
         // parent's is stepped before this body's rows, so that it overlaps
         // their dot products (faster on the 60-link chain; see the
         // performance notebook, "CRBA").
-        if let (Some(p), Some(step)) = (t.parents[i], &steps[i]) {
+        if let (Some(p), Some(step)) = (t.parent(i), &steps[i]) {
             let ic_i = data.ic[i];
             G::add_stepped_inertia(&mut data.ic[p], step, &ic_i);
         }

@@ -32,7 +32,7 @@ impl CrbaSpace for Spatial {
             if let Some(axis) = r.axis.index() {
                 match TransformStep::turn_about(&placement.rot, axis) {
                     Some((cos_p, sin_p)) => {
-                        let (sin, cos) = q[0].sin_cos();
+                        let (sin, cos) = crate::joint::first(q).sin_cos();
                         // Exact when the placement does not rotate.
                         return TransformStep::Axis {
                             axis,
@@ -141,7 +141,7 @@ impl CrbaSpace for Spatial {
         match frame.axis() {
             // The placement's turn is in the frames: the joint angle alone.
             Some(a) => {
-                let (sin, cos) = sin_cos.unwrap_or_else(|| q[0].sin_cos());
+                let (sin, cos) = sin_cos.unwrap_or_else(|| crate::joint::first(q).sin_cos());
                 TransformStep::Axis {
                     axis: a.turned,
                     cos,

@@ -40,7 +40,7 @@ pub fn crba<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Spa
     let mut h = [[S::ZERO; NV]; NV];
     for i in (0..NB).rev() {
         // Iᶜ_λ(i) = Iᶜ_λ(i) + ˡⁱXᵢ* Iᶜᵢ ⁱX_λ(i)
-        if let Some(lambda) = t.parents[i] {
+        if let Some(lambda) = t.parent(i) {
             ic[lambda] = ic[lambda].combine(&ic[i].act(&x_up[i]));
         }
         let joint_i = model.joint(i);
@@ -54,7 +54,7 @@ pub fn crba<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Spa
             }
             // j = i; while λ(j) ≠ 0: F = ˡʲXⱼ* F; j = λ(j); H_ij = Fᵀ S_j; H_ji = H_ijᵀ
             let mut j = i;
-            while let Some(lambda) = t.parents[j] {
+            while let Some(lambda) = t.parent(j) {
                 f = x_up[j].act_force(&f);
                 j = lambda;
                 let joint_j = model.joint(j);

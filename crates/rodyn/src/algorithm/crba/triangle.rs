@@ -56,7 +56,7 @@ pub(super) fn mirror_lower<S: Scalar, const NV: usize>(m: &mut [[S; NV]; NV]) {
 
 /// Zeroes the entries below the diagonal that no column reaches: those
 /// left of each coordinate's unbroken stretch of supporting coordinates
-/// (see [`Topology::chain_start_v`]) that do not support it. A chain has
+/// (see [`TopologyTables::chain_start_v`](crate::topology::TopologyTables::chain_start_v)) that do not support it. A chain has
 /// none. With `mirrored`, their mirrors above the diagonal too. The local
 /// pass on a tree with contiguous subtrees writes its zeros itself
 /// ([`backward_body`]).
@@ -70,14 +70,14 @@ pub(super) fn clear_lower<S: Scalar, const NB: usize, const NV: usize>(
         // Most rows have nothing to clear (every row of a chain): they
         // skip the fill, which can become a call into `memset` (fewer
         // instructions on the M4's Panda CRBA; see the notebook, "CRBA").
-        let start = t.chain_start_v[k];
+        let start = t.chain_start(k);
         if start > 0 {
             row[..start].fill(S::ZERO);
         }
     }
     if mirrored {
-        for (k, &start) in t.chain_start_v.iter().enumerate() {
-            for row in &mut m[..start] {
+        for k in 0..NV {
+            for row in &mut m[..t.chain_start(k)] {
                 row[k] = S::ZERO;
             }
         }
