@@ -119,7 +119,11 @@ impl<S: Scalar> AxisTurn<S> {
                 columns[d] = turned(&columns[d]);
             }
         } else {
-            columns[0] = own;
+            // Through `first_mut`: the caller always passes the body's own
+            // column, but the compiler cannot see it (no panic path).
+            if let Some(column) = columns.first_mut() {
+                *column = own;
+            }
             let n = columns.len().min(rows.len());
             let (columns, rows) = (&mut columns[..n], &mut rows[..n]);
             for d in 0..n {
