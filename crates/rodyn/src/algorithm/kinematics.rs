@@ -12,14 +12,8 @@ use crate::model::{check_finite, Model};
 use crate::space::{RigidTransform, Space, VectorOps};
 use crate::Scalar;
 
+use super::common::{body_transform, check_state, pose_pass};
 use super::common::{joint_rates, velocity_pass};
-// Also re-exported for `crba.rs`, which imports them from here until CRBA
-// moves to `algorithm/crba/` (issue 23, item 1); new code imports them
-// from `common`.
-pub(crate) use super::common::{
-    body_transform, body_transform_with, check_state, joint_configuration, JointSinCos,
-    ANGLES_FIRST,
-};
 
 /// Body poses at configuration `q`.
 ///
@@ -66,27 +60,6 @@ pub fn forward_kinematics<
     }
     pose_pass(model, data);
     Ok(())
-}
-
-/// `ᵒMᵢ = ᵒM_λ ˡⁱMᵢ` from the parent transforms already in `data.li_m_i`.
-#[inline]
-pub(crate) fn pose_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
-    model: &Model<S, NB, NQ, NV, G>,
-    data: &mut Data<S, NB, NV, G>,
-) {
-    for i in 0..NB {
-        data.o_m_i[i] = match model.parent(i) {
-            Some(p) => {
-                // A valid topology's parent is a body (`p < i`); one that
-                // is not stops the pass.
-                let Some(o_m_p) = data.o_m_i.get(p) else {
-                    return;
-                };
-                G::then_joint(o_m_p, &data.li_m_i[i], model.joint(i))
-            }
-            None => data.li_m_i[i],
-        };
-    }
 }
 
 /// Body poses and velocities at `(q, v)`.

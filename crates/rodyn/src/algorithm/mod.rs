@@ -43,7 +43,7 @@
 
 pub mod aba;
 pub mod centroidal;
-mod common;
+pub(crate) mod common;
 pub mod constrained_dynamics;
 pub mod contact_inverse_dynamics;
 pub mod crba;

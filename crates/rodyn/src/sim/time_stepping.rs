@@ -50,12 +50,12 @@
 //! convergence; the step reports the last sweep's largest change of an
 //! impulse so that a user can see how far from converged it stopped.
 
+use crate::algorithm::common::pose_pass;
 use crate::algorithm::constrained_dynamics::{
     add_response, dot, form_delassus, ConstraintData, Contact, Poses,
 };
 use crate::algorithm::forward_dynamics::bias_and_mass;
 use crate::algorithm::frames::frame_placement;
-use crate::algorithm::kinematics::pose_pass;
 use crate::algorithm::ltdl::ltdl_solve;
 use crate::data::Data;
 use crate::error::{Error, Quantity, Result};

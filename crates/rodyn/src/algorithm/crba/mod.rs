@@ -55,10 +55,10 @@ pub mod textbook;
 mod triangle;
 mod turned_frame;
 
-use crate::algorithm::kinematics::{
-    body_transform_with, check_state, joint_configuration, JointSinCos, ANGLES_FIRST,
+use crate::algorithm::common::{
+    backward_force_pass_with, body_transform_with, check_state, forward_body, joint_configuration,
+    JointSinCos, ANGLES_FIRST,
 };
-use crate::algorithm::rnea;
 use crate::data::Data;
 use crate::error::{Quantity, Result};
 use crate::model::{check_result, Model};
@@ -491,11 +491,11 @@ fn bias_and_mass_lower_in<
     for i in 0..NB {
         let li_m_i = body_transform_with(model, i, q, sin_cos.as_ref());
         data.ic[i] = *frames.inertia(i);
-        rnea::forward_body(model, data, i, li_m_i, v, None, f_ext, &minus_g);
+        forward_body(model, data, i, li_m_i, v, None, f_ext, &minus_g);
     }
     if CrbaPass::default_for::<S, NB, NV>(t) == CrbaPass::RootFrame {
         clear_lower(t, &mut data.mass_matrix, false);
-        rnea::backward_force_pass_with(model, data, None, |_, _| {});
+        backward_force_pass_with(model, data, None, |_, _| {});
         about_root::<S, NB, NQ, NV, G, false>(model, frames, data, |li_m_i, i| {
             joint_step(model, frames, li_m_i, None, None, i)
         });
@@ -504,7 +504,7 @@ fn bias_and_mass_lower_in<
             clear_lower(t, &mut data.mass_matrix, false);
         }
         let mut columns = [G::Force::<S>::ZERO; NV];
-        rnea::backward_force_pass_with(model, data, None, |data, i| {
+        backward_force_pass_with(model, data, None, |data, i| {
             let step = joint_step(model, frames, &data.li_m_i, None, None, i);
             backward_body(
                 model,
@@ -537,7 +537,7 @@ mod tests {
         bias_and_mass_lower, bias_and_mass_lower_planned, crba, crba_lower, crba_lower_planned,
         crba_planned, CrbaPass, CrbaPlan,
     };
-    use crate::algorithm::kinematics::body_transform;
+    use crate::algorithm::common::body_transform;
     use crate::joint::{Axis, Joint};
     use crate::spatial::{AxisPermutation, Inertia, Mat3, Motion, Spatial, Sym3, Transform, Vec3};
     use crate::{Data, Model};

@@ -11,7 +11,7 @@
 //! entry written twice. It is O(n·depth) like the tuned passes but with
 //! general transforms throughout: use it to check, not to run a robot.
 
-use crate::algorithm::kinematics::{body_transform, check_state};
+use crate::algorithm::common::{body_transform, check_state};
 use crate::error::Result;
 use crate::joint::JointModel;
 use crate::model::Model;

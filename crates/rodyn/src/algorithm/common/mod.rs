@@ -1,9 +1,14 @@
 //! What several algorithms share: input checks, each body's slice of `q`
 //! and `v`, its transform `ˡⁱMᵢ` (from sines and cosines formed first on
 //! hosts), the velocity and pose passes, and the supporting coordinate
-//! ranges of the mass matrix. An algorithm imports these from here, never
-//! from another algorithm's file, so that each algorithm file holds only
-//! its own passes.
+//! ranges of the mass matrix, and the Newton-Euler body steps
+//! ([`newton_euler`]). An algorithm imports these from here, never from
+//! another algorithm's file, so that each algorithm file holds only its
+//! own passes.
+
+mod newton_euler;
+
+pub(crate) use newton_euler::{backward_force_pass_with, forward_body};
 
 use crate::data::Data;
 use crate::error::{Quantity, Result};
@@ -236,6 +241,27 @@ pub(crate) fn body_velocity<
         .joint(i)
         .add_motion(&v_parent, joint_rates(model, i, v));
     (li_m_i, v_i)
+}
+
+/// `ᵒMᵢ = ᵒM_λ ˡⁱMᵢ` from the parent transforms already in `data.li_m_i`.
+#[inline]
+pub(crate) fn pose_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+) {
+    for i in 0..NB {
+        data.o_m_i[i] = match model.parent(i) {
+            Some(p) => {
+                // A valid topology's parent is a body (`p < i`); one that
+                // is not stops the pass.
+                let Some(o_m_p) = data.o_m_i.get(p) else {
+                    return;
+                };
+                G::then_joint(o_m_p, &data.li_m_i[i], model.joint(i))
+            }
+            None => data.li_m_i[i],
+        };
+    }
 }
 
 /// Body poses at `q` (as [`forward_kinematics`](super::kinematics::forward_kinematics): `data.li_m_i`,
