@@ -119,7 +119,10 @@ impl<S: Scalar> AxisTurn<S> {
                 columns[d] = turned(&columns[d]);
             }
         } else {
-            columns[0] = own;
+            // The loop below projects and moves it with the others.
+            if let Some(column) = columns.first_mut() {
+                *column = own;
+            }
             let n = columns.len().min(rows.len());
             let (columns, rows) = (&mut columns[..n], &mut rows[..n]);
             for d in 0..n {
