@@ -131,9 +131,9 @@ fn velocity_and_bias_pass<
         };
         let joint = model.joint(i);
         let qd = joint_rates(model, i, v);
-        let v_i = joint.add_motion(&v_parent, qd);
+        let (v_i, c_i) = joint.velocity_and_bias(&v_parent, qd);
         data.v[i] = v_i;
-        data.c[i] = joint.cross_motion(&v_i, qd);
+        data.c[i] = c_i;
         let inertia = model.inertia(i);
         data.ia[i] = G::Articulated::<S>::from_rigid(inertia);
         let mut p_a = inertia.velocity_product_force(&v_i);

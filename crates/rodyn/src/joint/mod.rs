@@ -101,6 +101,16 @@ pub trait JointModel<S: Scalar, G: Geometry>: Copy + Debug {
         use crate::space::MotionVector;
         v.cross_motion(&self.motion(qd))
     }
+    /// `(vᵢ, vᵢ × (S qd))` with `vᵢ = m + S qd`: a body's velocity from
+    /// its parent's `m` (in the body's frame) and its joint's
+    /// velocity-product acceleration, as [`add_motion`](Self::add_motion)
+    /// then [`cross_motion`](Self::cross_motion). A joint may override it
+    /// to branch on its kind once.
+    #[inline(always)]
+    fn velocity_and_bias(&self, m: &G::Motion<S>, qd: &[S]) -> (G::Motion<S>, G::Motion<S>) {
+        let v = self.add_motion(m, qd);
+        (v, self.cross_motion(&v, qd))
+    }
     /// Column `k` of the motion subspace `S`.
     fn subspace_column(&self, k: usize) -> G::Motion<S>;
     /// `Some(k)` for a revolute joint about coordinate axis k (`S = eₖ`,

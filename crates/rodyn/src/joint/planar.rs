@@ -5,6 +5,7 @@ use super::{first, set_first, ConfigurationError, JointModel};
 use crate::planar::{
     ArticulatedInertia3, Planar, PlanarForce, PlanarJoint, PlanarMotion, PlanarTransform, Vec2,
 };
+use crate::space::MotionVector;
 use crate::Scalar;
 
 impl<S: Scalar> JointModel<S, Planar> for PlanarJoint<S> {
@@ -57,12 +58,60 @@ impl<S: Scalar> JointModel<S, Planar> for PlanarJoint<S> {
             Self::Revolute => PlanarMotion::new(first(qd), Vec2::ZERO),
             Self::Prismatic(a) => PlanarMotion::new(S::ZERO, *a * first(qd)),
             Self::Fixed => PlanarMotion::new(S::ZERO, Vec2::ZERO),
-            // Indexed: every non-panicking read tried here (`first_chunk`,
-            // entry by entry, a cold fallback, out of line) cost the muscle
-            // robot's forward dynamics (no floating joint) 7 % more
-            // instructions on the Cortex-M4; the performance notebook,
-            // "Panic paths".
-            Self::Floating => PlanarMotion::new(qd[2], Vec2::new(qd[0], qd[1])),
+            Self::Floating => {
+                let [x, y, w] = *qd.first_chunk::<3>().unwrap_or(&[S::ZERO; 3]);
+                PlanarMotion::new(w, Vec2::new(x, y))
+            }
+        }
+    }
+    // The one-coordinate joints touch only the components they move, as
+    // the 3-D joints do.
+    #[inline(always)]
+    fn add_motion(&self, m: &PlanarMotion<S>, qd: &[S]) -> PlanarMotion<S> {
+        match self {
+            Self::Revolute => PlanarMotion::new(m.ang + first(qd), m.lin),
+            Self::Prismatic(a) => PlanarMotion::new(m.ang, m.lin + *a * first(qd)),
+            Self::Fixed => *m,
+            Self::Floating => *m + self.motion(qd),
+        }
+    }
+    #[inline(always)]
+    fn cross_motion(&self, v: &PlanarMotion<S>, qd: &[S]) -> PlanarMotion<S> {
+        match self {
+            // v × (ω, 0) = (0, -ω × v_lin) in the plane.
+            Self::Revolute => {
+                let w = first(qd);
+                PlanarMotion::new(S::ZERO, Vec2::new(v.lin.y * w, -(v.lin.x * w)))
+            }
+            Self::Fixed => PlanarMotion::new(S::ZERO, Vec2::ZERO),
+            Self::Prismatic(_) | Self::Floating => v.cross_motion(&self.motion(qd)),
+        }
+    }
+    // One branch on the kind for both: the floating arm, without a panic
+    // path since it reads through `first_chunk`, compiled twice per body
+    // pushed the velocity passes of small models past the size at which
+    // the compiler unrolls them (the performance notebook, "Panic paths").
+    #[inline(always)]
+    fn velocity_and_bias(
+        &self,
+        m: &PlanarMotion<S>,
+        qd: &[S],
+    ) -> (PlanarMotion<S>, PlanarMotion<S>) {
+        match self {
+            Self::Revolute => {
+                let w = first(qd);
+                let c = Vec2::new(m.lin.y * w, -(m.lin.x * w));
+                (
+                    PlanarMotion::new(m.ang + w, m.lin),
+                    PlanarMotion::new(S::ZERO, c),
+                )
+            }
+            Self::Fixed => (*m, PlanarMotion::new(S::ZERO, Vec2::ZERO)),
+            _ => {
+                let s = self.motion(qd);
+                let v = *m + s;
+                (v, v.cross_motion(&s))
+            }
         }
     }
     #[inline]
@@ -185,5 +234,41 @@ impl<S: Scalar> JointModel<S, Planar> for PlanarJoint<S> {
 impl<S: Scalar> PlanarTransform<S> {
     fn act_point_public(&self, p: &Vec2<S>) -> Vec2<S> {
         self.rotate(p) + self.trans
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn written_out_motions_match_the_general_forms() {
+        let joints = [
+            PlanarJoint::Revolute,
+            PlanarJoint::Prismatic(Vec2::new(0.6, -0.8)),
+            PlanarJoint::Fixed,
+            PlanarJoint::Floating,
+        ];
+        let m = PlanarMotion::new(0.3_f64, Vec2::new(-1.2, 0.7));
+        let rates = [0.9, -0.4, 2.5];
+        for joint in joints {
+            // Full-length and short slices (a short one reads as zeros).
+            for qd in [&rates[..], &rates[..1], &[]] {
+                let s = joint.motion(qd);
+                let v = m + s;
+                let c = v.cross_motion(&s);
+                let close = |a: PlanarMotion<f64>, b: PlanarMotion<f64>| {
+                    (a.ang - b.ang).abs() < 1e-15 && (a.lin - b.lin).norm_squared() < 1e-30
+                };
+                assert!(close(joint.add_motion(&m, qd), v), "{joint:?} {qd:?}");
+                assert!(close(joint.cross_motion(&v, qd), c), "{joint:?} {qd:?}");
+                let (v_i, c_i) = joint.velocity_and_bias(&m, qd);
+                assert!(close(v_i, v) && close(c_i, c), "{joint:?} {qd:?}");
+            }
+        }
+        assert_eq!(
+            PlanarJoint::Floating.motion(&rates),
+            PlanarMotion::new(2.5, Vec2::new(0.9, -0.4))
+        );
     }
 }

@@ -207,8 +207,8 @@ pub(crate) fn velocity_pass<
     v: &[S; NV],
 ) {
     for i in 0..NB {
-        let (li_m_i, v_i) = body_velocity(model, data, i, q, v);
-        data.c[i] = model.joint(i).cross_motion(&v_i, joint_rates(model, i, v));
+        let (li_m_i, v_i, c_i) = body_velocity(model, data, i, q, v);
+        data.c[i] = c_i;
         data.v[i] = v_i;
         data.li_m_i[i] = li_m_i;
     }
@@ -230,17 +230,17 @@ pub(crate) fn body_velocity<
     i: usize,
     q: &[S; NQ],
     v: &[S; NV],
-) -> (G::Transform<S>, G::Motion<S>) {
+) -> (G::Transform<S>, G::Motion<S>, G::Motion<S>) {
     let li_m_i = body_transform(model, i, q);
     // Parents precede children (`Topology::try_new`), so `p < i < NB`.
     let v_parent = match model.parent(i).and_then(|p| data.v.get(p)) {
         Some(v_p) => li_m_i.act_inv_motion(v_p),
         None => G::Motion::<S>::ZERO,
     };
-    let v_i = model
+    let (v_i, c_i) = model
         .joint(i)
-        .add_motion(&v_parent, joint_rates(model, i, v));
-    (li_m_i, v_i)
+        .velocity_and_bias(&v_parent, joint_rates(model, i, v));
+    (li_m_i, v_i, c_i)
 }
 
 /// `ᵒMᵢ = ᵒM_λ ˡⁱMᵢ` from the parent transforms already in `data.li_m_i`.

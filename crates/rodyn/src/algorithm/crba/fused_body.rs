@@ -119,8 +119,9 @@ impl<S: Scalar> AxisTurn<S> {
                 columns[d] = turned(&columns[d]);
             }
         } else {
-            // Through `first_mut`: the caller always passes the body's own
-            // column, but the compiler cannot see it (no panic path).
+            // Through `first_mut`, without a panic path (the caller always
+            // passes the body's own column); the loop below projects and
+            // moves it with the others.
             if let Some(column) = columns.first_mut() {
                 *column = own;
             }
