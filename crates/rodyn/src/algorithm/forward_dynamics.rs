@@ -201,18 +201,15 @@ pub(crate) fn bias_and_mass<
     v: &[S; NV],
     f_ext: Option<&[G::Force<S>; NB]>,
 ) -> Result<[S; NV]> {
-    if FUSED_PASSES {
-        check_state(model, q, Some(v))?;
-        check_external(f_ext.map(|f| &f[..]))?;
-        crba::bias_and_mass_lower(model, data, q, v, f_ext);
-        check_result(&data.tau, Quantity::Torque)?;
-        Ok(data.tau)
-    } else {
-        let h = *nonlinear_effects(model, data, q, v, f_ext)?;
-        // RNEA left the joint transforms at q in `li_m_i`.
-        crba::crba_lower(model, data, None);
-        Ok(h)
-    }
+    bias_and_mass_by(
+        model,
+        data,
+        q,
+        v,
+        f_ext,
+        |data| crba::bias_and_mass_lower(model, data, q, v, f_ext),
+        |data| crba::crba_lower(model, data, None),
+    )
 }
 
 /// [`bias_and_mass`] with CRBA in the frames of `plan`.
@@ -233,16 +230,40 @@ pub(crate) fn bias_and_mass_planned<
     v: &[S; NV],
     f_ext: Option<&[G::Force<S>; NB]>,
 ) -> Result<[S; NV]> {
+    bias_and_mass_by(
+        model,
+        data,
+        q,
+        v,
+        f_ext,
+        |data| crba::bias_and_mass_lower_planned(model, plan, data, q, v, f_ext),
+        |data| crba::crba_lower_planned(model, plan, data, None),
+    )
+}
+
+/// [`bias_and_mass`]'s checks and order of passes, CRBA's own passes given:
+/// `fused` forms `h` in `data.tau` and `M`'s lower triangle in one sweep,
+/// `lower` the triangle from the joint transforms RNEA left.
+#[inline(always)]
+fn bias_and_mass_by<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    q: &[S; NQ],
+    v: &[S; NV],
+    f_ext: Option<&[G::Force<S>; NB]>,
+    fused: impl FnOnce(&mut Data<S, NB, NV, G>),
+    lower: impl FnOnce(&mut Data<S, NB, NV, G>),
+) -> Result<[S; NV]> {
     if FUSED_PASSES {
         check_state(model, q, Some(v))?;
         check_external(f_ext.map(|f| &f[..]))?;
-        crba::bias_and_mass_lower_planned(model, plan, data, q, v, f_ext);
+        fused(data);
         check_result(&data.tau, Quantity::Torque)?;
         Ok(data.tau)
     } else {
         let h = *nonlinear_effects(model, data, q, v, f_ext)?;
         // RNEA left the joint transforms at q in `li_m_i`.
-        crba::crba_lower_planned(model, plan, data, None);
+        lower(data);
         Ok(h)
     }
 }
