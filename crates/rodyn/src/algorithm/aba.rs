@@ -124,7 +124,7 @@ fn velocity_and_bias_pass<
 ) {
     let sin_cos = JointSinCos::at(model, q);
     for i in 0..NB {
-        data.li_m_i[i] = body_transform_with(model, i, q, sin_cos.as_ref());
+        data.li_m_i[i] = body_transform_with(model, i, q, sin_cos.formed());
         let v_parent = match model.parent(i) {
             Some(p) => data.li_m_i[i].act_inv_motion(&data.v[p]),
             None => G::Motion::<S>::ZERO,

@@ -110,7 +110,7 @@ pub fn joint_jacobians<
     let sin_cos = JointSinCos::at(model, q);
     let mut o_m_i = <G::Transform<S> as RigidTransform<S>>::IDENTITY;
     for i in 0..NB {
-        o_m_i = pose_step(model, data, i, q, sin_cos.as_ref(), Some(&o_m_i));
+        o_m_i = pose_step(model, data, i, q, sin_cos.formed(), Some(&o_m_i));
         let joint = model.joint(i);
         let (iv, nv) = t.velocity_range(i);
         for (k, column) in jac.j[iv..iv + nv].iter_mut().enumerate() {

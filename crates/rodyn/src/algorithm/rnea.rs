@@ -90,7 +90,7 @@ fn forward_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G:
     let minus_g = -*model.gravity();
     let sin_cos = JointSinCos::at(model, q);
     for i in 0..NB {
-        let li_m_i = body_transform_with(model, i, q, sin_cos.as_ref());
+        let li_m_i = body_transform_with(model, i, q, sin_cos.formed());
         forward_body(model, data, i, li_m_i, v, a, f_ext, &minus_g);
     }
 }

@@ -71,14 +71,31 @@ pub(crate) struct JointSinCos<S, const NB: usize> {
 }
 
 impl<S: Scalar, const NB: usize> JointSinCos<S, NB> {
-    /// At configuration `q`; `None` where [`ANGLES_FIRST`] is false.
+    /// At configuration `q`; zeros, never read, where [`ANGLES_FIRST`] is
+    /// false (see [`formed`](Self::formed)).
+    ///
+    /// Not an `Option<Self>`: moving the arrays into the option's payload
+    /// is a copy the compiler keeps (a call of `memcpy` once they are
+    /// large), while the unread zeros of the in-order profile are removed.
     #[inline(always)]
     pub(crate) fn at<const NQ: usize, const NV: usize, G: Space>(
         model: &Model<S, NB, NQ, NV, G>,
         q: &[S; NQ],
-    ) -> Option<Self> {
-        ANGLES_FIRST
-            .then(|| Self::from_angles(|i| model.joint(i).angle(joint_configuration(model, i, q))))
+    ) -> Self {
+        if ANGLES_FIRST {
+            Self::from_angles(|i| model.joint(i).angle(joint_configuration(model, i, q)))
+        } else {
+            Self {
+                sin: [S::ZERO; NB],
+                cos: [S::ZERO; NB],
+            }
+        }
+    }
+
+    /// `self` where [`ANGLES_FIRST`] formed it, `None` where it did not.
+    #[inline(always)]
+    pub(crate) fn formed(&self) -> Option<&Self> {
+        ANGLES_FIRST.then_some(self)
     }
 
     /// Of `angle(i)` for each body i, a zero angle's where it is `None`.
@@ -276,7 +293,7 @@ pub(crate) fn poses<S: Scalar, const NB: usize, const NQ: usize, const NV: usize
     let sin_cos = JointSinCos::at(model, q);
     let mut previous = <G::Transform<S> as RigidTransform<S>>::IDENTITY;
     for i in 0..NB {
-        previous = pose_step(model, data, i, q, sin_cos.as_ref(), Some(&previous));
+        previous = pose_step(model, data, i, q, sin_cos.formed(), Some(&previous));
     }
 }
 
@@ -351,10 +368,12 @@ mod tests {
         q: &[f64; NQ],
     ) -> JointSinCos<f64, NB> {
         let sin_cos = JointSinCos::at(model, q);
-        assert_eq!(sin_cos.is_some(), ANGLES_FIRST);
-        sin_cos.unwrap_or_else(|| {
+        assert_eq!(sin_cos.formed().is_some(), ANGLES_FIRST);
+        if ANGLES_FIRST {
+            sin_cos
+        } else {
             JointSinCos::from_angles(|i| model.joint(i).angle(joint_configuration(model, i, q)))
-        })
+        }
     }
 
     /// Body i's transform from `sin_cos`, as [`body_transform_with`] forms

@@ -489,7 +489,7 @@ fn bias_and_mass_lower_in<
     let minus_g = -*model.gravity();
     let sin_cos = JointSinCos::at(model, q);
     for i in 0..NB {
-        let li_m_i = body_transform_with(model, i, q, sin_cos.as_ref());
+        let li_m_i = body_transform_with(model, i, q, sin_cos.formed());
         data.ic[i] = *frames.inertia(i);
         forward_body(model, data, i, li_m_i, v, None, f_ext, &minus_g);
     }

@@ -188,7 +188,7 @@ fn world_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: D
     let minus_g = -*model.gravity();
     let sin_cos = JointSinCos::at(model, q);
     for i in 0..NB {
-        let o_m_i = pose_step(model, data, i, q, sin_cos.as_ref(), None);
+        let o_m_i = pose_step(model, data, i, q, sin_cos.formed(), None);
         let (v_parent, a_parent) = match model.parent(i) {
             Some(p) => (deriv.o_v[p], deriv.o_a[p]),
             None => (<G::Motion<S> as VectorOps<S>>::ZERO, minus_g),
