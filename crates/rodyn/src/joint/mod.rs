@@ -33,7 +33,7 @@ pub use prismatic::Prismatic;
 pub use revolute::Revolute;
 
 use crate::space::Geometry;
-use crate::spatial::{ArticulatedInertia6, Force, Motion, Spatial, Transform};
+use crate::spatial::{ArticulatedInertia6, Force, Mat3, Motion, Spatial, Transform};
 use crate::Scalar;
 use core::fmt::Debug;
 
@@ -314,6 +314,13 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
         use crate::space::RigidTransform;
         match self {
             Self::Revolute(j) => j.placed_transform(placement, first(q)),
+            // A floating base usually sits at the world's origin without a
+            // turn: its pose is then the joint's own, and composing with
+            // the identity would be a full 3x3 product.
+            Self::FreeFlyer(_) if placement.rot == Mat3::IDENTITY => {
+                let x = self.transform(q);
+                Transform::new(x.rot, x.trans + placement.trans)
+            }
             _ => placement.compose(&self.transform(q)),
         }
     }
