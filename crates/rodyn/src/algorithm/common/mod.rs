@@ -446,4 +446,26 @@ mod tests {
             assert_eq!(a, b, "planar body {i}");
         }
     }
+
+    /// A free flyer behind a placement without rotation (the usual
+    /// floating base) takes a shortcut past the composition; its transform
+    /// is still the composition's, bit for bit, with and without an offset,
+    /// and a turned placement still composes.
+    #[test]
+    fn free_flyer_behind_an_unturned_placement_is_the_composition() {
+        use crate::space::RigidTransform;
+        let joint: Joint<f64> = Joint::free_flyer();
+        let q = [0.7, -0.3, 0.2, 0.0, 0.6, 0.0, 0.8];
+        let turned = Mat3::from_axis_angle(&Vec3::new(0.6, 0.0, 0.8), 0.4);
+        for placement in [
+            Transform::IDENTITY,
+            Transform::from_translation(Vec3::new(0.1, -2.5, 0.03)),
+            Transform::new(turned, Vec3::new(0.1, -2.5, 0.03)),
+        ] {
+            let expected = placement.compose(
+                &JointModel::<f64, crate::spatial::Spatial>::transform(&joint, &q),
+            );
+            assert_eq!(joint.placed_transform(&placement, &q), expected);
+        }
+    }
 }
