@@ -234,7 +234,7 @@ fn map_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Fra
     let mut total: Option<G::Inertia<S>> = None;
     let mut next = <G::Inertia<S> as BodyInertia<S>>::ZERO;
     for i in (0..NB).rev() {
-        let mut ic = model.inertia(i).act(&data.o_m_i[i]);
+        let mut ic = G::world_inertia(model.inertia(i), &data.o_m_i[i]);
         if i + 1 < NB && model.parent(i + 1) == Some(i) {
             ic = ic.combine(&next);
         }
