@@ -263,8 +263,15 @@ fn map_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Fra
     for i in 0..NB {
         let joint = model.joint(i);
         let (iv, nv) = t.velocity_range(i);
+        let (x, ic) = (&data.o_m_i[i], &cd.o_ic[i]);
+        // Most joints have one coordinate: its column without the loop's
+        // setup and end test.
+        if nv == 1 {
+            cd.ag[iv] = G::centroidal_column(x, joint, 0, ic, &com);
+            continue;
+        }
         for (k, column) in cd.ag[iv..iv + nv].iter_mut().enumerate() {
-            *column = G::centroidal_column(&data.o_m_i[i], joint, k, &cd.o_ic[i], &com);
+            *column = G::centroidal_column(x, joint, k, ic, &com);
         }
     }
 }
