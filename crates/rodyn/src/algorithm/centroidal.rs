@@ -220,29 +220,42 @@ fn map_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Fra
     data: &Data<S, NB, NV, G>,
     cd: &mut CentroidalData<S, NB, NV, G>,
 ) {
-    for i in 0..NB {
-        cd.o_ic[i] = model.inertia(i).act(&data.o_m_i[i]);
-    }
-    let mut total = <G::Inertia<S> as BodyInertia<S>>::ZERO;
-    // Body i + 1's composite, added to body i's when i is its parent at i's
-    // turn rather than at its own (its parent's last child to come, so the
-    // order of the sums is the same): a chain's sum then starts from
+    // One backward pass: each body's inertia is moved into the world where
+    // its composite is summed, so that `o_ic` is written once a body (as
+    // the composite) rather than written, read back and written again.
+    // Body i + 1's composite is added to body i's when i is its parent at
+    // i's turn rather than at its own: a chain's sum then starts from
     // registers rather than from the composite just stored, which loads
-    // laid out otherwise than the stores do not get forwarded.
-    let mut next = total;
+    // laid out otherwise than the stores do not get forwarded. Another
+    // child's composite waits in its parent's `o_ic` slot (the parent's
+    // own inertia is not formed yet), which `pending` marks as holding
+    // such a sum.
+    let mut pending = [false; NB];
+    let mut total: Option<G::Inertia<S>> = None;
+    let mut next = <G::Inertia<S> as BodyInertia<S>>::ZERO;
     for i in (0..NB).rev() {
-        let mut ic = cd.o_ic[i];
+        let mut ic = G::world_inertia(model.inertia(i), &data.o_m_i[i]);
         if i + 1 < NB && model.parent(i + 1) == Some(i) {
             ic = ic.combine(&next);
+        }
+        if pending[i] {
+            ic = ic.combine(&cd.o_ic[i]);
         }
         cd.o_ic[i] = ic;
         match model.parent(i) {
             Some(p) if p + 1 == i => {}
-            Some(p) => cd.o_ic[p] = cd.o_ic[p].combine(&ic),
-            None => total = total.combine(&ic),
+            Some(p) if pending[p] => cd.o_ic[p] = cd.o_ic[p].combine(&ic),
+            Some(p) => {
+                cd.o_ic[p] = ic;
+                pending[p] = true;
+            }
+            // The first root's composite is the total so far as it is, not
+            // its sum with a massless one.
+            None => total = Some(total.map_or(ic, |t| t.combine(&ic))),
         }
         next = ic;
     }
+    let total = total.unwrap_or(<G::Inertia<S> as BodyInertia<S>>::ZERO);
     cd.total = total;
     let com = total.com();
     cd.ig = total.act(&G::from_translation(&com).inverse());
@@ -250,8 +263,15 @@ fn map_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Fra
     for i in 0..NB {
         let joint = model.joint(i);
         let (iv, nv) = t.velocity_range(i);
+        let (x, ic) = (&data.o_m_i[i], &cd.o_ic[i]);
+        // Most joints have one coordinate: its column without the loop's
+        // setup and end test.
+        if nv == 1 {
+            cd.ag[iv] = G::centroidal_column(x, joint, 0, ic, &com);
+            continue;
+        }
         for (k, column) in cd.ag[iv..iv + nv].iter_mut().enumerate() {
-            *column = G::centroidal_column(&data.o_m_i[i], joint, k, &cd.o_ic[i], &com);
+            *column = G::centroidal_column(x, joint, k, ic, &com);
         }
     }
 }

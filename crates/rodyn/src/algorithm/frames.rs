@@ -26,7 +26,7 @@ use crate::frame::Frame;
 use crate::joint::{Joint, JointModel};
 use crate::planar::{Planar, PlanarForce, PlanarMotion, PlanarTransform, Vec2};
 use crate::space::{BodyInertia, MotionVector, RigidTransform, Space, VectorOps};
-use crate::spatial::{Force, Inertia, Motion, Spatial, Transform, Vec3};
+use crate::spatial::{Force, Inertia, Motion, Spatial, Sym3, Transform, Vec3};
 use crate::Scalar;
 
 /// The frame a frame's motion or Jacobian is expressed in (Pinocchio's
@@ -56,6 +56,13 @@ pub trait FrameSpace: Space {
     fn force_linear_vector<S: Scalar>(f: &Self::Force<S>) -> Self::Point<S>;
     /// `p s`.
     fn scale_point<S: Scalar>(p: &Self::Point<S>, s: S) -> Self::Point<S>;
+    /// Body inertia `i` (in its own frame) moved into the world by its
+    /// pose `x`: [`BodyInertia::act`], which a geometry may override with
+    /// an equal form for inertias it recognises.
+    #[inline(always)]
+    fn world_inertia<S: Scalar>(i: &Self::Inertia<S>, x: &Self::Transform<S>) -> Self::Inertia<S> {
+        i.act(x)
+    }
     /// The transform with `x`'s translation and no rotation.
     #[inline]
     fn translation_only<S: Scalar>(x: &Self::Transform<S>) -> Self::Transform<S> {
@@ -93,6 +100,33 @@ impl FrameSpace for Spatial {
     #[inline]
     fn from_translation<S: Scalar>(p: &Vec3<S>) -> Transform<S> {
         Transform::from_translation(*p)
+    }
+    #[inline(always)]
+    fn world_inertia<S: Scalar>(i: &Inertia<S>, x: &Transform<S>) -> Inertia<S> {
+        // A rotational inertia diagonal in the body's frame turns as the
+        // sum of its three entries times the outer products of the
+        // rotation's columns (27 products instead of the 45 of a general
+        // one); three entries tell.
+        let r = &i.rot_inertia;
+        if !S::all_zero([r.xy, r.xz, r.yz]) {
+            return i.act(x);
+        }
+        let m = &x.rot.m;
+        let u = |k: usize, d: S| [m[0][k] * d, m[1][k] * d, m[2][k] * d];
+        let (u0, u1, u2) = (u(0, r.xx), u(1, r.yy), u(2, r.zz));
+        let entry = |a: usize, b: usize| u0[a] * m[b][0] + u1[a] * m[b][1] + u2[a] * m[b][2];
+        Inertia::new(
+            i.mass,
+            x.act_point(&i.com),
+            Sym3::new(
+                entry(0, 0),
+                entry(0, 1),
+                entry(0, 2),
+                entry(1, 1),
+                entry(1, 2),
+                entry(2, 2),
+            ),
+        )
     }
     #[inline]
     fn linear_part<S: Scalar>(m: &Motion<S>) -> Motion<S> {
@@ -337,6 +371,34 @@ mod tests {
     use crate::joint::{Axis, Joint, JointModel};
     use crate::space::{BodyInertia, RigidTransform};
     use crate::spatial::{Force, Inertia, Mat3, Spatial, Sym3, Transform, Vec3};
+
+    /// The 3-D shortcut for a body's world inertia gives `Inertia::act`'s
+    /// result, to rounding, for inertias diagonal in the body's frame (the
+    /// shortcut) and others (the book's form itself).
+    #[test]
+    fn world_inertia_is_the_moved_inertia() {
+        let x = Transform::new(
+            Mat3::from_axis_angle(&Vec3::new(0.36, -0.48, 0.8), 0.9),
+            Vec3::new(0.4, -1.3, 0.7),
+        );
+        let com = Vec3::new(0.2, -0.9, 1.1);
+        let inertias = [
+            Inertia::new(3.5, com, Sym3::diagonal(0.4, 0.5, 0.3)),
+            Inertia::new(3.5, com, Sym3::new(0.4, 0.0, -0.03, 0.5, 0.0, 0.3)),
+            Inertia::new(3.5, com, Sym3::new(0.4, 0.02, -0.03, 0.5, 0.01, 0.3)),
+            Inertia::point_mass(2.0, com),
+        ];
+        for i in &inertias {
+            let (fast, book) = (Spatial::world_inertia(i, &x), i.act(&x));
+            assert_eq!((fast.mass, fast.com), (book.mass, book.com), "{i:?}");
+            let d = fast.rot_inertia - book.rot_inertia;
+            let size = [d.xx, d.xy, d.xz, d.yy, d.yz, d.zz].map(f64::abs);
+            assert!(
+                size.iter().all(|e| *e <= 1e-15),
+                "{i:?}: {fast:?} against {book:?}"
+            );
+        }
+    }
 
     /// The 3-D shortcuts for a joint's world column and its centroidal
     /// column give the book's forms (`x Sₖ`, `ᴳX_o* Iᶜ x Sₖ`) for every

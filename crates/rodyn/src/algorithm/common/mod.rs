@@ -293,7 +293,23 @@ pub(crate) fn poses<S: Scalar, const NB: usize, const NQ: usize, const NV: usize
     let sin_cos = JointSinCos::at(model, q);
     let mut previous = <G::Transform<S> as RigidTransform<S>>::IDENTITY;
     for i in 0..NB {
-        previous = pose_step(model, data, i, q, sin_cos.formed(), Some(&previous));
+        let li_m_i = body_transform_with(model, i, q, sin_cos.formed());
+        // `pose_step`'s choice of the parent's pose, made on values: a
+        // reference to either the previous pose or a stored one made the
+        // previous pose go through the stack behind a general placement
+        // (the Panda's quarter turns). The joint Jacobians, whose columns
+        // read the pose too, keep `pose_step`, which serves them better.
+        let parent = match model.parent(i) {
+            Some(p) if p + 1 == i => Some(previous),
+            Some(p) => data.o_m_i.get(p).copied(),
+            None => None,
+        };
+        previous = match parent {
+            Some(o_m_p) => G::then_joint(&o_m_p, &li_m_i, model.joint(i)),
+            None => li_m_i,
+        };
+        data.li_m_i[i] = li_m_i;
+        data.o_m_i[i] = previous;
     }
 }
 
