@@ -216,12 +216,37 @@ fn world_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: D
         deriv.o_yc[i] = y_i;
         deriv.o_dyc[i] = G::Variation::<S>::of_body(&y_i, &v_i);
         deriv.o_fc[i] = f_i;
-        for c in t.velocity_coordinates(i) {
-            let s = deriv.s[c];
-            let dv_dq = v_parent.cross_motion(&s);
-            deriv.dv_dq[c] = dv_dq;
-            deriv.da_dq[c] = a_parent.cross_motion(&s) + v_parent.cross_motion(&dv_dq);
-            deriv.da_dv[c] = v_i.cross_motion(&s) + dv_dq;
+        // `vᵢ × S_c = v_λ × S_c + v_J × S_c`, and a joint's velocity crosses
+        // only its other columns (a column crossed with itself is zero): so
+        // `da_dv = 2 dv_dq` for a joint of one column, and at a root, where
+        // `v_λ` is zero, only the terms in `a_λ` and `v_J` are left.
+        let columns = t.velocity_coordinates(i);
+        let own_turn = columns.len() > 1;
+        let zero = <G::Motion<S> as VectorOps<S>>::ZERO;
+        if model.parent(i).is_none() {
+            for c in columns {
+                let s = deriv.s[c];
+                deriv.dv_dq[c] = zero;
+                deriv.da_dq[c] = a_parent.cross_motion(&s);
+                deriv.da_dv[c] = if own_turn {
+                    joint_velocity.cross_motion(&s)
+                } else {
+                    zero
+                };
+            }
+        } else {
+            for c in columns {
+                let s = deriv.s[c];
+                let dv_dq = v_parent.cross_motion(&s);
+                deriv.dv_dq[c] = dv_dq;
+                deriv.da_dq[c] = a_parent.cross_motion(&s) + v_parent.cross_motion(&dv_dq);
+                let twice = dv_dq + dv_dq;
+                deriv.da_dv[c] = if own_turn {
+                    twice + joint_velocity.cross_motion(&s)
+                } else {
+                    twice
+                };
+            }
         }
     }
 }
