@@ -145,8 +145,9 @@ fn check_model<const NB: usize, const NQ: usize, const NV: usize>(
         let tau: [f64; NV] = rng.vector(5.0);
         let f_ext: [Force<f64>; NB] = core::array::from_fn(|_| rng.force());
 
-        // The passes write only the entries the tree relates (and zero the
-        // others): none may be left from before the call.
+        // No entry of the matrices may be left from before the call (the
+        // passes write only the entries the tree relates; the others are
+        // cleared).
         let poison = |data: &mut Data<f64, NB, NV>, deriv: &mut DerivativeData<f64, NB, NV>| {
             data.mass_matrix = [[f64::NAN; NV]; NV];
             deriv.dtau_dq = [[f64::NAN; NV]; NV];
@@ -236,9 +237,9 @@ fn floating_base_trees_agree_with_dual_numbers_and_differences() {
     }
 }
 
-/// Trees numbered depth first, where the passes write only the entries
-/// the tree relates and zero the others between branches: three limbs of
-/// three on one body, fixed and (as a free-flyer) floating.
+/// Trees numbered depth first with entries between branches (zero in
+/// `M`, `∂τ/∂q` and `∂τ/∂v`): three limbs of three on one body, fixed and
+/// (as a free-flyer) floating.
 #[test]
 fn depth_first_limbs_agree_with_dual_numbers_and_differences() {
     let mut rng = Rng::new(12);

@@ -29,7 +29,6 @@ use crate::data::Data;
 use crate::error::{Quantity, Result};
 use crate::model::{check_finite, check_matrix_result, check_result, Model};
 use crate::space::{BodyInertia, MotionVector, RigidTransform, VectorOps};
-use crate::topology::Topology;
 use crate::Scalar;
 
 /// Inverse dynamics and its derivatives at `(q, v, a)`: `τ` in `data.tau`,
@@ -90,10 +89,10 @@ pub fn rnea_derivatives<
     check_finite(a, Quantity::Acceleration)?;
     check_external(f_ext.map(|f| &f[..]))?;
     world_pass(model, data, deriv, q, v, a, f_ext);
-    let t = model.topology();
-    clear_unrelated(t, &mut deriv.dtau_dq);
-    clear_unrelated(t, &mut deriv.dtau_dv);
-    clear_unrelated(t, &mut data.mass_matrix);
+    for row in deriv.dtau_dq.iter_mut().chain(deriv.dtau_dv.iter_mut()) {
+        *row = [S::ZERO; NV];
+    }
+    data.mass_matrix = [[S::ZERO; NV]; NV];
     backward_pass::<S, NB, NQ, NV, G, true>(model, data, deriv, &[S::ZERO; NV]);
     subtree_columns_pass::<S, NB, NQ, NV, G, true>(model, data, deriv);
     // Rotor inertias act on the joint coordinates alone.
@@ -147,7 +146,7 @@ pub(super) fn forward_dynamics_passes<
     check_finite(tau, Quantity::Torque)?;
     check_external(f_ext.map(|f| &f[..]))?;
     world_pass(model, data, deriv, q, v, &[S::ZERO; NV], f_ext);
-    clear_unrelated(model.topology(), &mut data.mass_matrix);
+    data.mass_matrix = [[S::ZERO; NV]; NV];
     composite_pass(model, data, deriv);
     check_result(&data.tau, Quantity::Torque)?;
     for (k, armature) in model.armature().iter().enumerate() {
@@ -158,8 +157,9 @@ pub(super) fn forward_dynamics_passes<
     let mut ddq: [S; NV] = core::array::from_fn(|k| tau[k] - data.tau[k]);
     ltdl_solve(model, data, &mut ddq)?;
     acceleration_pass(model, data, deriv, &ddq);
-    clear_unrelated(model.topology(), &mut deriv.dtau_dq);
-    clear_unrelated(model.topology(), &mut deriv.dtau_dv);
+    for row in deriv.dtau_dq.iter_mut().chain(deriv.dtau_dv.iter_mut()) {
+        *row = [S::ZERO; NV];
+    }
     backward_pass::<S, NB, NQ, NV, G, false>(model, data, deriv, &ddq);
     subtree_columns_pass::<S, NB, NQ, NV, G, false>(model, data, deriv);
     data.ddq = ddq;
@@ -167,41 +167,6 @@ pub(super) fn forward_dynamics_passes<
     // `∂τ/∂(q, v)` are not checked here: a non-finite entry would make the
     // products `M⁻¹ ∂τ/∂x` that the caller checks non-finite too.
     Ok(())
-}
-
-/// Zeros the entries of `m` between coordinates on different branches
-/// (neither supporting the other), the only ones that the passes filling
-/// `M`, `∂τ/∂q` and `∂τ/∂v` leave unwritten; so the matrices need no
-/// clearing beforehand, and a chain none at all. In a
-/// [`depth_first`](crate::topology::TopologyTables::depth_first) tree they
-/// are, for each coordinate c, the coordinates after the last one that c
-/// supports, in row c and in column c; in another numbering the whole
-/// matrix is cleared.
-fn clear_unrelated<S: Scalar, const NB: usize, const NV: usize>(
-    t: &Topology<NB, NV>,
-    m: &mut [[S; NV]; NV],
-) {
-    if !t.depth_first {
-        *m = [[S::ZERO; NV]; NV];
-        return;
-    }
-    for c in 0..NV {
-        // Through the checked forms: no panic paths in firmware images.
-        let Some((to_end, after)) = m.split_at_mut_checked(t.last_supported(c) + 1) else {
-            continue;
-        };
-        if let Some(row) = to_end.get_mut(c) {
-            let end = t.last_supported(c) + 1;
-            if let Some(unrelated) = row.get_mut(end..) {
-                unrelated.fill(S::ZERO);
-            }
-        }
-        for row in after {
-            if let Some(x) = row.get_mut(c) {
-                *x = S::ZERO;
-            }
-        }
-    }
 }
 
 /// Root to leaves, RNEA's forward pass in the world frame: body poses
