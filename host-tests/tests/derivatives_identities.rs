@@ -347,6 +347,27 @@ fn bad_input_is_reported() {
         None,
     );
     assert!(err.is_err(), "{err:?}");
+    // A mass matrix that overflows (finite bias forces: no gravity, at
+    // rest) is reported as such, not as a failed pivot.
+    let heavy = Model::<f64, 1, 1, 1>::new(
+        [None],
+        [Joint::revolute(Axis::Z)],
+        [Transform::IDENTITY],
+        [Inertia::point_mass(1e307, Vec3::new(100.0, 0.0, 0.0))],
+        Motion::new(Vec3::ZERO, Vec3::ZERO),
+    );
+    let (mut data, mut deriv) = (Box::new(Data::new()), Box::new(DerivativeData::new()));
+    let err = aba_derivatives(&heavy, &mut data, &mut deriv, &[0.0], &[0.0], &[1.0], None);
+    assert!(
+        matches!(
+            err,
+            Err(Error::NonFiniteResult {
+                quantity: rodyn::error::Quantity::MassMatrix,
+                ..
+            })
+        ),
+        "{err:?}"
+    );
 }
 
 /// The closed form of `Ẏ` in space against its definition applied to a

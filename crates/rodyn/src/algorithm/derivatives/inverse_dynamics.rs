@@ -152,8 +152,12 @@ pub(super) fn forward_dynamics_passes<
     for (k, armature) in model.armature().iter().enumerate() {
         data.mass_matrix[k][k] += *armature;
     }
-    check_matrix_result(data.mass_matrix.as_flattened(), Quantity::MassMatrix)?;
-    ltdl_factor(model, data)?;
+    // A non-finite entry of `M` (an overflow) fails a pivot, so `M` is
+    // searched for one only when the factorisation fails, to report it.
+    if let Err(error) = ltdl_factor(model, data) {
+        check_matrix_result(data.mass_matrix.as_flattened(), Quantity::MassMatrix)?;
+        return Err(error);
+    }
     let mut ddq: [S; NV] = core::array::from_fn(|k| tau[k] - data.tau[k]);
     ltdl_solve(model, data, &mut ddq)?;
     acceleration_pass(model, data, deriv, &ddq);
