@@ -145,6 +145,15 @@ fn check_model<const NB: usize, const NQ: usize, const NV: usize>(
         let tau: [f64; NV] = rng.vector(5.0);
         let f_ext: [Force<f64>; NB] = core::array::from_fn(|_| rng.force());
 
+        // No entry of the matrices may be left from before the call (the
+        // passes write only the entries the tree relates; the others are
+        // cleared).
+        let poison = |data: &mut Data<f64, NB, NV>, deriv: &mut DerivativeData<f64, NB, NV>| {
+            data.mass_matrix = [[f64::NAN; NV]; NV];
+            deriv.dtau_dq = [[f64::NAN; NV]; NV];
+            deriv.dtau_dv = [[f64::NAN; NV]; NV];
+        };
+        poison(&mut data, &mut deriv);
         rnea_derivatives(model, &mut data, &mut deriv, &q, &v, &a, Some(&f_ext)).unwrap();
         let (m, tau_world) = (data.mass_matrix, data.tau);
         // Its RNEA, run in the world frame, against RNEA in body frames.
@@ -166,6 +175,7 @@ fn check_model<const NB: usize, const NQ: usize, const NV: usize>(
         assert_close(&ctx("dq vs central differences"), &deriv.dtau_dq, &dq, 1e-6);
         assert_close(&ctx("dv vs central differences"), &deriv.dtau_dv, &dv, 1e-6);
 
+        poison(&mut data, &mut deriv);
         aba_derivatives(model, &mut data, &mut deriv, &q, &v, &tau, Some(&f_ext)).unwrap();
         let point = (&q, &v, &tau, &f_ext);
         let [dq, dv, dtau] = dual_jacobians(Dynamics::Forward, model, point);
@@ -225,6 +235,42 @@ fn floating_base_trees_agree_with_dual_numbers_and_differences() {
         let model = random_floating_tree::<8, 13, 12>(&mut rng);
         check_model(&format!("floating tree {tree}"), &model, &mut rng);
     }
+}
+
+/// Trees numbered depth first with entries between branches (zero in
+/// `M`, `∂τ/∂q` and `∂τ/∂v`): three limbs of three on one body, fixed and
+/// (as a free-flyer) floating.
+#[test]
+fn depth_first_limbs_agree_with_dual_numbers_and_differences() {
+    let mut rng = Rng::new(12);
+    let parents = |i: usize| match i {
+        0 => None,
+        1 | 4 | 7 => Some(0),
+        _ => Some(i - 1),
+    };
+    let limbs = tree_with_parents::<10>(&mut rng, core::array::from_fn(parents));
+    assert!(limbs.topology().depth_first);
+    check_model("three limbs", &limbs, &mut rng);
+    let floating = Model::<f64, 10, 16, 15>::from_parts(
+        Topology::new(
+            core::array::from_fn(parents),
+            core::array::from_fn(|i| if i == 0 { 7 } else { 1 }),
+            core::array::from_fn(|i| if i == 0 { 6 } else { 1 }),
+            16,
+        ),
+        core::array::from_fn(|i| {
+            if i == 0 {
+                Joint::free_flyer()
+            } else {
+                rng.one_dof_joint()
+            }
+        }),
+        core::array::from_fn(|_| rng.placement()),
+        core::array::from_fn(|_| rng.inertia()),
+        gravity(),
+    );
+    assert!(floating.topology().depth_first);
+    check_model("three limbs on a free-flyer", &floating, &mut rng);
 }
 
 #[test]
@@ -301,6 +347,27 @@ fn bad_input_is_reported() {
         None,
     );
     assert!(err.is_err(), "{err:?}");
+    // A mass matrix that overflows (finite bias forces: no gravity, at
+    // rest) is reported as such, not as a failed pivot.
+    let heavy = Model::<f64, 1, 1, 1>::new(
+        [None],
+        [Joint::revolute(Axis::Z)],
+        [Transform::IDENTITY],
+        [Inertia::point_mass(1e307, Vec3::new(100.0, 0.0, 0.0))],
+        Motion::new(Vec3::ZERO, Vec3::ZERO),
+    );
+    let (mut data, mut deriv) = (Box::new(Data::new()), Box::new(DerivativeData::new()));
+    let err = aba_derivatives(&heavy, &mut data, &mut deriv, &[0.0], &[0.0], &[1.0], None);
+    assert!(
+        matches!(
+            err,
+            Err(Error::NonFiniteResult {
+                quantity: rodyn::error::Quantity::MassMatrix,
+                ..
+            })
+        ),
+        "{err:?}"
+    );
 }
 
 /// The closed form of `Ẏ` in space against its definition applied to a

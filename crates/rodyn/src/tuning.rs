@@ -37,6 +37,9 @@
 //!   `backward_force_pass_with`: inlined into each caller in order (so
 //!   that `a: None` folds away), out of line and shared by RNEA and the
 //!   nonlinear effects out of order.
+//! * `SpatialVariation::of_body` (the derivatives' world pass):
+//!   `inline(always)` out of order, where the call made the pass spill its
+//!   vector registers around it; left to the compiler in order.
 //! * `Planar::turned_joint_step` (planar CRBA given the joint angles'
 //!   sines and cosines): only out of order, where [`ANGLES_FIRST`] forms
 //!   them; in order its extra call site of `compose` changed other

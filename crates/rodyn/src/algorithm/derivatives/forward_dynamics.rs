@@ -16,7 +16,7 @@ use crate::algorithm::aba::aba;
 use crate::algorithm::ltdl::{ltdl_factor, ltdl_solve_columns, solve_columns_by_rows};
 use crate::data::Data;
 use crate::error::{Quantity, Result};
-use crate::model::{check_matrix_result, Model};
+use crate::model::{check_matrix_result, check_result, Model};
 use crate::space::{MotionVector, VectorOps};
 use crate::topology::Topology;
 use crate::tuning::HOST_ORDER;
@@ -92,27 +92,40 @@ fn minv_and_products<
     data: &Data<S, NB, NV, G>,
     deriv: &mut DerivativeData<S, NB, NV, G>,
 ) -> Result<()> {
-    if articulated_sweeps_pay(model.topology()) {
+    let minv_sum = if articulated_sweeps_pay(model.topology()) {
         minv_by_articulated_sweeps(model, data, deriv);
+        None
     } else {
-        solve_columns_by_rows(model, data, None, &mut deriv.minv);
-    }
+        solve_columns_by_rows(model, data, None, &mut deriv.minv)
+    };
     let minus = -S::ONE;
-    solve_columns_by_rows(
+    let dq_sum = solve_columns_by_rows(
         model,
         data,
         Some((minus, &deriv.dtau_dq)),
         &mut deriv.ddq_dq,
     );
-    solve_columns_by_rows(
+    let dv_sum = solve_columns_by_rows(
         model,
         data,
         Some((minus, &deriv.dtau_dv)),
         &mut deriv.ddq_dv,
     );
-    check_matrix_result(deriv.ddq_dq.as_flattened(), Quantity::Derivative)?;
-    check_matrix_result(deriv.ddq_dv.as_flattened(), Quantity::Derivative)?;
-    check_matrix_result(deriv.minv.as_flattened(), Quantity::Derivative)
+    check_by_sum(dq_sum, &deriv.ddq_dq)?;
+    check_by_sum(dv_sum, &deriv.ddq_dv)?;
+    check_by_sum(minv_sum, &deriv.minv)
+}
+
+/// [`check_matrix_result`] of a derivative matrix, given the sum of its
+/// entries when the solve that formed it gave one: a finite sum proves
+/// every entry finite; otherwise the entries are searched.
+#[inline]
+fn check_by_sum<S: Scalar, const NV: usize>(sum: Option<S>, x: &[[S; NV]; NV]) -> Result<()> {
+    match sum {
+        Some(sum) if sum.is_finite() => Ok(()),
+        Some(_) => check_result(x.as_flattened(), Quantity::Derivative),
+        None => check_matrix_result(x.as_flattened(), Quantity::Derivative),
+    }
 }
 
 /// Whether [`minv_by_articulated_sweeps`] forms `M⁻¹`: on hosts, in

@@ -180,6 +180,9 @@ impl<S: Scalar> VariationMap<S, Spatial> for SpatialVariation<S> {
         linear: Vec3::ZERO,
     };
 
+    // Out of line, the call made the world pass spill its vector registers
+    // around it once per body (all are caller-saved on x86-64).
+    #[cfg_attr(rodyn_tuning = "out_of_order", inline(always))]
     fn of_body(y: &Inertia<S>, v: &Motion<S>) -> Self {
         let (m, c) = (y.mass, y.com);
         let c_dot = v.lin + v.ang.cross(&c);

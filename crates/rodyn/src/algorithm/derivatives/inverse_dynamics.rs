@@ -94,7 +94,7 @@ pub fn rnea_derivatives<
     }
     data.mass_matrix = [[S::ZERO; NV]; NV];
     backward_pass::<S, NB, NQ, NV, G, true>(model, data, deriv, &[S::ZERO; NV]);
-    subtree_columns_pass::<S, NB, NQ, NV, G, true>(model, data, deriv);
+    subtree_pass::<S, NB, NQ, NV, G, true>(model, data, deriv);
     // Rotor inertias act on the joint coordinates alone.
     for (k, armature) in model.armature().iter().enumerate() {
         data.mass_matrix[k][k] += *armature;
@@ -152,8 +152,12 @@ pub(super) fn forward_dynamics_passes<
     for (k, armature) in model.armature().iter().enumerate() {
         data.mass_matrix[k][k] += *armature;
     }
-    check_matrix_result(data.mass_matrix.as_flattened(), Quantity::MassMatrix)?;
-    ltdl_factor(model, data)?;
+    // A non-finite entry of `M` (an overflow) fails a pivot, so `M` is
+    // searched for one only when the factorisation fails, to report it.
+    if let Err(error) = ltdl_factor(model, data) {
+        check_matrix_result(data.mass_matrix.as_flattened(), Quantity::MassMatrix)?;
+        return Err(error);
+    }
     let mut ddq: [S; NV] = core::array::from_fn(|k| tau[k] - data.tau[k]);
     ltdl_solve(model, data, &mut ddq)?;
     acceleration_pass(model, data, deriv, &ddq);
@@ -161,7 +165,7 @@ pub(super) fn forward_dynamics_passes<
         *row = [S::ZERO; NV];
     }
     backward_pass::<S, NB, NQ, NV, G, false>(model, data, deriv, &ddq);
-    subtree_columns_pass::<S, NB, NQ, NV, G, false>(model, data, deriv);
+    subtree_pass::<S, NB, NQ, NV, G, false>(model, data, deriv);
     data.ddq = ddq;
     data.tau = *tau;
     // `∂τ/∂(q, v)` are not checked here: a non-finite entry would make the
@@ -216,12 +220,37 @@ fn world_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: D
         deriv.o_yc[i] = y_i;
         deriv.o_dyc[i] = G::Variation::<S>::of_body(&y_i, &v_i);
         deriv.o_fc[i] = f_i;
-        for c in t.velocity_coordinates(i) {
-            let s = deriv.s[c];
-            let dv_dq = v_parent.cross_motion(&s);
-            deriv.dv_dq[c] = dv_dq;
-            deriv.da_dq[c] = a_parent.cross_motion(&s) + v_parent.cross_motion(&dv_dq);
-            deriv.da_dv[c] = v_i.cross_motion(&s) + dv_dq;
+        // `vᵢ × S_c = v_λ × S_c + v_J × S_c`, and a joint's velocity crosses
+        // only its other columns (a column crossed with itself is zero): so
+        // `da_dv = 2 dv_dq` for a joint of one column, and at a root, where
+        // `v_λ` is zero, only the terms in `a_λ` and `v_J` are left.
+        let columns = t.velocity_coordinates(i);
+        let own_turn = columns.len() > 1;
+        let zero = <G::Motion<S> as VectorOps<S>>::ZERO;
+        if model.parent(i).is_none() {
+            for c in columns {
+                let s = deriv.s[c];
+                deriv.dv_dq[c] = zero;
+                deriv.da_dq[c] = a_parent.cross_motion(&s);
+                deriv.da_dv[c] = if own_turn {
+                    joint_velocity.cross_motion(&s)
+                } else {
+                    zero
+                };
+            }
+        } else {
+            for c in columns {
+                let s = deriv.s[c];
+                let dv_dq = v_parent.cross_motion(&s);
+                deriv.dv_dq[c] = dv_dq;
+                deriv.da_dq[c] = a_parent.cross_motion(&s) + v_parent.cross_motion(&dv_dq);
+                let twice = dv_dq + dv_dq;
+                deriv.da_dv[c] = if own_turn {
+                    twice + joint_velocity.cross_motion(&s)
+                } else {
+                    twice
+                };
+            }
         }
     }
 }
@@ -410,6 +439,108 @@ fn backward_pass<
     }
 }
 
+/// The entries of `∂τ/∂q`, `∂τ/∂v` (and with `MASS` of `M`) in the rows of
+/// each body and the columns of its subtree: [`subtree_rows_pass`] where
+/// subtrees hold contiguous coordinates, [`subtree_columns_pass`] (its
+/// plain form) otherwise. Leaves `deriv.df_dq` undefined.
+#[inline(always)]
+fn subtree_pass<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: DerivativeSpace,
+    const MASS: bool,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    deriv: &mut DerivativeData<S, NB, NV, G>,
+) {
+    if model.topology().subtrees_contiguous {
+        subtree_rows_pass::<S, NB, NQ, NV, G, MASS>(model, data, deriv);
+    } else {
+        subtree_columns_pass::<S, NB, NQ, NV, G, MASS>(model, data, deriv);
+    }
+}
+
+/// [`subtree_columns_pass`] a row at a time, in a tree whose subtrees hold
+/// contiguous coordinates: leaves to root, each row r of body j takes the
+/// columns of j's subtree as one stretch, `S_r` held while the stretch is
+/// swept (where a column's pass set up each column and walked its rows).
+/// A column's rows above its body see the turn `S_c ×* Fᶜ`, which is added
+/// to `df_dq_c` in place once the body's own rows are done (the bodies
+/// above come later), so `deriv.df_dq` holds the turned forces afterwards.
+fn subtree_rows_pass<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: DerivativeSpace,
+    const MASS: bool,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &mut Data<S, NB, NV, G>,
+    deriv: &mut DerivativeData<S, NB, NV, G>,
+) {
+    let t = model.topology();
+    for j in (0..NB).rev() {
+        let own = t.velocity_coordinates(j);
+        let subtree = own.start..t.subtree_end(j);
+        // Through `get`: no bounds checks in firmware images.
+        let (Some(dq), Some(dv), Some(da)) = (
+            deriv.df_dq.get(subtree.clone()),
+            deriv.df_dv.get(subtree.clone()),
+            deriv.df_da.get(subtree.clone()),
+        ) else {
+            continue;
+        };
+        for r in own.clone() {
+            let Some(s_r) = deriv.s.get(r).copied() else {
+                continue;
+            };
+            let (Some(row_q), Some(row_v)) = (
+                deriv
+                    .dtau_dq
+                    .get_mut(r)
+                    .and_then(|row| row.get_mut(subtree.clone())),
+                deriv
+                    .dtau_dv
+                    .get_mut(r)
+                    .and_then(|row| row.get_mut(subtree.clone())),
+            ) else {
+                continue;
+            };
+            for (((x_q, x_v), f_q), f_v) in row_q.iter_mut().zip(row_v).zip(dq).zip(dv) {
+                *x_q = s_r.dot(f_q);
+                *x_v = s_r.dot(f_v);
+            }
+            if MASS {
+                let row_m = data
+                    .mass_matrix
+                    .get_mut(r)
+                    .and_then(|row| row.get_mut(subtree.clone()));
+                for (x, f) in row_m.unwrap_or_default().iter_mut().zip(da) {
+                    *x = s_r.dot(f);
+                }
+            }
+        }
+        let f_j = deriv.o_fc[j];
+        for c in own {
+            if let (Some(df_dq), Some(s_c)) = (deriv.df_dq.get_mut(c), deriv.s.get(c)) {
+                *df_dq += s_c.cross_force(&f_j);
+            }
+        }
+    }
+    // M's other triangle, in one sequential sweep.
+    if MASS {
+        for r in 0..NV {
+            for c in 0..r {
+                data.mass_matrix[r][c] = data.mass_matrix[c][r];
+            }
+        }
+    }
+}
+
 /// For every column c (of body i), the rows of i and of the joints above
 /// it, which see the subtree's force change `df_dq_c` (and, above i, the
 /// turn `S_c ×* Fᶜᵢ`); and `M`'s entries there (rows above columns), then
@@ -464,5 +595,75 @@ fn subtree_columns_pass<
                 data.mass_matrix[r][c] = data.mass_matrix[c][r];
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::joint::{Axis, Joint};
+    use crate::spatial::{Force, Inertia, Motion, Spatial, Sym3, Transform, Vec3};
+    use crate::topology::Topology;
+
+    /// A free-flyer carrying three limbs of two links, numbered depth first.
+    fn limbs() -> Model<f64, 7, 13, 12> {
+        let parents = core::array::from_fn(|i| match i {
+            0 => None,
+            1 | 3 | 5 => Some(0),
+            _ => Some(i - 1),
+        });
+        let axes = [Axis::X, Axis::Y, Axis::Z];
+        Model::from_parts(
+            Topology::new(
+                parents,
+                core::array::from_fn(|i| if i == 0 { 7 } else { 1 }),
+                core::array::from_fn(|i| if i == 0 { 6 } else { 1 }),
+                13,
+            ),
+            core::array::from_fn(|i| match i {
+                0 => Joint::free_flyer(),
+                _ => Joint::revolute(axes[i % 3]),
+            }),
+            core::array::from_fn(|i| {
+                let k = i as f64;
+                Transform::from_translation(Vec3::new(0.1 + 0.05 * k, -0.2 + 0.03 * k, 0.3))
+            }),
+            core::array::from_fn(|i| {
+                let k = i as f64;
+                Inertia::new(
+                    1.0 + 0.3 * k,
+                    Vec3::new(0.05 * k, 0.1, -0.02 * k),
+                    Sym3::new(0.2 + 0.01 * k, 0.01, -0.02, 0.3, 0.015, 0.25 + 0.02 * k),
+                )
+            }),
+            Motion::new(Vec3::ZERO, Vec3::new(0.0, 0.0, -9.81)),
+        )
+    }
+
+    /// The rows pass against the plain columns pass on the state the
+    /// backward pass leaves: the same entries of `∂τ/∂q`, `∂τ/∂v` and `M`.
+    #[test]
+    fn the_rows_pass_matches_the_columns_pass() {
+        let model = limbs();
+        assert!(model.topology().subtrees_contiguous);
+        let mut q: [f64; 13] = core::array::from_fn(|k| 0.3 * (k as f64).sin() + 0.1);
+        model.normalize_unvalidated(&mut q);
+        let v: [f64; 12] = core::array::from_fn(|k| 0.5 * (k as f64 + 1.0).cos());
+        let a: [f64; 12] = core::array::from_fn(|k| 0.7 * (2.0 * k as f64).sin());
+        let f_ext: [Force<f64>; 7] = core::array::from_fn(|i| {
+            let k = i as f64;
+            Force::new(Vec3::new(0.1 * k, -0.2, 0.3), Vec3::new(1.0, 0.5 * k, -0.4))
+        });
+        let mut data = Data::<f64, 7, 12>::new();
+        let mut deriv = DerivativeData::<f64, 7, 12>::new();
+        world_pass(&model, &mut data, &mut deriv, &q, &v, &a, Some(&f_ext));
+        backward_pass::<f64, 7, 13, 12, Spatial, true>(&model, &mut data, &mut deriv, &[0.0; 12]);
+        let (mut data_rows, mut deriv_rows) = (data.clone(), deriv.clone());
+        subtree_rows_pass::<f64, 7, 13, 12, Spatial, true>(&model, &mut data_rows, &mut deriv_rows);
+        subtree_columns_pass::<f64, 7, 13, 12, Spatial, true>(&model, &mut data, &mut deriv);
+        assert_eq!(deriv_rows.dtau_dq, deriv.dtau_dq);
+        assert_eq!(deriv_rows.dtau_dv, deriv.dtau_dv);
+        assert_eq!(data_rows.mass_matrix, data.mass_matrix);
+        assert!(deriv.dtau_dq.iter().flatten().any(|x| *x != 0.0));
     }
 }
