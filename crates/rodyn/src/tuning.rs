@@ -106,6 +106,14 @@ pub(crate) const FUSED_PASSES: bool = OUT_OF_ORDER;
 /// instructions).
 pub(crate) const HOST_ORDER: bool = OUT_OF_ORDER;
 
+/// Whether a free flyer behind a placement without rotation (the usual
+/// floating base) takes its own transform, shifted, instead of composing
+/// it with the identity: on an out-of-order core the skipped 3x3 product
+/// is the gain. On an in-order core the test and the second form cost
+/// instructions and stack wherever joint transforms are formed, more than
+/// the product they skip.
+pub(crate) const FREE_FLYER_SHORTCUT: bool = OUT_OF_ORDER;
+
 #[cfg(test)]
 mod tests {
     /// The profile the build script chose, as its `cfg` value.

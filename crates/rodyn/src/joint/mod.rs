@@ -34,6 +34,7 @@ pub use revolute::Revolute;
 
 use crate::space::Geometry;
 use crate::spatial::{ArticulatedInertia6, Force, Mat3, Motion, Spatial, Transform};
+use crate::tuning::FREE_FLYER_SHORTCUT;
 use crate::Scalar;
 use core::fmt::Debug;
 
@@ -316,8 +317,9 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
             Self::Revolute(j) => j.placed_transform(placement, first(q)),
             // A floating base usually sits at the world's origin without a
             // turn: its pose is then the joint's own, and composing with
-            // the identity would be a full 3x3 product.
-            Self::FreeFlyer(_) if placement.rot == Mat3::IDENTITY => {
+            // the identity would be a full 3x3 product (a choice of the
+            // tuning profile).
+            Self::FreeFlyer(_) if FREE_FLYER_SHORTCUT && placement.rot == Mat3::IDENTITY => {
                 let x = self.transform(q);
                 Transform::new(x.rot, x.trans + placement.trans)
             }
