@@ -695,4 +695,39 @@ mod tests {
             Err(Error::NonFiniteResult { index: 5, .. })
         ));
     }
+
+    /// The configuration's finiteness test by sums passes finite
+    /// coordinates whose sum overflows (the joints are then walked and
+    /// find nothing) and names the joint of a NaN or of infinities of both
+    /// signs, which would cancel to NaN in the sum.
+    #[test]
+    fn configuration_check_overflowing_sum_and_named_joint() {
+        use crate::joint::{Axis, ConfigurationError, Joint};
+        use crate::spatial::{Motion, Transform, Vec3};
+        let link = crate::spatial::Inertia::point_mass(1.0, Vec3::new(0.5, 0.0, 0.0));
+        let chain: Model<f64, 5, 5, 5> = Model::new(
+            [None, Some(0), Some(1), Some(2), Some(3)],
+            [Joint::revolute(Axis::Z); 5],
+            [Transform::IDENTITY; 5],
+            [link; 5],
+            Motion::new(Vec3::ZERO, Vec3::new(0.0, -9.81, 0.0)),
+        );
+        assert!(chain.check_configuration(&[f64::MAX; 5]).is_ok());
+        let mut q = [0.1; 5];
+        q[3] = f64::NAN;
+        assert!(matches!(
+            chain.check_configuration(&q),
+            Err(Error::InvalidConfiguration {
+                joint: 3,
+                reason: ConfigurationError::NonFinite
+            })
+        ));
+        q[3] = 0.1;
+        q[1] = f64::INFINITY;
+        q[4] = f64::NEG_INFINITY;
+        assert!(matches!(
+            chain.check_configuration(&q),
+            Err(Error::InvalidConfiguration { joint: 1, .. })
+        ));
+    }
 }
