@@ -114,6 +114,15 @@ pub(crate) const HOST_ORDER: bool = OUT_OF_ORDER;
 /// the product they skip.
 pub(crate) const FREE_FLYER_SHORTCUT: bool = OUT_OF_ORDER;
 
+/// Whether the centroidal map's poses form every joint transform first and
+/// then compose the chain with the products that skip the zeros of a
+/// quarter-turn placement (`Geometry::then_turned_joint`): out of order,
+/// the chain's products then have the vector registers to themselves. An
+/// in-order core would pay for storing the transforms and reading them
+/// back, and for the tests of the placement's form; it keeps one loop and
+/// `then_joint`.
+pub(crate) const TURNED_POSES: bool = OUT_OF_ORDER;
+
 #[cfg(test)]
 mod tests {
     /// The profile the build script chose, as its `cfg` value.

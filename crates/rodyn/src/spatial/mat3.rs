@@ -173,6 +173,36 @@ impl<S: Scalar> Mat3<S> {
         let m = &self.m;
         Self::from_rows([turn(&m[0]), turn(&m[1]), turn(&m[2])])
     }
+    /// `self * r` for an `r` that carries coordinate axis `K` onto axis
+    /// `U` (its column K is zero but for row U, and its row U zero but for
+    /// column K), as a quarter turn followed by a rotation about K does:
+    /// column K of the product is `self`'s column U scaled, and the other
+    /// two mix `self`'s other two columns. Each entry is summed in the
+    /// order `self * r` sums it, so that the result is the full product's,
+    /// bit for bit (up to the sign of a zero).
+    #[inline(always)]
+    #[must_use]
+    pub(crate) fn mul_carried_axis<const K: usize, const U: usize>(&self, r: &Self) -> Self {
+        let (i, j) = ((K + 1) % 3, (K + 2) % 3);
+        // The two rows of `r` besides U, in index order.
+        let (a, b) = if U == 0 {
+            (1, 2)
+        } else if U == 1 {
+            (0, 2)
+        } else {
+            (0, 1)
+        };
+        let r = &r.m;
+        let turn = |row: &[S; 3]| {
+            let mut out = [S::ZERO; 3];
+            out[K] = row[U] * r[U][K];
+            out[i] = row[a] * r[a][i] + row[b] * r[b][i];
+            out[j] = row[a] * r[a][j] + row[b] * r[b][j];
+            out
+        };
+        let m = &self.m;
+        Self::from_rows([turn(&m[0]), turn(&m[1]), turn(&m[2])])
+    }
     /// `self` with columns `I` and `J` turned by the angle of `(s, c)`.
     #[inline(always)]
     fn mul_plane_rotation<const I: usize, const J: usize>(&self, s: S, c: S) -> Self {
