@@ -292,42 +292,57 @@ pub(crate) fn poses<S: Scalar, const NB: usize, const NQ: usize, const NV: usize
     q: &[S; NQ],
 ) {
     let sin_cos = JointSinCos::at(model, q);
-    // Out of order, the joint transforms first, in a loop of their own, so
-    // that the chain's products have the registers to themselves: formed
-    // beside them, each transform and the parent's pose spilled each
-    // other, and the quarter-turn products (`then_turned_joint`) saved
-    // nothing. A choice of the tuning profile.
+    let mut previous = <G::Transform<S> as RigidTransform<S>>::IDENTITY;
     if TURNED_POSES {
+        // Out of order, the joint transforms first, in a loop of their
+        // own, so that the chain's products have the registers to
+        // themselves (formed beside them, each transform and the parent's
+        // pose spilled each other, and the quarter-turn products of
+        // `then_turned_joint` saved nothing); each then read by reference,
+        // so that a product loads only the entries it uses.
         for i in 0..NB {
             data.li_m_i[i] = body_transform_with(model, i, q, sin_cos.formed());
         }
+        for i in 0..NB {
+            let li_m_i = &data.li_m_i[i];
+            previous = match chain_parent(model, &data.o_m_i, i, previous) {
+                Some(o_m_p) => G::then_turned_joint(&o_m_p, li_m_i, model.joint(i)),
+                None => *li_m_i,
+            };
+            data.o_m_i[i] = previous;
+        }
+        return;
     }
-    let mut previous = <G::Transform<S> as RigidTransform<S>>::IDENTITY;
     for i in 0..NB {
-        let li_m_i = if TURNED_POSES {
-            data.li_m_i[i]
-        } else {
-            body_transform_with(model, i, q, sin_cos.formed())
-        };
-        // `pose_step`'s choice of the parent's pose, made on values: a
-        // reference to either the previous pose or a stored one made the
-        // previous pose go through the stack behind a general placement.
-        // The joint Jacobians, whose columns read the pose too, keep
-        // `pose_step`, which serves them better.
-        let parent = match model.parent(i) {
-            Some(p) if p + 1 == i => Some(previous),
-            Some(p) => data.o_m_i.get(p).copied(),
-            None => None,
-        };
-        previous = match parent {
-            Some(o_m_p) if TURNED_POSES => G::then_turned_joint(&o_m_p, &li_m_i, model.joint(i)),
+        let li_m_i = body_transform_with(model, i, q, sin_cos.formed());
+        previous = match chain_parent(model, &data.o_m_i, i, previous) {
             Some(o_m_p) => G::then_joint(&o_m_p, &li_m_i, model.joint(i)),
             None => li_m_i,
         };
-        if !TURNED_POSES {
-            data.li_m_i[i] = li_m_i;
-        }
+        data.li_m_i[i] = li_m_i;
         data.o_m_i[i] = previous;
+    }
+}
+
+/// Body i's parent's pose for [`poses`]: `previous` (body i - 1's) when
+/// that is the parent, else the stored one.
+///
+/// `pose_step`'s choice of the parent's pose, made on values: a reference
+/// to either the previous pose or a stored one made the previous pose go
+/// through the stack behind a general placement. The joint Jacobians,
+/// whose columns read the pose too, keep `pose_step`, which serves them
+/// better.
+#[inline(always)]
+fn chain_parent<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
+    model: &Model<S, NB, NQ, NV, G>,
+    o_m_i: &[G::Transform<S>; NB],
+    i: usize,
+    previous: G::Transform<S>,
+) -> Option<G::Transform<S>> {
+    match model.parent(i) {
+        Some(p) if p + 1 == i => Some(previous),
+        Some(p) => o_m_i.get(p).copied(),
+        None => None,
     }
 }
 
