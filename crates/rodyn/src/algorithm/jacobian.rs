@@ -45,7 +45,7 @@
 //! # Ok::<(), rodyn::Error>(())
 //! ```
 
-use super::common::{pose_step, JointSinCos};
+use super::common::{pose_step, poses, JointSinCos};
 use super::frames::{
     express_world_motion, frame_placement, frame_velocity, zero_motion, FrameSpace, ReferenceFrame,
 };
@@ -56,6 +56,7 @@ use crate::frame::Frame;
 use crate::model::Model;
 use crate::space::{MotionVector, RigidTransform, Space, VectorOps};
 use crate::spatial::{Motion, Spatial};
+use crate::tuning::TURNED_POSES;
 use crate::Scalar;
 
 /// The joint Jacobians' workspace: NV columns in the world, and their time
@@ -107,6 +108,20 @@ pub fn joint_jacobians<
 ) -> Result<()> {
     model.check_configuration(q)?;
     let t = model.topology();
+    if TURNED_POSES {
+        // Out of order, the centroidal map's poses (the joint transforms
+        // first, then the chain with the quarter-turn products), then the
+        // columns from the stored poses.
+        poses(model, data, q);
+        for i in 0..NB {
+            let joint = model.joint(i);
+            let (iv, nv) = t.velocity_range(i);
+            for (k, column) in jac.j[iv..iv + nv].iter_mut().enumerate() {
+                *column = G::act_subspace_column(&data.o_m_i[i], joint, k);
+            }
+        }
+        return Ok(());
+    }
     let sin_cos = JointSinCos::at(model, q);
     let mut o_m_i = <G::Transform<S> as RigidTransform<S>>::IDENTITY;
     for i in 0..NB {

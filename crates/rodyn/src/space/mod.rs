@@ -268,9 +268,11 @@ pub trait Geometry: Copy + Debug + PartialEq + 'static {
     }
     /// [`then_joint`](Self::then_joint), where a geometry may also skip
     /// the products with the zeros of `x` behind a quarter-turn placement.
-    /// Its own hook because the tests for that form cost the passes whose
-    /// models have no such placement more than they save: the centroidal
-    /// map's poses take it, the joint Jacobians' do not.
+    /// Its own hook because the tests for that form pay only where the
+    /// chain's products have the registers to themselves (the poses of the
+    /// centroidal map and of the joint Jacobians, out of order, whose joint
+    /// transforms are formed first); where each pose is composed beside
+    /// other work they cost more than they save.
     #[inline(always)]
     fn then_turned_joint<S: Scalar>(
         parent: &Self::Transform<S>,

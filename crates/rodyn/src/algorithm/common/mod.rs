@@ -284,7 +284,8 @@ pub(crate) fn pose_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: u
 
 /// Body poses at `q` (as [`forward_kinematics`](super::kinematics::forward_kinematics): `data.li_m_i`,
 /// `data.o_m_i`), the joint angles' sines and cosines formed first on
-/// hosts. `q` must already be checked.
+/// hosts: the centroidal map's and, out of order, the joint Jacobians'.
+/// `q` must already be checked.
 #[inline]
 pub(crate) fn poses<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     model: &Model<S, NB, NQ, NV, G>,
@@ -327,11 +328,10 @@ pub(crate) fn poses<S: Scalar, const NB: usize, const NQ: usize, const NV: usize
 /// Body i's parent's pose for [`poses`]: `previous` (body i - 1's) when
 /// that is the parent, else the stored one.
 ///
-/// `pose_step`'s choice of the parent's pose, made on values: a reference
-/// to either the previous pose or a stored one made the previous pose go
-/// through the stack behind a general placement. The joint Jacobians,
-/// whose columns read the pose too, keep `pose_step`, which serves them
-/// better.
+/// [`pose_step`]'s choice of the parent's pose, made on values: a
+/// reference to either the previous pose or a stored one made the previous
+/// pose go through the stack behind a general placement. (`pose_step`,
+/// whose callers read the pose beside other work, keeps the reference.)
 #[inline(always)]
 fn chain_parent<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     model: &Model<S, NB, NQ, NV, G>,
