@@ -109,7 +109,7 @@ impl FrameSpace for Spatial {
         // one); three entries tell.
         let r = &i.rot_inertia;
         if !S::all_zero([r.xy, r.xz, r.yz]) {
-            return i.act(x);
+            return Inertia::new(i.mass, x.act_point(&i.com), r.rotate_row_sums(&x.rot));
         }
         let m = &x.rot.m;
         let u = |k: usize, d: S| [m[0][k] * d, m[1][k] * d, m[2][k] * d];
