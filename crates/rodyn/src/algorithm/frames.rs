@@ -63,6 +63,14 @@ pub trait FrameSpace: Space {
     fn world_inertia<S: Scalar>(i: &Self::Inertia<S>, x: &Self::Transform<S>) -> Self::Inertia<S> {
         i.act(x)
     }
+    /// `i` moved by the translation that takes its centre of mass to the
+    /// origin (the centroidal inertia `I_g` of a model whose composite is
+    /// `i`). A geometry may override it with an equal form that skips the
+    /// rotation by the identity.
+    #[inline(always)]
+    fn about_own_centre<S: Scalar>(i: &Self::Inertia<S>) -> Self::Inertia<S> {
+        i.act(&Self::from_translation(&i.com()).inverse())
+    }
     /// The transform with `x`'s translation and no rotation.
     #[inline]
     fn translation_only<S: Scalar>(x: &Self::Transform<S>) -> Self::Transform<S> {
@@ -127,6 +135,10 @@ impl FrameSpace for Spatial {
                 entry(2, 2),
             ),
         )
+    }
+    #[inline(always)]
+    fn about_own_centre<S: Scalar>(i: &Inertia<S>) -> Inertia<S> {
+        Inertia::new(i.mass, Vec3::ZERO, i.rot_inertia)
     }
     #[inline]
     fn linear_part<S: Scalar>(m: &Motion<S>) -> Motion<S> {
