@@ -412,6 +412,54 @@ mod tests {
         }
     }
 
+    /// The centroidal pass's forms of the general rotation
+    /// (`Sym3::rotate_row_sums`) and of `I_g` (`about_own_centre`) give
+    /// the book's (`Sym3::rotate`, `Inertia::act` by the translation to the
+    /// centre), to rounding, on a spread of rotations and inertias.
+    #[test]
+    fn centroidal_forms_are_the_book_forms() {
+        // Deterministic, well spread values without a generator.
+        let v = |k: f64| {
+            Vec3::new(
+                (1.3 * k).sin(),
+                (0.7 * k + 0.2).cos(),
+                (2.1 * k + 0.4).sin(),
+            )
+        };
+        for n in 0..40 {
+            let k = f64::from(n);
+            let axis = v(k);
+            let rot = Mat3::from_axis_angle(&(axis * (1.0 / axis.norm())), 3.0 * (0.9 * k).sin());
+            let (d, o) = (v(k + 0.5), v(k + 1.5));
+            let sym = Sym3::new(
+                1.0 + d.x.abs(),
+                0.1 * o.x,
+                0.1 * o.y,
+                1.0 + d.y.abs(),
+                0.1 * o.z,
+                1.0 + d.z.abs(),
+            );
+            let (fast, book) = (sym.rotate_row_sums(&rot), sym.rotate(&rot));
+            let e = fast - book;
+            let size = [e.xx, e.xy, e.xz, e.yy, e.yz, e.zz].map(f64::abs);
+            assert!(size.iter().all(|e| *e <= 1e-14), "{sym:?} {rot:?}");
+            let total = Inertia::new(2.0 + d.x.abs(), v(k + 2.5) * 3.0, sym);
+            let centred = Spatial::about_own_centre(&total);
+            let moved = total.act(&Transform::from_translation(total.com).inverse());
+            assert_eq!(centred.mass, moved.mass);
+            assert!(
+                centred.com.norm() == 0.0 && moved.com.norm() <= 1e-15,
+                "{moved:?}"
+            );
+            let e = centred.rot_inertia - moved.rot_inertia;
+            let size = [e.xx, e.xy, e.xz, e.yy, e.yz, e.zz].map(f64::abs);
+            assert!(
+                size.iter().all(|e| *e <= 1e-15),
+                "{centred:?} against {moved:?}"
+            );
+        }
+    }
+
     /// The 3-D shortcuts for a joint's world column and its centroidal
     /// column give the book's forms (`x Sₖ`, `ᴳX_o* Iᶜ x Sₖ`) for every
     /// joint type and column.
