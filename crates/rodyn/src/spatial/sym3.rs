@@ -134,31 +134,6 @@ impl<S: Scalar> Sym3<S> {
             dot3(&r[2], &t2),
         )
     }
-    /// `R self Rᵀ` as [`rotate`](Self::rotate), in the order of `T = R S`:
-    /// T's rows as sums of `self`'s rows scaled by R's entries (27
-    /// products), then `(R S Rᵀ)ᵢⱼ = tᵢ · rⱼ` on the upper triangle (18).
-    /// The same products as `rotate`'s, which the compiler pairs into SSE2
-    /// instructions with fewer shuffles here, and with more in the other
-    /// algorithms' contexts: each keeps the form that serves it.
-    #[must_use]
-    #[inline(always)]
-    pub(crate) fn rotate_row_sums(&self, r: &Mat3<S>) -> Self {
-        let (rows, r) = (self.rows(), &r.m);
-        let t = |i: usize| -> [S; 3] {
-            core::array::from_fn(|k| {
-                r[i][0] * rows[0][k] + r[i][1] * rows[1][k] + r[i][2] * rows[2][k]
-            })
-        };
-        let (t0, t1, t2) = (t(0), t(1), t(2));
-        Self::new(
-            dot3(&t0, &r[0]),
-            dot3(&t0, &r[1]),
-            dot3(&t0, &r[2]),
-            dot3(&t1, &r[1]),
-            dot3(&t1, &r[2]),
-            dot3(&t2, &r[2]),
-        )
-    }
     /// `Rᵀ self R`: the tensor of `self` brought back through `R`.
     #[must_use]
     pub fn rotate_inv(&self, r: &Mat3<S>) -> Self {
