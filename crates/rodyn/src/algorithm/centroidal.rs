@@ -258,7 +258,7 @@ fn map_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Fra
     let total = total.unwrap_or(<G::Inertia<S> as BodyInertia<S>>::ZERO);
     cd.total = total;
     let com = total.com();
-    cd.ig = total.act(&G::from_translation(&com).inverse());
+    cd.ig = G::about_own_centre(&total);
     let t = model.topology();
     for i in 0..NB {
         let joint = model.joint(i);
