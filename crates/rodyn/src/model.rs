@@ -431,8 +431,10 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
         // (a unit quaternion, a user's rule) are then asked. Walking and
         // slicing every joint cost instructions on every joint on the
         // Cortex-M4 (docs/sections/performance_notebook.md, "Model
-        // checks"). A non-finite `q` takes the joint-by-joint walk below,
-        // which names the joint exactly as before.
+        // checks"). Those are asked only their further conditions
+        // (`check_finite_configuration`: a free flyer's quaternion norm),
+        // finiteness being settled. A non-finite `q` takes the
+        // joint-by-joint walk below, which names the joint exactly as before.
         if sum_is_finite(q) {
             if !self.constrained_configuration {
                 return Ok(());
@@ -440,7 +442,7 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
             for (i, joint) in self.joints.iter().enumerate() {
                 if joint.constrains_configuration() {
                     joint
-                        .check_configuration(self.joint_q(i, q)?)
+                        .check_finite_configuration(self.joint_q(i, q)?)
                         .map_err(|reason| Error::InvalidConfiguration { joint: i, reason })?;
                 }
             }

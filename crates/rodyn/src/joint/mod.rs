@@ -156,6 +156,13 @@ pub trait JointModel<S: Scalar, G: Geometry>: Copy + Debug {
     fn constrains_configuration(&self) -> bool {
         true
     }
+    /// [`check_configuration`](Self::check_configuration) of a `q` already
+    /// known to be finite: only the further conditions need asking. The
+    /// default asks them all.
+    #[inline]
+    fn check_finite_configuration(&self, q: &[S]) -> Result<(), ConfigurationError> {
+        self.check_configuration(q)
+    }
     /// Projects `q` back onto the configuration manifold (renormalises quaternions).
     fn normalize(&self, q: &mut [S]);
 }
@@ -495,6 +502,15 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
                     Err(ConfigurationError::NonFinite)
                 }
             }
+        }
+    }
+    fn check_finite_configuration(&self, q: &[S]) -> Result<(), ConfigurationError> {
+        match self {
+            Self::FreeFlyer(j) => q
+                .first_chunk()
+                .map_or(Err(ConfigurationError::NonFinite), |q| j.check_unit(q)),
+            Self::Custom(c) => c.behaviour.check_configuration(q),
+            _ => Ok(()),
         }
     }
     fn normalize(&self, q: &mut [S]) {
