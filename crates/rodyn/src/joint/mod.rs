@@ -326,8 +326,12 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
             // turn: its pose is then the joint's own, and composing with
             // the identity would be a full 3x3 product (a choice of the
             // tuning profile).
-            Self::FreeFlyer(_) if FREE_FLYER_SHORTCUT && placement.rot == Mat3::IDENTITY => {
-                let x = self.transform(q);
+            Self::FreeFlyer(j) if FREE_FLYER_SHORTCUT && placement.rot.is_identity() => {
+                // Its own transform directly: through `transform`'s match
+                // on the kind, it stayed out of line.
+                let x = q
+                    .first_chunk()
+                    .map_or(Transform::IDENTITY, |q| j.transform(q));
                 Transform::new(x.rot, x.trans + placement.trans)
             }
             _ => placement.compose(&self.transform(q)),
