@@ -104,13 +104,21 @@ fn reduce(x: f64) -> (u64, f64) {
 #[inline]
 pub(crate) fn sin_cos_array<const N: usize>(x: &[f64; N]) -> ([f64; N], [f64; N]) {
     let (mut sin, mut cos) = ([0.0; N], [0.0; N]);
-    let pairs = N / 2;
-    for p in 0..pairs {
-        let (a, b) = (fast_sin_cos(x[2 * p]), fast_sin_cos(x[2 * p + 1]));
-        (sin[2 * p], cos[2 * p], sin[2 * p + 1], cos[2 * p + 1]) = (a.0, a.1, b.0, b.1);
+    // An odd count leaves one angle alone: the first, a model's root,
+    // whose angle is zero when it has none (a floating base's); zero's
+    // pair is then written without the kernels (the same bits).
+    let lone = N % 2;
+    if lone == 1 {
+        (sin[0], cos[0]) = if x[0].to_bits() == 0 {
+            (0.0, 1.0)
+        } else {
+            fast_sin_cos(x[0])
+        };
     }
-    if N % 2 == 1 {
-        (sin[N - 1], cos[N - 1]) = fast_sin_cos(x[N - 1]);
+    for p in 0..N / 2 {
+        let (i, j) = (lone + 2 * p, lone + 2 * p + 1);
+        let (a, b) = (fast_sin_cos(x[i]), fast_sin_cos(x[j]));
+        (sin[i], cos[i], sin[j], cos[j]) = (a.0, a.1, b.0, b.1);
     }
     for k in 0..N {
         // One comparison: NaN fails it too.
