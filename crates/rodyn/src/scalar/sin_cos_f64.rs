@@ -120,11 +120,14 @@ pub(crate) fn sin_cos_array<const N: usize>(x: &[f64; N]) -> ([f64; N], [f64; N]
         let (a, b) = (fast_sin_cos(x[i]), fast_sin_cos(x[j]));
         (sin[i], cos[i], sin[j], cos[j]) = (a.0, a.1, b.0, b.1);
     }
-    for k in 0..N {
-        // One comparison: NaN fails it too.
-        let fast = x[k].abs() <= FAST_LIMIT;
-        if !fast {
-            (sin[k], cos[k]) = library_sin_cos(x[k]);
+    // One test for the whole array, whose comparisons pair up (NaN fails
+    // them too), before any angle is looked at again.
+    let slow = x.iter().fold(false, |slow, x| slow | !(x.abs() <= FAST_LIMIT));
+    if slow {
+        for k in 0..N {
+            if !(x[k].abs() <= FAST_LIMIT) {
+                (sin[k], cos[k]) = library_sin_cos(x[k]);
+            }
         }
     }
     (sin, cos)
