@@ -33,7 +33,7 @@ pub use prismatic::Prismatic;
 pub use revolute::Revolute;
 
 use crate::space::Geometry;
-use crate::spatial::{ArticulatedInertia6, Force, Mat3, Motion, Spatial, Transform};
+use crate::spatial::{ArticulatedInertia6, Force, Motion, Spatial, Transform};
 use crate::tuning::FREE_FLYER_SHORTCUT;
 use crate::Scalar;
 use core::fmt::Debug;

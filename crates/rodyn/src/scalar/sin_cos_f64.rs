@@ -121,10 +121,11 @@ pub(crate) fn sin_cos_array<const N: usize>(x: &[f64; N], sin: &mut [f64; N], co
     }
     // One test for the whole array, whose comparisons pair up (NaN fails
     // them too), before any angle is looked at again.
-    let slow = x.iter().fold(false, |slow, x| slow | !(x.abs() <= FAST_LIMIT));
-    if slow {
+    let all_fast = x.iter().fold(true, |all, x| all & (x.abs() <= FAST_LIMIT));
+    if !all_fast {
         for k in 0..N {
-            if !(x[k].abs() <= FAST_LIMIT) {
+            let fast = x[k].abs() <= FAST_LIMIT;
+            if !fast {
                 (sin[k], cos[k]) = library_sin_cos(x[k]);
             }
         }

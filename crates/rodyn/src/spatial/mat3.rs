@@ -332,7 +332,11 @@ mod tests {
     /// each entry's change included.
     #[test]
     fn is_identity_is_the_comparison() {
-        let mut cases = vec![Mat3::IDENTITY, Mat3::ZERO, Mat3::from_axis_angle(&Vec3::new(0.0, 0.0, 1.0), 0.3)];
+        let mut cases = vec![
+            Mat3::IDENTITY,
+            Mat3::ZERO,
+            Mat3::from_axis_angle(&Vec3::new(0.0, 0.0, 1.0), 0.3),
+        ];
         for r in 0..3 {
             for c in 0..3 {
                 for x in [-0.0, 0.0, 1.0, -1.0, 1e-300, f64::NAN, f64::INFINITY] {
