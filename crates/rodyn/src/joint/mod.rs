@@ -529,3 +529,38 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
         }
     }
 }
+
+#[cfg(all(test, feature = "std"))]
+mod tests {
+    use super::{Axis, FreeFlyer, Joint, JointModel};
+    use crate::spatial::Spatial;
+
+    /// For a finite `q`, the check without the finiteness test answers as
+    /// the whole check: unit, non-unit and zero quaternions, short slices.
+    #[test]
+    fn finite_check_is_the_whole_check_on_finite_q() {
+        let joints: [Joint<f64>; 3] = [
+            Joint::FreeFlyer(FreeFlyer),
+            Joint::revolute(Axis::X),
+            Joint::Fixed,
+        ];
+        let half = 0.5_f64.sqrt();
+        let qs: [&[f64]; 6] = [
+            &[0.1, -2.0, 3.0, 0.0, 0.0, 0.0, 1.0],
+            &[0.0, 0.0, 0.0, half, 0.0, -half, 0.0],
+            &[1.0, 2.0, 3.0, 0.0, 0.0, 0.0, 1.01],
+            &[1.0, 2.0, 3.0, 0.0, 0.0, 0.0, 0.0],
+            &[0.3],
+            &[],
+        ];
+        for joint in &joints {
+            for q in qs {
+                assert_eq!(
+                    JointModel::<f64, Spatial>::check_finite_configuration(joint, q),
+                    JointModel::<f64, Spatial>::check_configuration(joint, q),
+                    "{joint:?} at {q:?}"
+                );
+            }
+        }
+    }
+}
