@@ -23,6 +23,7 @@ use crate::planar::{Planar, PlanarInertia, PlanarJoint, PlanarMotion, PlanarTran
 use crate::space::{BodyInertia, Space, VectorOps};
 use crate::spatial::{Inertia, Motion, Spatial, Transform};
 use crate::topology::Topology;
+use crate::tuning::FINITE_JOINT_CHECKS;
 use crate::Scalar;
 
 /// A multibody tree with `NB` bodies, `NQ` configuration and `NV` velocity
@@ -431,17 +432,26 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
         // (a unit quaternion, a user's rule) are then asked. Walking and
         // slicing every joint cost instructions on every joint on the
         // Cortex-M4 (docs/sections/performance_notebook.md, "Model
-        // checks"). A non-finite `q` takes the joint-by-joint walk below,
-        // which names the joint exactly as before.
+        // checks"). Out of order those are asked only their further
+        // conditions (`check_finite_configuration`: a free flyer's
+        // quaternion norm), finiteness being settled (`FINITE_JOINT_CHECKS`).
+        // A non-finite `q` takes the joint-by-joint walk below, which names
+        // the joint exactly as before.
         if sum_is_finite(q) {
             if !self.constrained_configuration {
                 return Ok(());
             }
             for (i, joint) in self.joints.iter().enumerate() {
                 if joint.constrains_configuration() {
-                    joint
-                        .check_configuration(self.joint_q(i, q)?)
-                        .map_err(|reason| Error::InvalidConfiguration { joint: i, reason })?;
+                    if FINITE_JOINT_CHECKS {
+                        joint
+                            .check_finite_configuration(self.joint_q(i, q)?)
+                            .map_err(|reason| Error::InvalidConfiguration { joint: i, reason })?;
+                    } else {
+                        joint
+                            .check_configuration(self.joint_q(i, q)?)
+                            .map_err(|reason| Error::InvalidConfiguration { joint: i, reason })?;
+                    }
                 }
             }
             return Ok(());

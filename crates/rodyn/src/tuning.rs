@@ -114,6 +114,14 @@ pub(crate) const HOST_ORDER: bool = OUT_OF_ORDER;
 /// the product they skip.
 pub(crate) const FREE_FLYER_SHORTCUT: bool = OUT_OF_ORDER;
 
+/// Whether `Model::check_configuration`, once the configuration's sum has
+/// shown every entry finite, asks the joints with a further condition only
+/// that condition (`JointModel::check_finite_configuration`: a free
+/// flyer's quaternion norm, without testing its seven entries again). On
+/// the Cortex-M4 the second function cost the quadruped's joint Jacobians,
+/// CCRBA and contact images more instructions than it saved its dynamics.
+pub(crate) const FINITE_JOINT_CHECKS: bool = OUT_OF_ORDER;
+
 /// Whether the centroidal map's poses form every joint transform first and
 /// then compose the chain with the products that skip the zeros of a
 /// quarter-turn placement (`Geometry::then_turned_joint`), and the joint

@@ -156,6 +156,12 @@ impl FreeFlyer {
         if !q.iter().all(|x| x.is_finite()) {
             return Err(ConfigurationError::NonFinite);
         }
+        self.check_unit(q)
+    }
+    /// [`check_configuration`](Self::check_configuration) of a finite `q`:
+    /// the quaternion's norm alone.
+    #[inline]
+    pub(crate) fn check_unit<S: Scalar>(&self, q: &[S; 7]) -> Result<(), ConfigurationError> {
         // |n² - 1| ≈ 2 |n - 1|; compared in S to keep f64 off the MCU's hot path.
         let norm_squared = q[3] * q[3] + q[4] * q[4] + q[5] * q[5] + q[6] * q[6];
         let tolerance = S::from_f64(2.0 * QUATERNION_TOLERANCE_EPS * S::EPSILON);

@@ -33,7 +33,7 @@ pub use prismatic::Prismatic;
 pub use revolute::Revolute;
 
 use crate::space::Geometry;
-use crate::spatial::{ArticulatedInertia6, Force, Mat3, Motion, Spatial, Transform};
+use crate::spatial::{ArticulatedInertia6, Force, Motion, Spatial, Transform};
 use crate::tuning::FREE_FLYER_SHORTCUT;
 use crate::Scalar;
 use core::fmt::Debug;
@@ -155,6 +155,13 @@ pub trait JointModel<S: Scalar, G: Geometry>: Copy + Debug {
     #[inline]
     fn constrains_configuration(&self) -> bool {
         true
+    }
+    /// [`check_configuration`](Self::check_configuration) of a `q` already
+    /// known to be finite: only the further conditions need asking. The
+    /// default asks them all.
+    #[inline]
+    fn check_finite_configuration(&self, q: &[S]) -> Result<(), ConfigurationError> {
+        self.check_configuration(q)
     }
     /// Projects `q` back onto the configuration manifold (renormalises quaternions).
     fn normalize(&self, q: &mut [S]);
@@ -319,8 +326,12 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
             // turn: its pose is then the joint's own, and composing with
             // the identity would be a full 3x3 product (a choice of the
             // tuning profile).
-            Self::FreeFlyer(_) if FREE_FLYER_SHORTCUT && placement.rot == Mat3::IDENTITY => {
-                let x = self.transform(q);
+            Self::FreeFlyer(j) if FREE_FLYER_SHORTCUT && placement.rot.is_identity() => {
+                // Its own transform directly: through `transform`'s match
+                // on the kind, it stayed out of line.
+                let x = q
+                    .first_chunk()
+                    .map_or(Transform::IDENTITY, |q| j.transform(q));
                 Transform::new(x.rot, x.trans + placement.trans)
             }
             _ => placement.compose(&self.transform(q)),
@@ -497,6 +508,15 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
             }
         }
     }
+    fn check_finite_configuration(&self, q: &[S]) -> Result<(), ConfigurationError> {
+        match self {
+            Self::FreeFlyer(j) => q
+                .first_chunk()
+                .map_or(Err(ConfigurationError::NonFinite), |q| j.check_unit(q)),
+            Self::Custom(c) => c.behaviour.check_configuration(q),
+            _ => Ok(()),
+        }
+    }
     fn normalize(&self, q: &mut [S]) {
         match self {
             Self::FreeFlyer(j) => {
@@ -506,6 +526,41 @@ impl<S: Scalar> JointModel<S, Spatial> for Joint<S> {
             }
             Self::Custom(c) => c.behaviour.normalize(q),
             _ => {}
+        }
+    }
+}
+
+#[cfg(all(test, feature = "std"))]
+mod tests {
+    use super::{Axis, FreeFlyer, Joint, JointModel};
+    use crate::spatial::Spatial;
+
+    /// For a finite `q`, the check without the finiteness test answers as
+    /// the whole check: unit, non-unit and zero quaternions, short slices.
+    #[test]
+    fn finite_check_is_the_whole_check_on_finite_q() {
+        let joints: [Joint<f64>; 3] = [
+            Joint::FreeFlyer(FreeFlyer),
+            Joint::revolute(Axis::X),
+            Joint::Fixed,
+        ];
+        let half = 0.5_f64.sqrt();
+        let qs: [&[f64]; 6] = [
+            &[0.1, -2.0, 3.0, 0.0, 0.0, 0.0, 1.0],
+            &[0.0, 0.0, 0.0, half, 0.0, -half, 0.0],
+            &[1.0, 2.0, 3.0, 0.0, 0.0, 0.0, 1.01],
+            &[1.0, 2.0, 3.0, 0.0, 0.0, 0.0, 0.0],
+            &[0.3],
+            &[],
+        ];
+        for joint in &joints {
+            for q in qs {
+                assert_eq!(
+                    JointModel::<f64, Spatial>::check_finite_configuration(joint, q),
+                    JointModel::<f64, Spatial>::check_configuration(joint, q),
+                    "{joint:?} at {q:?}"
+                );
+            }
         }
     }
 }

@@ -102,24 +102,34 @@ fn reduce(x: f64) -> (u64, f64) {
 /// per lane would not pack). Angles outside the fast range are then
 /// redone one by one.
 #[inline]
-pub(crate) fn sin_cos_array<const N: usize>(x: &[f64; N]) -> ([f64; N], [f64; N]) {
-    let (mut sin, mut cos) = ([0.0; N], [0.0; N]);
-    let pairs = N / 2;
-    for p in 0..pairs {
-        let (a, b) = (fast_sin_cos(x[2 * p]), fast_sin_cos(x[2 * p + 1]));
-        (sin[2 * p], cos[2 * p], sin[2 * p + 1], cos[2 * p + 1]) = (a.0, a.1, b.0, b.1);
+pub(crate) fn sin_cos_array<const N: usize>(x: &[f64; N], sin: &mut [f64; N], cos: &mut [f64; N]) {
+    // An odd count leaves one angle alone: the first, a model's root,
+    // whose angle is zero when it has none (a floating base's); zero's
+    // pair is then written without the kernels (the same bits).
+    let lone = N % 2;
+    if lone == 1 {
+        (sin[0], cos[0]) = if x[0].to_bits() == 0 {
+            (0.0, 1.0)
+        } else {
+            fast_sin_cos(x[0])
+        };
     }
-    if N % 2 == 1 {
-        (sin[N - 1], cos[N - 1]) = fast_sin_cos(x[N - 1]);
+    for p in 0..N / 2 {
+        let (i, j) = (lone + 2 * p, lone + 2 * p + 1);
+        let (a, b) = (fast_sin_cos(x[i]), fast_sin_cos(x[j]));
+        (sin[i], cos[i], sin[j], cos[j]) = (a.0, a.1, b.0, b.1);
     }
-    for k in 0..N {
-        // One comparison: NaN fails it too.
-        let fast = x[k].abs() <= FAST_LIMIT;
-        if !fast {
-            (sin[k], cos[k]) = library_sin_cos(x[k]);
+    // One test for the whole array, whose comparisons pair up (NaN fails
+    // them too), before any angle is looked at again.
+    let all_fast = x.iter().fold(true, |all, x| all & (x.abs() <= FAST_LIMIT));
+    if !all_fast {
+        for k in 0..N {
+            let fast = x[k].abs() <= FAST_LIMIT;
+            if !fast {
+                (sin[k], cos[k]) = library_sin_cos(x[k]);
+            }
         }
     }
-    (sin, cos)
 }
 
 /// [`sin_cos`]'s fast path without a jump: meaningless outside it.
@@ -229,7 +239,8 @@ mod tests {
 
     /// Every angle of `x` through [`sin_cos_array`] against [`sin_cos`], bit for bit.
     fn assert_array_matches<const N: usize>(x: [f64; N]) {
-        let (sin, cos) = sin_cos_array(&x);
+        let (mut sin, mut cos) = ([0.0; N], [0.0; N]);
+        sin_cos_array(&x, &mut sin, &mut cos);
         for k in 0..N {
             let (s, c) = sin_cos(x[k]);
             assert_eq!(
@@ -265,6 +276,12 @@ mod tests {
         let odd: [f64; 7] = core::array::from_fn(|k| angles[k * 9]);
         assert_array_matches(odd);
         assert_array_matches([f64::NEG_INFINITY]);
+        // A zero first angle of an odd count takes its pair without the
+        // kernels; a negative zero does not.
+        assert_array_matches([0.0]);
+        assert_array_matches([0.0, 0.7, -2.0]);
+        assert_array_matches([-0.0, 0.7, -2.0]);
+        assert_array_matches([0.0, 0.0]);
         assert_array_matches([2.5]);
         assert_array_matches::<0>([]);
         // A dense sweep, where each quadrant's swap and signs are taken.

@@ -20,6 +20,18 @@ impl<S: Scalar> Mat3<S> {
     /// The zero matrix.
     pub const ZERO: Self = Self::from_rows([[S::ZERO; 3]; 3]);
 
+    /// `self == Mat3::IDENTITY`, the six off-diagonal entries tested
+    /// together ([`Scalar::all_zero`]) rather than compared one by one.
+    #[inline(always)]
+    #[must_use]
+    pub(crate) fn is_identity(&self) -> bool {
+        let m = &self.m;
+        S::all_zero([m[0][1], m[0][2], m[1][0], m[1][2], m[2][0], m[2][1]])
+            && m[0][0] == S::ONE
+            && m[1][1] == S::ONE
+            && m[2][2] == S::ONE
+    }
+
     /// A matrix from its rows.
     #[must_use]
     pub const fn from_rows(m: [[S; 3]; 3]) -> Self {
@@ -315,6 +327,29 @@ impl<S: Scalar> core::ops::Sub for Mat3<S> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `is_identity` agrees with the comparison, signed zeros, NaN and
+    /// each entry's change included.
+    #[test]
+    fn is_identity_is_the_comparison() {
+        let mut cases = vec![
+            Mat3::IDENTITY,
+            Mat3::ZERO,
+            Mat3::from_axis_angle(&Vec3::new(0.0, 0.0, 1.0), 0.3),
+        ];
+        for r in 0..3 {
+            for c in 0..3 {
+                for x in [-0.0, 0.0, 1.0, -1.0, 1e-300, f64::NAN, f64::INFINITY] {
+                    let mut m = Mat3::IDENTITY;
+                    m.m[r][c] = x;
+                    cases.push(m);
+                }
+            }
+        }
+        for m in cases {
+            assert_eq!(m.is_identity(), m == Mat3::IDENTITY, "{m:?}");
+        }
+    }
 
     /// A column index past 2 reads the last column instead of panicking.
     #[test]
