@@ -55,8 +55,8 @@ impl Scalar for f64 {
         super::sin_cos_f64::sin_cos(self)
     }
     #[inline]
-    fn sin_cos_array<const N: usize>(x: &[Self; N], sin: &mut [Self; N], cos: &mut [Self; N]) {
-        super::sin_cos_f64::sin_cos_array(x, sin, cos);
+    fn sin_cos_array<const N: usize>(x: &[Self; N]) -> ([Self; N], [Self; N]) {
+        super::sin_cos_f64::sin_cos_array(x)
     }
     #[inline]
     fn atan2(self, x: Self) -> Self {

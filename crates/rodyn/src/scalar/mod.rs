@@ -76,15 +76,15 @@ pub trait Scalar:
     /// Sine and cosine of an angle in radians.
     fn sin_cos(self) -> (Self, Self);
     /// Sines and cosines of many angles (radians), each as
-    /// [`sin_cos`](Self::sin_cos) gives it, written to `sin` and `cos`
-    /// (in place: returned, the arrays were copied on their way out). A
-    /// type may compute them several at a time (`f64` on a host does, two
-    /// per SSE2 instruction).
+    /// [`sin_cos`](Self::sin_cos) gives it. A type may compute them
+    /// several at a time (`f64` on a host does, two per SSE2 instruction).
     #[inline]
-    fn sin_cos_array<const N: usize>(x: &[Self; N], sin: &mut [Self; N], cos: &mut [Self; N]) {
+    fn sin_cos_array<const N: usize>(x: &[Self; N]) -> ([Self; N], [Self; N]) {
+        let (mut sin, mut cos) = ([Self::ZERO; N], [Self::ONE; N]);
         for k in 0..N {
             (sin[k], cos[k]) = x[k].sin_cos();
         }
+        (sin, cos)
     }
     /// Four-quadrant arctangent of `self / x`.
     fn atan2(self, x: Self) -> Self;

@@ -103,8 +103,7 @@ impl<S: Scalar, const NB: usize> JointSinCos<S, NB> {
     #[inline(always)]
     pub(crate) fn from_angles(angle: impl Fn(usize) -> Option<S>) -> Self {
         let angle = core::array::from_fn(|i| angle(i).unwrap_or(S::ZERO));
-        let (mut sin, mut cos) = ([S::ZERO; NB], [S::ONE; NB]);
-        S::sin_cos_array(&angle, &mut sin, &mut cos);
+        let (sin, cos) = S::sin_cos_array(&angle);
         Self { sin, cos }
     }
 
