@@ -421,26 +421,7 @@ mod tests {
 
     /// The 24 rotations that carry coordinate axes onto coordinate axes.
     fn quarter_turns() -> Vec<AxisPermutation> {
-        let orders = [
-            [0, 1, 2],
-            [0, 2, 1],
-            [1, 0, 2],
-            [1, 2, 0],
-            [2, 0, 1],
-            [2, 1, 0],
-        ];
-        let mut out = Vec::new();
-        for order in orders {
-            for signs in 0..8 {
-                let mut rows = [[0i8; 3]; 3];
-                for r in 0..3 {
-                    rows[r][order[r]] = if signs & (1 << r) != 0 { -1 } else { 1 };
-                }
-                out.extend(AxisPermutation::try_from_rows(rows));
-            }
-        }
-        assert_eq!(out.len(), 24);
-        out
+        crate::spatial::axis_permutation::all_for_tests()
     }
 
     /// A pseudo-random number in [-1, 1) (a fixed sequence).

@@ -326,32 +326,39 @@ impl Default for AxisPermutation {
     }
 }
 
+/// All 24 rotations that carry coordinate axes onto coordinate axes, from
+/// every sign pattern of every permutation (for tests here and elsewhere).
+#[cfg(all(test, feature = "std"))]
+pub(crate) fn all_for_tests() -> std::vec::Vec<AxisPermutation> {
+    let perms = [
+        [0, 1, 2],
+        [0, 2, 1],
+        [1, 0, 2],
+        [1, 2, 0],
+        [2, 0, 1],
+        [2, 1, 0],
+    ];
+    let mut out = std::vec::Vec::new();
+    for p in perms {
+        for signs in 0..8 {
+            let mut rows = [[0i8; 3]; 3];
+            for r in 0..3 {
+                rows[r][p[r]] = if signs & (1 << r) != 0 { -1 } else { 1 };
+            }
+            out.extend(AxisPermutation::try_from_rows(rows));
+        }
+    }
+    assert_eq!(out.len(), 24);
+    out
+}
+
 #[cfg(all(test, feature = "std"))]
 mod tests {
     use super::AxisPermutation;
     use crate::spatial::{Inertia, Mat3, Sym3, Transform, Vec3};
 
-    /// All 24, from every sign pattern of every permutation.
     fn all() -> Vec<AxisPermutation> {
-        let perms = [
-            [0, 1, 2],
-            [0, 2, 1],
-            [1, 0, 2],
-            [1, 2, 0],
-            [2, 0, 1],
-            [2, 1, 0],
-        ];
-        let mut out = Vec::new();
-        for p in perms {
-            for signs in 0..8 {
-                let mut rows = [[0i8; 3]; 3];
-                for r in 0..3 {
-                    rows[r][p[r]] = if signs & (1 << r) != 0 { -1 } else { 1 };
-                }
-                out.extend(AxisPermutation::try_from_rows(rows));
-            }
-        }
-        out
+        super::all_for_tests()
     }
 
     fn close(a: &Mat3<f64>, b: &Mat3<f64>) -> bool {
