@@ -443,13 +443,15 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
             }
             for (i, joint) in self.joints.iter().enumerate() {
                 if joint.constrains_configuration() {
-                    let joint_q = self.joint_q(i, q)?;
-                    let checked = if FINITE_JOINT_CHECKS {
-                        joint.check_finite_configuration(joint_q)
+                    if FINITE_JOINT_CHECKS {
+                        joint
+                            .check_finite_configuration(self.joint_q(i, q)?)
+                            .map_err(|reason| Error::InvalidConfiguration { joint: i, reason })?;
                     } else {
-                        joint.check_configuration(joint_q)
-                    };
-                    checked.map_err(|reason| Error::InvalidConfiguration { joint: i, reason })?;
+                        joint
+                            .check_configuration(self.joint_q(i, q)?)
+                            .map_err(|reason| Error::InvalidConfiguration { joint: i, reason })?;
+                    }
                 }
             }
             return Ok(());
