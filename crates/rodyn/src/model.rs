@@ -443,6 +443,9 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
             }
             for (i, joint) in self.joints.iter().enumerate() {
                 if joint.constrains_configuration() {
+                    // Two whole arms, not one call of a method chosen
+                    // first: that form changed the Cortex-M4's inlining and
+                    // cost its Jacobians stack.
                     if FINITE_JOINT_CHECKS {
                         joint
                             .check_finite_configuration(self.joint_q(i, q)?)
