@@ -270,9 +270,7 @@ fn map_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Fra
             cd.ag[iv] = G::centroidal_column(x, joint, 0, ic, &com);
             continue;
         }
-        for (k, column) in cd.ag[iv..iv + nv].iter_mut().enumerate() {
-            *column = G::centroidal_column(x, joint, k, ic, &com);
-        }
+        G::centroidal_columns(x, joint, ic, &com, &mut cd.ag[iv..iv + nv]);
     }
 }
 

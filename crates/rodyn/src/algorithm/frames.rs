@@ -102,6 +102,21 @@ pub trait FrameSpace: Space {
     ) -> Self::Force<S> {
         Self::from_translation(g).act_inv_force(&ic.mul_motion(&Self::act_subspace_column(x, j, k)))
     }
+    /// Every column of joint `j` at once into `out` (its `nv` columns):
+    /// [`Self::centroidal_column`] for each. A geometry may override it
+    /// with an equal form that shares the columns' common terms.
+    #[inline(always)]
+    fn centroidal_columns<S: Scalar>(
+        x: &Self::Transform<S>,
+        j: &Self::Joint<S>,
+        ic: &Self::Inertia<S>,
+        g: &Self::Point<S>,
+        out: &mut [Self::Force<S>],
+    ) {
+        for (k, column) in out.iter_mut().enumerate() {
+            *column = Self::centroidal_column(x, j, k, ic, g);
+        }
+    }
 }
 
 impl FrameSpace for Spatial {
@@ -208,6 +223,43 @@ impl FrameSpace for Spatial {
                 let lin = (s.lin - ic.com.cross(&s.ang)) * ic.mass;
                 Force::new(ic.rot_inertia.mul_vec(&s.ang) + lever.cross(&lin), lin)
             }
+        }
+    }
+    #[inline(always)]
+    fn centroidal_columns<S: Scalar>(
+        x: &Transform<S>,
+        j: &Joint<S>,
+        ic: &Inertia<S>,
+        g: &Vec3<S>,
+        out: &mut [Force<S>],
+    ) {
+        // A free flyer's six columns share the lever and the subtree's
+        // offset; where the lever is zero (the sole root, whose subtree is
+        // the whole model and whose centre is G) its terms are zero and
+        // are not formed. The values of `centroidal_column`, to rounding
+        // (the offset is scaled by the mass before the cross products).
+        if let (Joint::FreeFlyer(_), Some(out)) = (j, out.first_chunk_mut::<6>()) {
+            let lever = ic.com - *g;
+            let offset = (x.trans - ic.com) * ic.mass;
+            let axes = [x.rot.column(0), x.rot.column(1), x.rot.column(2)];
+            let (translations, rotations) = out.split_at_mut(3);
+            if S::all_zero([lever.x, lever.y, lever.z]) {
+                for ((t, r), a) in translations.iter_mut().zip(rotations).zip(axes) {
+                    *t = Force::new(Vec3::ZERO, a * ic.mass);
+                    *r = Force::new(ic.rot_inertia.mul_vec(&a), offset.cross(&a));
+                }
+            } else {
+                for ((t, r), a) in translations.iter_mut().zip(rotations).zip(axes) {
+                    let lin = a * ic.mass;
+                    *t = Force::new(lever.cross(&lin), lin);
+                    let lin = offset.cross(&a);
+                    *r = Force::new(ic.rot_inertia.mul_vec(&a) + lever.cross(&lin), lin);
+                }
+            }
+            return;
+        }
+        for (k, column) in out.iter_mut().enumerate() {
+            *column = Self::centroidal_column(x, j, k, ic, g);
         }
     }
 }
@@ -416,7 +468,7 @@ pub(crate) fn zero_motion<S: Scalar, G: Space>() -> G::Motion<S> {
 mod tests {
     use super::FrameSpace;
     use crate::joint::{Axis, Joint, JointModel};
-    use crate::space::{BodyInertia, RigidTransform};
+    use crate::space::{BodyInertia, RigidTransform, VectorOps};
     use crate::spatial::{Force, Inertia, Mat3, Spatial, Sym3, Transform, Vec3};
 
     /// The 3-D shortcut for a body's world inertia gives `Inertia::act`'s
@@ -514,8 +566,10 @@ mod tests {
     }
 
     /// The 3-D shortcuts for a joint's world column and its centroidal
-    /// column give the book's forms (`x Sₖ`, `ᴳX_o* Iᶜ x Sₖ`) for every
-    /// joint type and column.
+    /// columns, one at a time and all at once, give the book's forms (`x
+    /// Sₖ`, `ᴳX_o* Iᶜ x Sₖ`) for every joint type and column, about a
+    /// point G off the subtree's centre and about the centre itself (a
+    /// sole root's case, where the columns skip the lever).
     #[test]
     fn shortcuts_give_the_book_forms() {
         let x = Transform::new(
@@ -527,7 +581,6 @@ mod tests {
             Vec3::new(0.2, -0.9, 1.1),
             Sym3::new(0.4, 0.02, -0.03, 0.5, 0.01, 0.3),
         );
-        let g = Vec3::new(-0.3, 0.25, 0.6);
         let joints = [
             Joint::revolute(Axis::X),
             Joint::revolute(Axis::Y),
@@ -540,13 +593,24 @@ mod tests {
             let d = a - b;
             d.ang.norm() + d.lin.norm() <= 1e-14 * (1.0 + b.ang.norm() + b.lin.norm())
         };
-        for j in &joints {
-            for k in 0..JointModel::<f64, Spatial>::nv(j) {
-                let column = x.act_motion(&j.subspace_column(k));
-                assert_eq!(Spatial::act_subspace_column(&x, j, k), column, "{j:?} {k}");
-                let book = Transform::from_translation(g).act_inv_force(&ic.mul_motion(&column));
-                let fast = Spatial::centroidal_column(&x, j, k, &ic, &g);
-                assert!(close(fast, book), "{j:?} {k}: {fast:?} against {book:?}");
+        for g in [Vec3::new(-0.3, 0.25, 0.6), ic.com] {
+            for j in &joints {
+                let nv = JointModel::<f64, Spatial>::nv(j);
+                let mut all = [Force::ZERO; 6];
+                Spatial::centroidal_columns(&x, j, &ic, &g, &mut all[..nv]);
+                for k in 0..nv {
+                    let column = x.act_motion(&j.subspace_column(k));
+                    assert_eq!(Spatial::act_subspace_column(&x, j, k), column, "{j:?} {k}");
+                    let book =
+                        Transform::from_translation(g).act_inv_force(&ic.mul_motion(&column));
+                    let fast = Spatial::centroidal_column(&x, j, k, &ic, &g);
+                    assert!(close(fast, book), "{j:?} {k}: {fast:?} against {book:?}");
+                    assert!(
+                        close(all[k], book),
+                        "{j:?} {k}: {:?} against {book:?}",
+                        all[k]
+                    );
+                }
             }
         }
     }
