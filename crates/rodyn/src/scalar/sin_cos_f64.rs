@@ -3,7 +3,7 @@
 //! `f64::sin_cos` calls the C library's `sin` and `cos` one after the other,
 //! and each reduces the argument again: two library calls per revolute joint
 //! per algorithm call, a large share of RNEA's time on a 7-DoF arm. Here one
-//! reduction by π/64 (three-part Cody-Waite, its remainder kept as two
+//! reduction by π/64 (four-part Cody-Waite, its remainder kept as two
 //! floats) leaves `x = k π/64 + r` with |r| ≤ π/128; a table holds the sine
 //! and cosine of the 128 multiples of π/64 (correctly rounded), and short
 //! Taylor polynomials give those of r (the first terms they leave out are
@@ -270,7 +270,8 @@ pub(crate) fn sin_cos_array<const N: usize>(x: &[f64; N]) -> ([f64; N], [f64; N]
 /// once at the scale of the table's entry.
 #[inline(always)]
 fn fast_sin_cos(x: f64) -> (f64, f64) {
-    // Taylor's coefficients: over |r| ≤ π/128 minimax ones gain nothing.
+    // Taylor's coefficients: over |r| ≤ π/128 the terms they leave out
+    // are below the results' rounding (the module documentation).
     const S1: f64 = -1.0 / 6.0;
     const S2: f64 = 1.0 / 120.0;
     const S3: f64 = -1.0 / 5040.0;
