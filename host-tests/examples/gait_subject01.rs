@@ -1,5 +1,5 @@
 //! The first seed's gait example on real walking data: inverse dynamics of
-//! OpenSim's subject01 (`shared/data/gait/`) with `models/gait_subject01.toml`,
+//! OpenSim's subject01 (`data/gait/`) with `models/gait_subject01.toml`,
 //! the pelvis residuals, and the load at the socket of a right transfemoral
 //! prosthesis over the right gait cycle.
 //!

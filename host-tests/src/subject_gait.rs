@@ -1,4 +1,4 @@
-//! Inverse dynamics of OpenSim's subject01 walk (`shared/data/gait/`) with
+//! Inverse dynamics of OpenSim's subject01 walk (`data/gait/`) with
 //! the planar model `models/gait_subject01.toml`: reading the inputs, the
 //! change between OpenSim's coordinates and the model's, the ground
 //! reactions as external forces, and the load at a transfemoral socket.
@@ -403,8 +403,8 @@ pub fn with_prosthesis(fraction: f64) -> rodyn::Result<SubjectModel<f64>> {
     Ok(model)
 }
 
-/// The data directory: `../shared/data/gait` beside the repository.
+/// The data directory: `data/gait/` in the repository.
 #[must_use]
 pub fn data_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/data/gait")
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../data/gait")
 }

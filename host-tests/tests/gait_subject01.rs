@@ -1,5 +1,5 @@
 //! The measured gait example (`models/gait_subject01.toml`, OpenSim's
-//! subject01 walk in `shared/data/gait/`): rodyn's inverse dynamics
+//! subject01 walk in `data/gait/`): rodyn's inverse dynamics
 //! against Pinocchio 4.1 on the same model and inputs, a statics check by
 //! hand, f32 against f64, and bad input files.
 

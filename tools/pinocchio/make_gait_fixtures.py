@@ -1,6 +1,6 @@
 """Pinocchio 4.1 reference for the measured gait example.
 
-Builds OpenSim's subject01 planar model (shared/data/gait/segments.csv) in
+Builds OpenSim's subject01 planar model (data/gait/segments.csv) in
 Pinocchio, independently of rodyn's model file: a planar floating pelvis
 (JointModelPlanar: q = (x, y, cos, sin), v = own-frame (vx, vy, w)), pins
 about z for the lumbar, hips, knees (at their knee_angle = 0 position) and
@@ -109,7 +109,7 @@ def ground_forces(model, data, qp, row):
 
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("--data", type=Path, default=ROOT.parent / "shared" / "data" / "gait")
+    parser.add_argument("--data", type=Path, default=ROOT / "data" / "gait")
     args = parser.parse_args()
     model = build(args.data)
     data = model.createData()
