@@ -18,3 +18,4 @@
 pub mod collocation;
 pub mod ipopt;
 pub mod muscle_robot;
+pub mod smooth_muscle_robot;

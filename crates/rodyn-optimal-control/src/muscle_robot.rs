@@ -42,7 +42,7 @@ use rodyn::algorithm::forward_dynamics::Aba;
 use rodyn::algorithm::jacobian::JacobianData;
 use rodyn::drive::{aba_derivatives_with_drives, DriveDerivatives};
 use rodyn::planar::Planar;
-use rodyn::sim::{Integrator, Rk4};
+use rodyn::sim::{AuxiliaryLoads, Integrator, Rk4};
 use rodyn::{Data, Dual};
 use rodyn_scenarios::muscle_robot::{
     self as robot, activation_rates, RobotData, RobotForces, RobotLoads, RobotModel, RobotMuscles,
@@ -328,7 +328,7 @@ pub fn activation_rate_derivatives(
     }
 }
 
-fn split<S: Copy>(x: &[S; NX]) -> ([S; NV], [S; NV], [S; NU]) {
+pub(crate) fn split<S: Copy>(x: &[S; NX]) -> ([S; NV], [S; NV], [S; NU]) {
     (
         core::array::from_fn(|i| x[i]),
         core::array::from_fn(|i| x[NV + i]),
@@ -336,7 +336,7 @@ fn split<S: Copy>(x: &[S; NX]) -> ([S; NV], [S; NV], [S; NU]) {
     )
 }
 
-fn join<S: Copy>(a: &[S; NV], b: &[S; NV], c: &[S; NU]) -> [S; NX] {
+pub(crate) fn join<S: Copy>(a: &[S; NV], b: &[S; NV], c: &[S; NU]) -> [S; NX] {
     core::array::from_fn(|i| {
         if i < NV {
             a[i]
@@ -411,6 +411,12 @@ impl Task {
         &self,
         route: Derivatives,
     ) -> rodyn::Result<Trapezoidal<MuscleRobot, NX, NU>> {
+        Ok(self.transcribe_with(MuscleRobot::new(route)?))
+    }
+
+    /// The collocation problem of [`transcribe`](Self::transcribe) for
+    /// any model of the robot's dynamics with the same state and control.
+    pub fn transcribe_with<D: Dynamics<NX, NU>>(&self, dynamics: D) -> Trapezoidal<D, NX, NU> {
         let task = *self;
         let bounds = move |t: f64| {
             let (q, _) = task.desired(t);
@@ -440,7 +446,7 @@ impl Task {
             }
         };
         let mut problem = Trapezoidal::new(
-            MuscleRobot::new(route)?,
+            dynamics,
             0.0,
             self.duration,
             self.nodes,
@@ -449,28 +455,49 @@ impl Task {
             self.weights(),
         );
         problem.hessian = self.hessian;
-        Ok(problem)
+        problem
     }
 }
 
-/// The optimal controls replayed: RK4 from the first node's state with the
-/// excitations interpolated linearly between nodes (as the collocation
-/// assumes), step `dt`; returns the RMS over the run of the angle error
-/// against the desired trajectory (rad) and the largest error (rad).
-///
-/// # Errors
-/// When the simulation fails (a rodyn error).
-pub fn resimulate(task: &Task, nodes: &[Node<NX, NU>], dt: f64) -> rodyn::Result<(f64, f64)> {
-    let excitation = |t: f64| -> [f64; NU] {
+/// The excitations of `nodes` as a function of time, linear between
+/// nodes (as the collocation assumes) and held at the ends.
+pub fn excitation_of(nodes: &[Node<NX, NU>]) -> impl FnMut(f64) -> [f64; NU] + '_ {
+    move |t: f64| {
         let h = nodes[1].t - nodes[0].t;
         let position = ((t - nodes[0].t) / h).clamp(0.0, (nodes.len() - 1) as f64);
         // In range by the clamp; the cast truncates toward zero.
         let k = (position.floor() as usize).min(nodes.len() - 2);
         let s = position - k as f64;
         core::array::from_fn(|i| (1.0 - s) * nodes[k].u[i] + s * nodes[k + 1].u[i])
-    };
+    }
+}
+
+/// The optimal controls replayed: RK4 from the first node's state with the
+/// excitations interpolated linearly between nodes (as the collocation
+/// assumes), step `dt`, the Thelen muscles; returns the RMS over the run
+/// of the angle error against the desired trajectory (rad) and the
+/// largest error (rad).
+///
+/// # Errors
+/// When the simulation fails (a rodyn error).
+pub fn resimulate(task: &Task, nodes: &[Node<NX, NU>], dt: f64) -> rodyn::Result<(f64, f64)> {
     let muscles = robot::MUSCLES_F64;
-    let mut loads = RobotLoads::new(&muscles, excitation);
+    let mut loads = RobotLoads::new(&muscles, excitation_of(nodes));
+    replay(task, nodes, dt, &mut loads)
+}
+
+/// RK4 at step `dt` under `loads` (the muscles driven by the excitations
+/// of `nodes`) from the first node's state: the RMS and largest angle
+/// error against the desired trajectory (rad).
+///
+/// # Errors
+/// When the simulation fails (a rodyn error).
+pub fn replay<L: AuxiliaryLoads<f64, NB, NV, NV, NU, Planar>>(
+    task: &Task,
+    nodes: &[Node<NX, NU>],
+    dt: f64,
+    loads: &mut L,
+) -> rodyn::Result<(f64, f64)> {
     let (q, v, a) = split(&nodes[0].x);
     let mut state = robot::RobotState::with_auxiliary(q, v, a);
     let mut data = Data::new();
@@ -479,14 +506,7 @@ pub fn resimulate(task: &Task, nodes: &[Node<NX, NU>], dt: f64) -> rodyn::Result
     let steps = ((end - nodes[0].t) / dt).round() as usize;
     let (mut sum, mut worst) = (0.0, 0.0_f64);
     for _ in 0..steps {
-        rk4.step(
-            Aba,
-            &robot::MODEL_F64,
-            &mut data,
-            &mut state,
-            dt,
-            &mut loads,
-        )?;
+        rk4.step(Aba, &robot::MODEL_F64, &mut data, &mut state, dt, loads)?;
         let (desired, _) = task.desired(state.t);
         for (q, d) in state.q.iter().zip(desired) {
             sum += (q - d) * (q - d);
