@@ -370,7 +370,7 @@ impl Default for Task {
         Self {
             duration: 2.0,
             nodes: 101,
-            peak: [0.6, 0.9],
+            peak: [0.5, 0.75],
             hessian: Hessian::QuasiNewton,
         }
     }
@@ -483,12 +483,24 @@ pub fn excitation_of(nodes: &[Node<NX, NU>]) -> impl FnMut(f64) -> [f64; NU] + '
 pub fn resimulate(task: &Task, nodes: &[Node<NX, NU>], dt: f64) -> rodyn::Result<(f64, f64)> {
     let muscles = robot::MUSCLES_F64;
     let mut loads = RobotLoads::new(&muscles, excitation_of(nodes));
-    replay(task, nodes, dt, &mut loads)
+    let run = replay(task, nodes, dt, &mut loads)?;
+    Ok((run.rms, run.max))
+}
+
+/// A replay of optimal controls: the angle error against the desired
+/// trajectory and the angles along the way.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Replay {
+    /// RMS over the run and both joints of the angle error, rad.
+    pub rms: f64,
+    /// Largest angle error, rad.
+    pub max: f64,
+    /// `(t, q)` after every step, s and rad.
+    pub samples: Vec<(f64, [f64; NV])>,
 }
 
 /// RK4 at step `dt` under `loads` (the muscles driven by the excitations
-/// of `nodes`) from the first node's state: the RMS and largest angle
-/// error against the desired trajectory (rad).
+/// of `nodes`) from the first node's state.
 ///
 /// # Errors
 /// When the simulation fails (a rodyn error).
@@ -497,7 +509,7 @@ pub fn replay<L: AuxiliaryLoads<f64, NB, NV, NV, NU, Planar>>(
     nodes: &[Node<NX, NU>],
     dt: f64,
     loads: &mut L,
-) -> rodyn::Result<(f64, f64)> {
+) -> rodyn::Result<Replay> {
     let (q, v, a) = split(&nodes[0].x);
     let mut state = robot::RobotState::with_auxiliary(q, v, a);
     let mut data = Data::new();
@@ -505,6 +517,8 @@ pub fn replay<L: AuxiliaryLoads<f64, NB, NV, NV, NU, Planar>>(
     let end = nodes[nodes.len() - 1].t;
     let steps = ((end - nodes[0].t) / dt).round() as usize;
     let (mut sum, mut worst) = (0.0, 0.0_f64);
+    let mut samples = Vec::with_capacity(steps + 1);
+    samples.push((state.t, state.q));
     for _ in 0..steps {
         rk4.step(Aba, &robot::MODEL_F64, &mut data, &mut state, dt, loads)?;
         let (desired, _) = task.desired(state.t);
@@ -512,8 +526,13 @@ pub fn replay<L: AuxiliaryLoads<f64, NB, NV, NV, NU, Planar>>(
             sum += (q - d) * (q - d);
             worst = worst.max((q - d).abs());
         }
+        samples.push((state.t, state.q));
     }
-    Ok(((sum / (steps * NV) as f64).sqrt(), worst))
+    Ok(Replay {
+        rms: (sum / (steps * NV) as f64).sqrt(),
+        max: worst,
+        samples,
+    })
 }
 
 #[cfg(test)]

@@ -20,8 +20,9 @@
 //!   the controls, which enter only the activation dynamics, by dual
 //!   numbers through those alone.
 
-use crate::collocation::{Dynamics, Trapezoidal};
-use crate::muscle_robot::{join, replay, split, Task, NX};
+use crate::collocation::{Dynamics, Node, Trapezoidal};
+use crate::ipopt::{solve, Options, Solution};
+use crate::muscle_robot::{excitation_of, join, replay, split, Derivatives, Replay, Task, NX};
 use rodyn::algorithm::derivatives::DerivativeData;
 use rodyn::algorithm::jacobian::JacobianData;
 use rodyn::drive::{
@@ -33,7 +34,7 @@ use rodyn::sim::AuxiliaryLoads;
 use rodyn::space::Geometry;
 use rodyn::{Data, Dual, Scalar};
 use rodyn_scenarios::muscle_robot::{
-    self as robot, RobotData, RobotForces, RobotModel, NB, NU, NV,
+    self as robot, RobotData, RobotForces, RobotLoads, RobotModel, NB, NU, NV,
 };
 
 /// The robot's four smooth muscles, in input order.
@@ -337,17 +338,132 @@ impl<E: FnMut(f64) -> [f64; NU]> AuxiliaryLoads<f64, NB, NV, NV, NU, Planar> for
 
 /// [`crate::muscle_robot::resimulate`] for the smooth muscles: RK4 at
 /// step `dt` from the first node's state under the excitations of `nodes`
-/// (linear between nodes); the RMS and largest angle error (rad).
+/// (linear between nodes).
 ///
 /// # Errors
 /// When the simulation fails (a rodyn error).
-pub fn resimulate_smooth(
-    task: &Task,
-    nodes: &[crate::collocation::Node<NX, NU>],
-    dt: f64,
-) -> rodyn::Result<(f64, f64)> {
-    let mut loads = SmoothLoads::new(crate::muscle_robot::excitation_of(nodes));
+pub fn resimulate_smooth(task: &Task, nodes: &[Node<NX, NU>], dt: f64) -> rodyn::Result<Replay> {
+    let mut loads = SmoothLoads::new(excitation_of(nodes));
     replay(task, nodes, dt, &mut loads)
+}
+
+/// Largest defect a certified solution may leave (IPOPT's
+/// `constr_viol_tol`).
+pub const MAX_DEFECT: f64 = 1e-8;
+/// Largest RMS angle error (rad) of a certified solution's controls
+/// replayed by RK4.
+pub const MAX_TRACKING_RMS: f64 = 1e-2;
+
+/// One solve of the task and what it is worth.
+#[derive(Clone, Debug)]
+pub struct Solved {
+    /// IPOPT's result.
+    pub solution: Solution,
+    /// The nodes of the final iterate.
+    pub nodes: Vec<Node<NX, NU>>,
+    /// The largest absolute defect.
+    pub max_defect: f64,
+    /// The RMS angle error of the controls replayed by RK4, rad.
+    pub tracking_rms: f64,
+    /// The largest angle error of that replay, rad.
+    pub tracking_max: f64,
+    /// The replay's `(t, q)`.
+    pub resimulated: Vec<(f64, [f64; NV])>,
+    /// Evaluations of the dynamics and their derivatives.
+    pub evaluations: usize,
+    /// How the constraint Jacobian was formed.
+    pub jacobian: &'static str,
+}
+
+/// The error of a solve: IPOPT refused the problem, or the dynamics or
+/// the replay failed at the solution.
+pub type SolveError = Box<dyn std::error::Error>;
+
+fn finish<D: Dynamics<NX, NU>>(
+    problem: &mut Trapezoidal<D, NX, NU>,
+    solution: Solution,
+    replay: impl FnOnce(&[Node<NX, NU>]) -> rodyn::Result<Replay>,
+    evaluations: impl FnOnce(&D) -> usize,
+    jacobian: &'static str,
+) -> Result<Solved, SolveError> {
+    let max_defect = problem
+        .max_defect(&solution.x)
+        .ok_or("the dynamics cannot be evaluated at the solution")?;
+    let nodes = problem.unpack(&solution.x);
+    let run = replay(&nodes)?;
+    Ok(Solved {
+        solution,
+        nodes,
+        max_defect,
+        tracking_rms: run.rms,
+        tracking_max: run.max,
+        resimulated: run.samples,
+        evaluations: evaluations(&problem.dynamics),
+        jacobian,
+    })
+}
+
+/// Solves `task` on the smooth muscles (analytic Jacobians; the Hessian as
+/// `task.hessian` says) and replays the controls by RK4 at step `dt`.
+///
+/// # Errors
+/// As [`SolveError`].
+pub fn solve_smooth(task: &Task, options: &Options, dt: f64) -> Result<Solved, SolveError> {
+    let mut problem = task.transcribe_smooth()?;
+    let solution = solve(&mut problem, options)?;
+    finish(
+        &mut problem,
+        solution,
+        |nodes| resimulate_smooth(task, nodes, dt),
+        |d| d.evaluations,
+        "analytic (rodyn's derivatives and sensitivities)",
+    )
+}
+
+/// Solves `task` on the Thelen muscles with derivatives by `route` and
+/// replays the controls by RK4 at step `dt`.
+///
+/// # Errors
+/// As [`SolveError`].
+pub fn solve_thelen(
+    task: &Task,
+    route: Derivatives,
+    options: &Options,
+    dt: f64,
+) -> Result<Solved, SolveError> {
+    let mut problem = task.transcribe(route)?;
+    let solution = solve(&mut problem, options)?;
+    let muscles = robot::MUSCLES_F64;
+    finish(
+        &mut problem,
+        solution,
+        |nodes| {
+            let mut loads = RobotLoads::new(&muscles, excitation_of(nodes));
+            replay(task, nodes, dt, &mut loads)
+        },
+        |d| d.evaluations,
+        route.name(),
+    )
+}
+
+/// Each muscle's share of the activation effort `∫ Σᵢ aᵢ² dt`
+/// (trapezoidal, as the objective).
+#[must_use]
+pub fn effort_shares(nodes: &[Node<NX, NU>]) -> [f64; NU] {
+    let h = nodes[1].t - nodes[0].t;
+    let integrals: [f64; NU] = core::array::from_fn(|i| {
+        nodes
+            .iter()
+            .enumerate()
+            .map(|(k, n)| {
+                let ends = k == 0 || k + 1 == nodes.len();
+                let w = if ends { 0.5 } else { 1.0 };
+                w * h * n.x[2 * NV + i] * n.x[2 * NV + i]
+            })
+            .sum()
+    });
+    let total: f64 = integrals.iter().sum();
+    integrals.map(|i| i / total)
 }
 
 #[cfg(test)]
