@@ -37,6 +37,7 @@ use rodyn_optimal_control::smooth_muscle_robot::{
 use rodyn_scenarios::muscle_robot::{NU, NV};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
+use std::process::ExitCode;
 
 /// Fewest collocation nodes accepted.
 const MIN_NODES: usize = 3;
@@ -125,9 +126,18 @@ fn report(name: &str, run: &Solved) {
     );
 }
 
-fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let arguments = Arguments::parse();
-    let task = validate(&arguments)?;
+fn main() -> ExitCode {
+    match run(&Arguments::parse()) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(error) => {
+            eprintln!("error: {error}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn run(arguments: &Arguments) -> Result<(), Box<dyn std::error::Error>> {
+    let task = validate(arguments)?;
     eprintln!(
         "muscle robot: {} nodes over {} s, {} variables",
         task.nodes,

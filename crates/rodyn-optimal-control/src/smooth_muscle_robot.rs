@@ -212,7 +212,7 @@ impl SmoothMuscleRobot {
         let mut hessian = vec![vec![0.0; n]; n];
         // Along each state direction m: d/dz_m of every entry of [A B],
         // weighted by μ, is row m of the Hessian.
-        for m in 0..NX {
+        for (m, row) in hessian.iter_mut().enumerate().take(NX) {
             let xd: [Dual; NX] = core::array::from_fn(|i| Dual {
                 re: x[i],
                 du: f64::from(u8::from(i == m)),
@@ -221,11 +221,9 @@ impl SmoothMuscleRobot {
             let (mut a, mut b) = ([[Dual::ZERO; NX]; NX], [[Dual::ZERO; NU]; NX]);
             self.dual.rate_and_jacobians(&xd, &ud, &mut a, &mut b)?;
             for (i, weight) in mu.iter().enumerate() {
-                for j in 0..NX {
-                    hessian[m][j] += weight * a[i][j].du;
-                }
-                for j in 0..NU {
-                    hessian[m][NX + j] += weight * b[i][j].du;
+                let entries = a[i].iter().chain(&b[i]);
+                for (slot, entry) in row.iter_mut().zip(entries) {
+                    *slot += weight * entry.du;
                 }
             }
         }

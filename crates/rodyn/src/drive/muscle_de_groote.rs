@@ -58,6 +58,8 @@ pub const ACTIVE_FORCE_LENGTH: [[f64; 4]; 3] = [
     [0.100, 1.000, 0.354, 0.000],
 ];
 /// `(d₁, d₂, d₃, d₄)` of the force-velocity curve (same source).
+// d₁ = −0.318 is the paper's fitted constant, not −1/π.
+#[allow(clippy::approx_constant)]
 pub const FORCE_VELOCITY: [f64; 4] = [-0.318, -8.149, -0.374, 0.886];
 /// `(c₁, c₂, c₃, k_T)` of the tendon force-length curve (same source).
 pub const TENDON_FORCE_LENGTH: [f64; 4] = [0.200, 0.995, 0.250, 35.0];
