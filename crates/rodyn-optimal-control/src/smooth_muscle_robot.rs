@@ -587,4 +587,41 @@ mod tests {
             }
         }
     }
+
+    /// The transcription's exact Hessian of the Lagrangian against the one
+    /// from central differences of the analytic Jacobians, on a short grid
+    /// at a point and multipliers off the optimum.
+    #[test]
+    fn exact_hessian_of_the_lagrangian_matches_jacobian_differences() {
+        use crate::collocation::Hessian;
+        use crate::ipopt::Nlp;
+        let task = Task {
+            nodes: 5,
+            ..Task::default()
+        };
+        let mut exact = task.transcribe_smooth().unwrap();
+        exact.hessian = Hessian::Exact;
+        let mut differences = task.transcribe_smooth().unwrap();
+        differences.hessian = Hessian::JacobianDifferences;
+        let (n, m) = (exact.variables(), exact.constraints());
+        let mut z = vec![0.0; n];
+        exact.initial_point(&mut z);
+        for (i, value) in z.iter_mut().enumerate() {
+            *value += 0.05 * (i as f64 * 0.7).sin();
+        }
+        let lambda: Vec<f64> = (0..m).map(|i| (i as f64 * 1.3).cos()).collect();
+        let entries = exact.hessian_structure().unwrap();
+        assert_eq!(Some(&entries), differences.hessian_structure().as_ref());
+        let (mut a, mut b) = (vec![0.0; entries.len()], vec![0.0; entries.len()]);
+        assert!(exact.hessian_values(&z, 0.8, &lambda, &mut a));
+        assert!(differences.hessian_values(&z, 0.8, &lambda, &mut b));
+        let scale = b.iter().fold(1.0_f64, |m, v| m.max(v.abs()));
+        for (k, (x, y)) in a.iter().zip(&b).enumerate() {
+            assert!(
+                (x - y).abs() <= 1e-6 * scale,
+                "entry {k} {:?}: exact {x} against differences {y} (scale {scale})",
+                entries[k]
+            );
+        }
+    }
 }
