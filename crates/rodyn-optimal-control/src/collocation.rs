@@ -1,5 +1,5 @@
 //! Trapezoidal direct collocation (Betts, *Practical Methods for Optimal
-//! Control*, 2010, §4.5; von Stryk's DIRCOL, the seed's tool, offers it
+//! Control*, 2010, §4.5; von Stryk's DIRCOL, the paper's tool, offers it
 //! beside Hermite-Simpson).
 //!
 //! The time grid `t_k = t_0 + k h`, `k = 0 … N`, carries the state `x_k`

@@ -1,6 +1,8 @@
-//! The first seed's optimal-control problem: the two-link, four-muscle
-//! robot ([`rodyn_scenarios::muscle_robot`]) follows desired joint
-//! trajectories with the least muscle effort.
+//! The optimal-control problem of Friedmann, Wojtusch & von Stryk (PAMM):
+//! the two-link, four-muscle robot ([`rodyn_scenarios::muscle_robot`])
+//! follows desired joint trajectories with the least muscle effort. This
+//! module holds the task, its transcription and the robot on its Thelen
+//! muscles; [`crate::smooth_muscle_robot`] the robot on smooth ones.
 //!
 //! State `x = (q₁, q₂, q̇₁, q̇₂, a₁ … a₄)` (rad, rad/s, activations in
 //! `[0, 1]`), control `u = (u₁ … u₄)`, the muscle excitations in `[0, 1]`:
@@ -20,7 +22,7 @@
 //! J = ∫ Σᵢ aᵢ² dt + r Σᵢ ∫ u̇ᵢ² dt,   r = 10⁻³ s².
 //! ```
 //!
-//! The seed asks for "energy-minimal" controls without a formula. Squared
+//! The paper asks for "energy-minimal" controls without a formula. Squared
 //! activations are a common effort measure of muscle optimal control
 //! (Crowninshield & Brand 1981 sum squared stresses; activations squared
 //! or cubed are used by e.g. Anderson & Pandy 2001). The obvious
@@ -31,7 +33,10 @@
 //! the cost of a steady excitation, and the solver chatters between nodes
 //! (seen with this model: excitations alternating node by node at every
 //! grid tried). The rate penalty `r` rules that out at a few per cent of
-//! the objective.
+//! the objective. It also fixes the trapezoidal rule's one free direction
+//! per muscle: each interval's activation defect involves the excitations
+//! at both its ends, so an excitation alternating node by node is
+//! invisible to the activation term.
 //!
 //! The state Jacobians `A = ∂f/∂x`, `B = ∂f/∂u` come by one of three
 //! routes ([`Derivatives`]), compared by the example in one run.
@@ -58,7 +63,7 @@ pub enum Derivatives {
     /// rodyn's analytic derivatives: `∂q̈/∂(q, q̇)` of forward dynamics
     /// with the muscles (Carpentier & Mansard's for the rigid body, the
     /// paths' gradients and Hessians and the muscles' tension partials for
-    /// the drives), the seed's sensitivity `∂q̈/∂a` (one extra
+    /// the drives), the paper's sensitivity `∂q̈/∂a` (one extra
     /// articulated-body pass per muscle) and `∂ȧ/∂(u, a)` in closed form.
     Analytic,
     /// Forward-mode dual numbers through the whole of `f`: one pass per
@@ -360,6 +365,9 @@ pub struct Task {
     pub nodes: usize,
     /// Peak angles of shoulder and elbow, rad: each joint swings from 0
     /// (hanging) to its peak and back, `q_d(t) = peak (1 − cos 2πt/T)/2`.
+    /// The default 0.5 and 0.75 rad are within the smooth muscles' reach;
+    /// at 0.6 and 0.9 rad m1 saturates over the peak and IPOPT reports
+    /// local infeasibility.
     pub peak: [f64; NV],
     /// How the solver gets the Hessian of the Lagrangian.
     pub hessian: Hessian,

@@ -499,14 +499,14 @@ mod tests {
                 .chain(b.iter().flatten())
                 .fold(1.0_f64, |m, v| m.max(v.abs()));
             for j in 0..NX + NU {
-                let seed = |i: usize| f64::from(u8::from(i == j));
+                let unit = |i: usize| f64::from(u8::from(i == j));
                 let xd: [Dual; NX] = core::array::from_fn(|i| Dual {
                     re: x[i],
-                    du: seed(i),
+                    du: unit(i),
                 });
                 let ud: [Dual; NU] = core::array::from_fn(|i| Dual {
                     re: u[i],
-                    du: seed(NX + i),
+                    du: unit(NX + i),
                 });
                 let column = robot.dual.rate(&xd, &ud).unwrap();
                 let h = 1e-6;
