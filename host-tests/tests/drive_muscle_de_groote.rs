@@ -228,3 +228,176 @@ fn bad_inputs_and_parameters_are_named() {
         })
     );
 }
+
+mod on_a_floating_tree {
+    //! `dq̈/d(q, v)` of forward dynamics with two pennate De Groote muscles
+    //! on a random floating-base tree (`aba_derivatives_with_drives`)
+    //! against dual numbers (1e-10) and central differences (1e-6). Columns
+    //! of `∂/∂q` are derivatives along `q ⊕ ε e_c` (tangent space).
+
+    use rodyn::algorithm::derivatives::DerivativeData;
+    use rodyn::algorithm::forward_dynamics::Aba;
+    use rodyn::algorithm::jacobian::JacobianData;
+    use rodyn::drive::{
+        aba_derivatives_with_drives, forward_dynamics_with_drives, DeGrooteMuscle,
+        DeGrooteParameters, DriveDerivatives, DriveForces, Path,
+    };
+    use rodyn::prelude::*;
+    use rodyn::Endpoint;
+    use rodyn_host_tests::random::{random_configuration, random_floating_tree, Rng};
+
+    const NB: usize = 6;
+    const NQ: usize = NB + 5;
+    const NV: usize = NB + 4;
+
+    type Muscles<S> = (DeGrooteMuscle<S, Spatial, 3>, DeGrooteMuscle<S, Spatial, 2>);
+
+    /// Two muscles on inputs 0 and 1, over a via point and between two
+    /// branches, sized so that their fibres sit at 0.9 of their optimal
+    /// length at the path lengths `lengths` (m).
+    fn muscles<S: Scalar>(lengths: (f64, f64)) -> Muscles<S> {
+        let c = S::from_f64;
+        let p = |x: f64, y: f64, z: f64| Vec3::new(c(x), c(y), c(z));
+        let params = |length: f64| {
+            DeGrooteParameters::de_groote_2016_in(
+                c(300.0),
+                c(0.8 * length / 0.9),
+                c(0.2 * length),
+                c(0.2),
+            )
+        };
+        (
+            DeGrooteMuscle::new(
+                Path::new([
+                    Endpoint::in_world(p(0.3, -0.2, 0.5)),
+                    Endpoint::on_body(0, p(0.1, 0.05, -0.02)),
+                    Endpoint::on_body(NB - 1, p(-0.05, 0.1, 0.08)),
+                ]),
+                params(lengths.0),
+                0,
+            ),
+            DeGrooteMuscle::new(
+                Path::new([
+                    Endpoint::on_body(2, p(0.04, 0.03, 0.0)),
+                    Endpoint::on_body(NB - 1, p(0.0, -0.06, 0.05)),
+                ]),
+                params(lengths.1),
+                1,
+            ),
+        )
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn forward<S: Scalar>(
+        model: &Model<S, NB, NQ, NV>,
+        lengths: (f64, f64),
+        q: &[S; NQ],
+        v: &[S; NV],
+        w: &[S; 2],
+        dq: &[S; NV],
+    ) -> [S; NV] {
+        let mut data = Box::new(Data::<S, NB, NV>::new());
+        let mut forces = DriveForces::new();
+        let q = model.integrate(q, dq, S::ONE).unwrap();
+        *forward_dynamics_with_drives::<Aba, _, _, _, NB, NQ, NV>(
+            model,
+            &mut data,
+            &q,
+            v,
+            &[S::ZERO; NV],
+            &muscles::<S>(lengths),
+            w,
+            &mut forces,
+        )
+        .unwrap()
+    }
+
+    #[test]
+    fn forward_dynamics_derivatives_match_dual_numbers_and_differences() {
+        let mut rng = Rng::new(2016);
+        let model = random_floating_tree::<NB, NQ, NV>(&mut rng);
+        let dual_model = model.cast::<Dual>().unwrap();
+        let mut data = Box::new(Data::<f64, NB, NV>::new());
+        let mut deriv = Box::new(DerivativeData::<f64, NB, NV>::new());
+        let mut jac = Box::new(JacobianData::<f64, NV>::new());
+        let mut drive = Box::new(DriveDerivatives::<f64, NV>::new());
+        for _ in 0..4 {
+            let q = random_configuration(&model, &mut rng);
+            let v: [f64; NV] = rng.vector(2.0);
+            let w = [rng.uniform(0.0, 1.0), rng.uniform(0.0, 1.0)];
+            rodyn::algorithm::kinematics::forward_kinematics_velocity(&model, &mut data, &q, &v)
+                .unwrap();
+            let sized = muscles::<f64>((1.0, 1.0));
+            let lengths = (
+                sized.0.path.kinematics(&data).unwrap().length,
+                sized.1.path.kinematics(&data).unwrap().length,
+            );
+            aba_derivatives_with_drives(
+                &model,
+                &mut data,
+                &mut deriv,
+                &mut jac,
+                &mut drive,
+                &q,
+                &v,
+                &[0.0; NV],
+                &muscles::<f64>(lengths),
+                &w,
+            )
+            .unwrap();
+            let largest = drive.tau.iter().fold(0.0f64, |m, t| m.max(t.abs()));
+            assert!(
+                (1e-2..1e5).contains(&largest),
+                "drive forces {:?}",
+                drive.tau
+            );
+            let scale =
+                |m: &[[f64; NV]; NV]| m.iter().flatten().fold(1.0f64, |s, x| s.max(x.abs()));
+            let (scale_q, scale_v) = (scale(&deriv.ddq_dq), scale(&deriv.ddq_dv));
+            let (qd, vd, wd) = (
+                q.map(Dual::constant),
+                v.map(Dual::constant),
+                w.map(Dual::constant),
+            );
+            for c in 0..NV {
+                let mut dq = [Dual::constant(0.0); NV];
+                dq[c] = Dual::variable(0.0);
+                let along_q = forward(&dual_model, lengths, &qd, &vd, &wd, &dq);
+                let mut vc = vd;
+                vc[c] = Dual::variable(v[c]);
+                let along_v = forward(
+                    &dual_model,
+                    lengths,
+                    &qd,
+                    &vc,
+                    &wd,
+                    &[Dual::constant(0.0); NV],
+                );
+                let h = 1e-6;
+                let mut step = [0.0; NV];
+                step[c] = h;
+                let plus = forward(&model, lengths, &q, &v, &w, &step);
+                step[c] = -h;
+                let minus = forward(&model, lengths, &q, &v, &w, &step);
+                for r in 0..NV {
+                    let (dq_dq, dq_dv) = (deriv.ddq_dq[r][c], deriv.ddq_dv[r][c]);
+                    assert!(
+                        (dq_dq - along_q[r].du).abs() <= 1e-10 * scale_q,
+                        "dq̈{r}/dq{c}: {dq_dq} vs dual {}",
+                        along_q[r].du
+                    );
+                    assert!(
+                        (dq_dv - along_v[r].du).abs() <= 1e-10 * scale_v,
+                        "dq̈{r}/dv{c}: {dq_dv} vs dual {}",
+                        along_v[r].du
+                    );
+                    let fd = (plus[r] - minus[r]) / (2.0 * h);
+                    assert!(
+                        (dq_dq - fd).abs() <= 1e-6 * scale_q,
+                        "dq̈{r}/dq{c}: {dq_dq} vs differences {fd}"
+                    );
+                }
+            }
+        }
+    }
+}

@@ -49,7 +49,9 @@ pub trait Dynamics<const NX: usize, const NU: usize> {
     /// The exact second derivatives `∇²(μᵀ f)` with respect to `(x, u)`
     /// (a square matrix of side `NX + NU`, rows and columns in `(x, u)`
     /// order) for the weights `μ`: what [`Hessian::Exact`] asks for.
-    /// `None` where they cannot be evaluated; the default has none.
+    /// `None` where they cannot be evaluated. The default has none, so a
+    /// system without it fails at IPOPT's first Hessian evaluation under
+    /// [`Hessian::Exact`].
     fn weighted_second_derivatives(
         &mut self,
         _t: f64,
