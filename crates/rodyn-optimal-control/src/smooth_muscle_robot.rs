@@ -24,9 +24,11 @@ use crate::collocation::{Dynamics, Node, Trapezoidal};
 use crate::ipopt::{solve, Options, Solution};
 use crate::muscle_robot::{excitation_of, join, replay, split, Derivatives, Replay, Task, NX};
 use rodyn::algorithm::derivatives::DerivativeData;
+use rodyn::algorithm::forward_dynamics::Aba;
 use rodyn::algorithm::jacobian::JacobianData;
 use rodyn::drive::{
-    aba_derivatives_with_drives, drive_forces, DeGrooteMuscle, DeGrooteParameters, DriveDerivatives,
+    aba_derivatives_with_drives, drive_forces, forward_dynamics_with_drives, DeGrooteMuscle,
+    DeGrooteParameters, DriveDerivatives,
 };
 use rodyn::planar::Planar;
 use rodyn::sensitivity::forward_dynamics_and_sensitivity;
@@ -94,15 +96,7 @@ impl<S: Scalar> Workspace<S> {
     /// `f(x, u)`.
     fn rate(&mut self, x: &[S; NX], u: &[S; NU]) -> rodyn::Result<[S; NX]> {
         let (q, v, a) = split(x);
-        let q_ddot = *rodyn::drive::forward_dynamics_with_drives::<
-            rodyn::algorithm::forward_dynamics::Aba,
-            _,
-            _,
-            _,
-            NB,
-            NV,
-            NV,
-        >(
+        let q_ddot = *forward_dynamics_with_drives::<Aba, _, _, _, NB, NV, NV>(
             &self.model,
             &mut self.data,
             &q,
