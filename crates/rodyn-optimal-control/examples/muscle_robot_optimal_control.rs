@@ -1,57 +1,100 @@
-//! The first seed's second example: energy-optimal muscle controls of the
-//! two-link, four-muscle robot for desired joint trajectories, by direct
-//! collocation (trapezoidal) solved with IPOPT.
+//! The muscle robot's energy-optimal muscle controls for desired joint
+//! trajectories (Friedmann, Wojtusch & von Stryk, Fig. 4), by trapezoidal
+//! direct collocation solved with IPOPT.
 //!
 //! `cargo run --release -p rodyn-optimal-control --example muscle_robot_optimal_control -- --out DIR`
 //!
-//! Solves the problem once per derivative route (rodyn's analytic
-//! derivatives, dual numbers throughout, finite differences) and writes,
-//! from the first route that converged (analytic first; else the most
-//! nearly feasible):
+//! The solution shown is that of the smooth muscles (De Groote et al.
+//! 2016) with rodyn's analytic Jacobians and the exact Hessian of the
+//! Lagrangian. Beside it, the same problem on a grid twice as fine (mesh
+//! refinement), the smooth muscles with IPOPT's quasi-Newton Hessian
+//! instead, and the Thelen (2003) muscles as before (analytic Jacobians,
+//! quasi-Newton Hessian); `--skip-thelen` leaves that slow row out. Writes:
 //! - `DIR/controls.csv`: time, the four excitations and activations, the
-//!   joint angles and their desired values;
-//! - `DIR/summary.json`: convergence, iterations, solve time, objective,
-//!   largest defect, the re-simulated tracking error, each route's figures;
-//! - `DIR/optimal_controls.svg`: the figure in the style of the seed's
-//!   Fig. 4 (desired joint trajectories above, optimal controls below).
+//!   joint angles and their desired values at every node;
+//! - `DIR/results.json`: every result that does not depend on the
+//!   machine (convergence, iterations, objective, defects, tracking,
+//!   each muscle's share of the effort, the comparison rows);
+//! - `DIR/summary.json`: the same plus the solve times (s);
+//! - `DIR/optimal_controls.svg`: desired and re-simulated joint angles
+//!   above, optimal excitations and activations below.
+//!
+//! `controls.csv`, `results.json` and `optimal_controls.svg` are
+//! bit-identical from run to run. The process exits with an error (after
+//! writing the files) when the smooth solve does not converge to IPOPT's
+//! tolerance, its defects exceed 1e-8 or its re-simulation misses the
+//! desired angles by more than 1e-2 rad RMS.
 
 use clap::Parser;
+use plotters::coord::Shift;
 use plotters::prelude::*;
-use rodyn_optimal_control::collocation::Node;
-use rodyn_optimal_control::ipopt::{solve, Options, Solution, Status};
-use rodyn_optimal_control::muscle_robot::{
-    resimulate, Derivatives, Task, EXCITATION_RATE_WEIGHT, NX,
+use rodyn_optimal_control::collocation::{Hessian, Node};
+use rodyn_optimal_control::ipopt::{Options, Status};
+use rodyn_optimal_control::muscle_robot::{Derivatives, Task, EXCITATION_RATE_WEIGHT, NX};
+use rodyn_optimal_control::smooth_muscle_robot::{
+    effort_shares, solve_smooth, solve_thelen, Solved, MAX_DEFECT, MAX_TRACKING_RMS,
 };
 use rodyn_scenarios::muscle_robot::{NU, NV};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+/// Fewest collocation nodes accepted.
+const MIN_NODES: usize = 3;
+/// Most collocation nodes accepted (the refined grid has `2 N − 1`).
+const MAX_NODES: usize = 1001;
+/// Longest motion accepted, s.
+const MAX_DURATION: f64 = 20.0;
 
 #[derive(Parser)]
 #[command(
-    about = "Energy-optimal muscle controls of the seed's two-link robot (direct collocation, IPOPT)"
+    about = "Energy-optimal muscle controls of the two-link, four-muscle robot (direct collocation, IPOPT)"
 )]
 struct Arguments {
-    /// Output directory (created if missing).
+    /// Output directory (created if missing; must be writable).
     #[arg(long)]
     out: PathBuf,
-    /// Collocation nodes.
+    /// Collocation nodes N, between 3 and 1001 (the mesh-refinement solve
+    /// uses 2 N − 1).
     #[arg(long, default_value_t = Task::default().nodes)]
     nodes: usize,
-    /// Duration of the motion, s.
+    /// Duration of the motion, s: positive, at most 20.
     #[arg(long, default_value_t = Task::default().duration)]
     duration: f64,
-    /// Only the analytic route (skips the comparison of derivative routes).
+    /// Leave out the Thelen muscles' comparison solve (about half a
+    /// minute).
     #[arg(long)]
-    single: bool,
+    skip_thelen: bool,
 }
 
-/// The objective's relative change over 10 iterations below which, with
-/// the defects below 1e-7, the solve counts
-/// as converged: Thelen's muscle has kinks (the force-velocity curve's
-/// slopes differ either side of zero fibre velocity; activation and
-/// deactivation have different time constants), so the dual infeasibility
-/// stalls above IPOPT's `tol` and is reported beside.
-const STATIONARY_OBJECTIVE: f64 = 1e-8;
+/// The arguments checked before any solve: the grid, the duration and
+/// that the output directory takes a file.
+fn validate(arguments: &Arguments) -> Result<Task, String> {
+    if !(MIN_NODES..=MAX_NODES).contains(&arguments.nodes) {
+        return Err(format!(
+            "--nodes must be between {MIN_NODES} and {MAX_NODES} (got {})",
+            arguments.nodes
+        ));
+    }
+    let duration = arguments.duration;
+    if !(duration.is_finite() && duration > 0.0 && duration <= MAX_DURATION) {
+        return Err(format!(
+            "--duration must be a positive, finite number of seconds, at most {MAX_DURATION} (got {duration})"
+        ));
+    }
+    let out = &arguments.out;
+    std::fs::create_dir_all(out)
+        .map_err(|e| format!("--out: cannot create the directory {}: {e}", out.display()))?;
+    let probe = out.join(".write_probe");
+    std::fs::write(&probe, b"")
+        .and_then(|()| std::fs::remove_file(&probe))
+        .map_err(|e| format!("--out: cannot write into {}: {e}", out.display()))?;
+    Ok(Task {
+        duration,
+        nodes: arguments.nodes,
+        ..Task::default()
+    })
+}
 
 /// RK4 step of the re-simulation, s.
 const RESIMULATION_STEP: f64 = 1e-4;
@@ -64,123 +107,199 @@ fn progress(iteration: usize, objective: f64, infeasibility: f64, dual: f64) {
     }
 }
 
-struct Run {
-    route: Derivatives,
-    solution: Solution,
-    max_defect: f64,
-    evaluations: usize,
-    nodes: Vec<Node<NX, NU>>,
-}
-
-fn run(task: &Task, route: Derivatives) -> Result<Run, Box<dyn std::error::Error>> {
-    eprintln!("  derivatives by {}:", route.name());
-    let mut problem = task.transcribe(route)?;
-    let options = Options {
+fn options() -> Options {
+    Options {
         progress: Some(progress),
-        stationary_objective: Some(STATIONARY_OBJECTIVE),
         ..Options::default()
-    };
-    let solution = solve(&mut problem, &options)?;
-    let max_defect = problem
-        .max_defect(&solution.x)
-        .ok_or("the dynamics cannot be evaluated at the solution")?;
-    eprintln!(
-        "    {:?} after {} iterations, {:.2} s, effort {:.6e}, largest defect {:.1e}",
-        solution.status, solution.iterations, solution.seconds, solution.objective, max_defect
-    );
-    Ok(Run {
-        route,
-        nodes: problem.unpack(&solution.x),
-        evaluations: problem.dynamics.evaluations,
-        solution,
-        max_defect,
-    })
+    }
 }
 
-fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let arguments = Arguments::parse();
-    if arguments.nodes < 3 || !(arguments.duration > 0.0 && arguments.duration.is_finite()) {
-        return Err("need at least 3 nodes and a positive, finite duration".into());
+fn report(name: &str, run: &Solved) {
+    eprintln!(
+        "  {name}: {:?} after {} iterations, {:.2} s, objective {:.9e}, largest defect {:.1e}, tracking RMS {:.2e} rad",
+        run.solution.status,
+        run.solution.iterations,
+        run.solution.seconds,
+        run.solution.objective,
+        run.max_defect,
+        run.tracking_rms
+    );
+}
+
+fn main() -> ExitCode {
+    match run(&Arguments::parse()) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(error) => {
+            eprintln!("error: {error}");
+            ExitCode::FAILURE
+        }
     }
-    let task = Task {
-        duration: arguments.duration,
-        nodes: arguments.nodes,
-        ..Task::default()
-    };
-    std::fs::create_dir_all(&arguments.out)
-        .map_err(|e| format!("cannot create {}: {e}", arguments.out.display()))?;
+}
+
+fn run(arguments: &Arguments) -> Result<(), Box<dyn std::error::Error>> {
+    let task = validate(arguments)?;
     eprintln!(
         "muscle robot: {} nodes over {} s, {} variables",
         task.nodes,
         task.duration,
         task.nodes * (NX + NU)
     );
-    let routes: &[Derivatives] = if arguments.single {
-        &[Derivatives::Analytic]
-    } else {
-        &Derivatives::ALL
-    };
-    let runs = routes
-        .iter()
-        .map(|&route| run(&task, route))
-        .collect::<Result<Vec<_>, _>>()?;
-    let main = best(&runs).ok_or("no derivative route ran")?;
-    eprintln!(
-        "  writing the solution of the {} route; re-simulating its controls by RK4 at {RESIMULATION_STEP} s",
-        main.route.name()
-    );
-    let (tracking_rms, tracking_max) = resimulate(&task, &main.nodes, RESIMULATION_STEP)?;
 
-    write_controls(&arguments.out.join("controls.csv"), &task, &main.nodes)?;
-    let participation = participation(&main.nodes);
-    write_summary(
-        &arguments.out.join("summary.json"),
-        &task,
-        main,
-        &runs,
-        tracking_rms,
-        tracking_max,
-        &participation,
-    )?;
-    plot(
-        &arguments.out.join("optimal_controls.svg"),
-        &task,
-        &main.nodes,
-    )?;
+    eprintln!("  smooth muscles, analytic Jacobian, exact Hessian:");
+    let exact = Task {
+        hessian: Hessian::Exact,
+        ..task
+    };
+    let main = solve_smooth(&exact, &options(), RESIMULATION_STEP)?;
+    report("smooth, exact Hessian", &main);
+    let fine_task = Task {
+        nodes: 2 * task.nodes - 1,
+        ..exact
+    };
+    eprintln!("  the same on {} nodes:", fine_task.nodes);
+    let fine = solve_smooth(&fine_task, &options(), RESIMULATION_STEP)?;
+    report("smooth, exact Hessian, refined grid", &fine);
+    eprintln!("  smooth muscles, analytic Jacobian, quasi-Newton Hessian:");
+    let quasi_newton = Task {
+        hessian: Hessian::QuasiNewton,
+        ..task
+    };
+    let lbfgs = solve_smooth(&quasi_newton, &options(), RESIMULATION_STEP)?;
+    report("smooth, quasi-Newton", &lbfgs);
+    let thelen = if arguments.skip_thelen {
+        None
+    } else {
+        eprintln!("  Thelen muscles, analytic Jacobian, quasi-Newton Hessian:");
+        let run = solve_thelen(
+            &quasi_newton,
+            Derivatives::Analytic,
+            &options(),
+            RESIMULATION_STEP,
+        )?;
+        report("Thelen, quasi-Newton", &run);
+        Some(run)
+    };
+
+    let out = &arguments.out;
+    write_controls(&out.join("controls.csv"), &task, &main.nodes)?;
+    let mut rows = vec![
+        row("De Groote 2016 (smooth)", "exact", &main),
+        row("De Groote 2016 (smooth)", "exact", &fine),
+        row("De Groote 2016 (smooth)", "quasi-Newton (L-BFGS)", &lbfgs),
+    ];
+    if let Some(run) = &thelen {
+        rows.push(row("Thelen 2003", "quasi-Newton (L-BFGS)", run));
+    }
+    let refinement =
+        (fine.solution.objective - main.solution.objective).abs() / main.solution.objective.abs();
+    let results = results(&task, &main, &fine, refinement, thelen.as_ref(), rows);
+    write_json(&out.join("results.json"), &results)?;
+    let mut summary = results.clone();
+    summary["solve_seconds"] = main.solution.seconds.into();
+    summary["solve_seconds_per_row"] = [Some(&main), Some(&fine), Some(&lbfgs), thelen.as_ref()]
+        .iter()
+        .flatten()
+        .map(|run| run.solution.seconds)
+        .collect::<Vec<_>>()
+        .into();
+    write_json(&out.join("summary.json"), &summary)?;
+    plot(&out.join("optimal_controls.svg"), &task, &main)?;
     eprintln!(
-        "wrote controls.csv, summary.json and optimal_controls.svg to {}; re-simulated tracking RMS {tracking_rms:.2e} rad (largest {tracking_max:.2e} rad)",
-        arguments.out.display()
+        "wrote controls.csv, results.json, summary.json and optimal_controls.svg to {}",
+        out.display()
     );
-    for (k, share) in participation.iter().enumerate() {
+    for (k, share) in effort_shares(&main.nodes).iter().enumerate() {
         eprintln!(
             "  m{}: {:.1} % of the activation effort",
             k + 1,
             100.0 * share
         );
     }
+    eprintln!("  objective on 2N - 1 nodes differs by {refinement:.2e} (relative)");
+    if !certified(&main) {
+        return Err(format!(
+            "the smooth solve is not certified: {:?}, largest defect {:.1e} (limit {MAX_DEFECT:e}), tracking RMS {:.2e} rad (limit {MAX_TRACKING_RMS:e})",
+            main.solution.status, main.max_defect, main.tracking_rms
+        )
+        .into());
+    }
     Ok(())
 }
 
-/// Each muscle's share of the activation effort `∫ Σᵢ aᵢ² dt`
-/// (trapezoidal, as the objective).
-fn participation(nodes: &[Node<NX, NU>]) -> [f64; NU] {
-    let h = nodes[1].t - nodes[0].t;
-    let integrals: [f64; NU] = core::array::from_fn(|i| {
-        nodes
-            .iter()
-            .enumerate()
-            .map(|(k, n)| {
-                let w = if k == 0 || k + 1 == nodes.len() {
-                    0.5
-                } else {
-                    1.0
-                };
-                w * h * n.x[2 * NV + i] * n.x[2 * NV + i]
-            })
-            .sum()
-    });
-    let total: f64 = integrals.iter().sum();
-    integrals.map(|i| i / total)
+/// Converged to IPOPT's tolerance, feasible to 1e-8, and tracking when
+/// replayed.
+fn certified(run: &Solved) -> bool {
+    run.solution.status == Status::Solved
+        && run.max_defect <= MAX_DEFECT
+        && run.tracking_rms <= MAX_TRACKING_RMS
+}
+
+fn row(muscles: &str, hessian: &str, run: &Solved) -> serde_json::Value {
+    serde_json::json!({
+        "muscles": muscles,
+        "jacobian": run.jacobian,
+        "hessian": hessian,
+        "nodes": run.nodes.len(),
+        "converged": run.solution.status == Status::Solved,
+        "status": format!("{:?}", run.solution.status),
+        "iterations": run.solution.iterations,
+        "objective": run.solution.objective,
+        "constraint_violation": run.max_defect,
+        "final_dual_infeasibility": run.solution.dual_infeasibility,
+        "resimulated_tracking_rms_rad": run.tracking_rms,
+        "resimulated_tracking_max_rad": run.tracking_max,
+        "activation_effort_share": effort_shares(&run.nodes),
+        "dynamics_evaluations": run.evaluations,
+    })
+}
+
+fn results(
+    task: &Task,
+    main: &Solved,
+    fine: &Solved,
+    refinement: f64,
+    thelen: Option<&Solved>,
+    rows: Vec<serde_json::Value>,
+) -> serde_json::Value {
+    serde_json::json!({
+        "problem": "two-link, four-muscle robot (models/two_link_muscles.toml): joint angles held to q_d(t) = peak (1 - cos 2 pi t / T) / 2 at every node, start at rest, minimise the integral of the sum of squared activations plus r times the integral of the sum of squared excitation rates",
+        "excitation_rate_weight_s2": EXCITATION_RATE_WEIGHT,
+        "transcription": "trapezoidal direct collocation, controls linear between nodes",
+        "solver": "IPOPT (MUMPS), tol 1e-8, constr_viol_tol 1e-8",
+        "duration_s": task.duration,
+        "nodes": task.nodes,
+        "peak_angles_rad": task.peak,
+        "muscles": "De Groote et al. 2016 (smooth curves and activation dynamics), rigid tendons",
+        "jacobian": main.jacobian,
+        "hessian": "exact: dual numbers over rodyn's analytic Jacobian",
+        "converged": certified(main),
+        "status": format!("{:?}", main.solution.status),
+        "iterations": main.solution.iterations,
+        "objective": main.solution.objective,
+        "constraint_violation": main.max_defect,
+        "final_dual_infeasibility": main.solution.dual_infeasibility,
+        "resimulated_tracking_rms_rad": main.tracking_rms,
+        "resimulated_tracking_max_rad": main.tracking_max,
+        "resimulation": format!("rodyn RK4, step {RESIMULATION_STEP} s, from the first node's state, excitations linear between nodes"),
+        "activation_effort_share": effort_shares(&main.nodes),
+        "mesh_refinement": {
+            "nodes": fine.nodes.len(),
+            "objective": fine.solution.objective,
+            "relative_objective_difference": refinement,
+        },
+        "thelen_comparison": thelen.map(|run| serde_json::json!({
+            "converged": run.solution.status == Status::Solved,
+            "status": format!("{:?}", run.solution.status),
+            "objective": run.solution.objective,
+            "constraint_violation": run.max_defect,
+            "resimulated_tracking_rms_rad": run.tracking_rms,
+        })),
+        "rows": rows,
+    })
+}
+
+fn write_json(path: &Path, value: &serde_json::Value) -> std::io::Result<()> {
+    std::fs::write(path, serde_json::to_string_pretty(value)? + "\n")
 }
 
 fn write_controls(path: &Path, task: &Task, nodes: &[Node<NX, NU>]) -> std::io::Result<()> {
@@ -204,94 +323,78 @@ fn write_controls(path: &Path, task: &Task, nodes: &[Node<NX, NU>]) -> std::io::
     std::fs::write(path, text)
 }
 
-/// The solution the files show: the first route (in [`Derivatives::ALL`]'s
-/// order, analytic first) that converged, else the most nearly feasible.
-fn best(runs: &[Run]) -> Option<&Run> {
-    runs.iter().find(|run| converged(run)).or_else(|| {
-        runs.iter()
-            .min_by(|a, b| a.max_defect.total_cmp(&b.max_defect))
-    })
-}
-
-fn converged(run: &Run) -> bool {
-    matches!(
-        run.solution.status,
-        Status::Solved | Status::SolvedToAcceptableLevel
-    )
-}
-
-#[allow(clippy::too_many_arguments)]
-fn write_summary(
-    path: &Path,
-    task: &Task,
-    main: &Run,
-    runs: &[Run],
-    tracking_rms: f64,
-    tracking_max: f64,
-    participation: &[f64; NU],
-) -> std::io::Result<()> {
-    let route = |run: &Run| {
-        serde_json::json!({
-            "derivatives": run.route.name(),
-            "converged": converged(run),
-            "status": format!("{:?}", run.solution.status),
-            "iterations": run.solution.iterations,
-            "final_dual_infeasibility": run.solution.dual_infeasibility,
-            "solve_seconds": run.solution.seconds,
-            "objective": run.solution.objective,
-            "constraint_violation": run.max_defect,
-            "dynamics_evaluations": run.evaluations,
-        })
-    };
-    let summary = serde_json::json!({
-        "problem": "two-link, four-muscle robot (models/two_link_muscles.toml): joint angles held to q_d(t) = peak (1 - cos 2 pi t / T) / 2 at every node, start at rest, minimise the integral of the sum of squared activations plus r times the integral of the sum of squared excitation rates",
-        "excitation_rate_weight_s2": EXCITATION_RATE_WEIGHT,
-        "transcription": "trapezoidal direct collocation, controls linear between nodes",
-        "solver": "IPOPT (MUMPS), limited-memory quasi-Newton Hessian",
-        "duration_s": task.duration,
-        "nodes": task.nodes,
-        "peak_angles_rad": task.peak,
-        "derivatives": main.route.name(),
-        "solution_shown": "the first route that converged (analytic, dual, finite-difference in that order), else the most nearly feasible",
-        "converged": converged(main),
-        "status": format!("{:?}", main.solution.status),
-        "convergence_test": format!("IPOPT acceptable level: defects below 1e-7 and the objective's relative change below {STATIONARY_OBJECTIVE:e} for 10 iterations (the muscle model's kinks keep the dual infeasibility above IPOPT's tol)"),
-        "final_dual_infeasibility": main.solution.dual_infeasibility,
-        "iterations": main.solution.iterations,
-        "solve_seconds": main.solution.seconds,
-        "objective": main.solution.objective,
-        "constraint_violation": main.max_defect,
-        "resimulated_tracking_rms_rad": tracking_rms,
-        "resimulated_tracking_max_rad": tracking_max,
-        "resimulation": format!("rodyn RK4, step {RESIMULATION_STEP} s, from the first node's state, excitations linear between nodes"),
-        "activation_effort_share": participation,
-        "routes": runs.iter().map(route).collect::<Vec<_>>(),
-    });
-    std::fs::write(path, serde_json::to_string_pretty(&summary)? + "\n")
-}
-
 const MUSCLE_COLORS: [RGBColor; NU] = [
     RGBColor(31, 119, 180),
     RGBColor(255, 127, 14),
     RGBColor(44, 160, 44),
     RGBColor(214, 39, 40),
 ];
+/// Largest excitation and activation of a muscle the figure calls idle.
+const IDLE: f64 = 1e-3;
+const JOINT_COLORS: [RGBColor; NV] = [RGBColor(0, 0, 0), RGBColor(120, 120, 120)];
 
-fn plot(
-    path: &Path,
-    task: &Task,
-    nodes: &[Node<NX, NU>],
+/// One legend entry: a line (solid or dashed) or a dot, and its text.
+struct Entry {
+    color: RGBColor,
+    style: Mark,
+    text: String,
+}
+
+#[derive(Clone, Copy, PartialEq)]
+enum Mark {
+    Line,
+    Dashed,
+    Dot,
+}
+
+/// A legend in its own area beside the chart, so that it covers no data.
+fn legend(
+    area: &DrawingArea<SVGBackend<'_>, Shift>,
+    entries: &[Entry],
 ) -> Result<(), Box<dyn std::error::Error>> {
-    let root = SVGBackend::new(path, (900, 760)).into_drawing_area();
+    for (k, entry) in entries.iter().enumerate() {
+        let y = 40 + 22 * i32::try_from(k)?;
+        let style = entry.color.stroke_width(2);
+        match entry.style {
+            Mark::Line => area.draw(&PathElement::new([(8, y), (36, y)], style))?,
+            Mark::Dashed => {
+                for x in [8, 20, 32] {
+                    area.draw(&PathElement::new([(x, y), (x + 6, y)], style))?;
+                }
+            }
+            Mark::Dot => area.draw(&Circle::new((22, y), 3, entry.color.filled()))?,
+        }
+        area.draw(&Text::new(
+            entry.text.clone(),
+            (44, y - 7),
+            ("sans-serif", 14).into_font(),
+        ))?;
+    }
+    Ok(())
+}
+
+/// Dashes along a polyline: every other one of its segments.
+fn dashed(points: Vec<(f64, f64)>, color: RGBColor) -> Vec<PathElement<(f64, f64)>> {
+    points
+        .windows(2)
+        .step_by(2)
+        .map(|pair| PathElement::new(pair.to_vec(), color.stroke_width(2)))
+        .collect()
+}
+
+fn plot(path: &Path, task: &Task, run: &Solved) -> Result<(), Box<dyn std::error::Error>> {
+    let root = SVGBackend::new(path, (1060, 760)).into_drawing_area();
     root.fill(&WHITE)?;
-    let (upper, lower) = root.split_vertically(360);
+    let (upper, lower) = root.split_vertically(370);
+    let (upper_chart, upper_legend) = upper.split_horizontally(720);
+    let (lower_chart, lower_legend) = lower.split_horizontally(720);
     let samples: Vec<f64> = (0..=400)
         .map(|i| task.duration * f64::from(i) / 400.0)
         .collect();
 
     let peak = task.peak.iter().fold(0.0_f64, |m, p| m.max(p.abs()));
-    let mut chart = ChartBuilder::on(&upper)
-        .caption("Desired joint trajectories", ("sans-serif", 20))
+    let mut chart = ChartBuilder::on(&upper_chart)
+        .caption("Desired and re-simulated joint angles", ("sans-serif", 20))
         .margin(12)
         .x_label_area_size(40)
         .y_label_area_size(60)
@@ -301,40 +404,35 @@ fn plot(
         .x_desc("time (s)")
         .y_desc("joint angle (rad)")
         .draw()?;
-    for (j, (name, color)) in [
-        ("q1, shoulder", BLACK),
-        ("q2, elbow", RGBColor(120, 120, 120)),
-    ]
-    .into_iter()
-    .enumerate()
-    {
-        chart
-            .draw_series(LineSeries::new(
-                samples.iter().map(|&t| (t, task.desired(t).0[j])),
-                color.stroke_width(2),
-            ))?
-            .label(format!("{name}, desired"))
-            .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], color.stroke_width(2)));
-        chart
-            .draw_series(
-                nodes
-                    .iter()
-                    .step_by(4)
-                    .map(|n| Circle::new((n.t, n.x[j]), 3, color.filled())),
-            )?
-            .label(format!("{name}, collocation nodes"))
-            .legend(move |(x, y)| Circle::new((x + 10, y), 3, color.filled()));
+    let mut entries = Vec::new();
+    for (j, name) in ["q1, shoulder", "q2, elbow"].into_iter().enumerate() {
+        let color = JOINT_COLORS[j];
+        chart.draw_series(LineSeries::new(
+            samples.iter().map(|&t| (t, task.desired(t).0[j])),
+            color.stroke_width(2),
+        ))?;
+        chart.draw_series(
+            run.resimulated
+                .iter()
+                .step_by(run.resimulated.len() / 40)
+                .map(|&(t, q)| Circle::new((t, q[j]), 3, color.filled())),
+        )?;
+        entries.push(Entry {
+            color,
+            style: Mark::Line,
+            text: format!("{name}, desired"),
+        });
+        entries.push(Entry {
+            color,
+            style: Mark::Dot,
+            text: format!("{name}, re-simulated"),
+        });
     }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.9))
-        .border_style(BLACK)
-        .position(SeriesLabelPosition::UpperRight)
-        .draw()?;
+    legend(&upper_legend, &entries)?;
 
-    let mut chart = ChartBuilder::on(&lower)
+    let mut chart = ChartBuilder::on(&lower_chart)
         .caption(
-            "Optimised controls (muscle excitations)",
+            "Optimal excitations and resulting activations",
             ("sans-serif", 20),
         )
         .margin(12)
@@ -344,23 +442,40 @@ fn plot(
     chart
         .configure_mesh()
         .x_desc("time (s)")
-        .y_desc("excitation u (0-1)")
+        .y_desc("excitation u, activation a (0-1)")
         .draw()?;
+    let mut entries = Vec::new();
     for (i, color) in MUSCLE_COLORS.into_iter().enumerate() {
-        chart
-            .draw_series(LineSeries::new(
-                nodes.iter().map(|n| (n.t, n.u[i])),
-                color.stroke_width(2),
-            ))?
-            .label(format!("u{}, muscle m{}", i + 1, i + 1))
-            .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], color.stroke_width(2)));
+        // Idle muscles' curves lie on the time axis, one over the other:
+        // the legend says so rather than leave them unseen.
+        let largest = run
+            .nodes
+            .iter()
+            .fold(0.0_f64, |m, n| m.max(n.u[i]).max(n.x[2 * NV + i]));
+        let idle = if largest < IDLE {
+            format!(" (below {IDLE:.0e})")
+        } else {
+            String::new()
+        };
+        chart.draw_series(LineSeries::new(
+            run.nodes.iter().map(|n| (n.t, n.u[i])),
+            color.stroke_width(2),
+        ))?;
+        let activation: Vec<(f64, f64)> =
+            run.nodes.iter().map(|n| (n.t, n.x[2 * NV + i])).collect();
+        chart.draw_series(dashed(activation, color))?;
+        entries.push(Entry {
+            color,
+            style: Mark::Line,
+            text: format!("u{}, excitation of m{}{idle}", i + 1, i + 1),
+        });
+        entries.push(Entry {
+            color,
+            style: Mark::Dashed,
+            text: format!("a{}, activation of m{}{idle}", i + 1, i + 1),
+        });
     }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.9))
-        .border_style(BLACK)
-        .position(SeriesLabelPosition::UpperRight)
-        .draw()?;
+    legend(&lower_legend, &entries)?;
     root.present()?;
     Ok(())
 }

@@ -1,5 +1,5 @@
 //! Trapezoidal direct collocation (Betts, *Practical Methods for Optimal
-//! Control*, 2010, §4.5; von Stryk's DIRCOL, the seed's tool, offers it
+//! Control*, 2010, §4.5; von Stryk's DIRCOL, the paper's tool, offers it
 //! beside Hermite-Simpson).
 //!
 //! The time grid `t_k = t_0 + k h`, `k = 0 … N`, carries the state `x_k`
@@ -45,6 +45,22 @@ pub trait Dynamics<const NX: usize, const NU: usize> {
         a: &mut [[f64; NX]; NX],
         b: &mut [[f64; NU]; NX],
     ) -> Option<[f64; NX]>;
+
+    /// The exact second derivatives `∇²(μᵀ f)` with respect to `(x, u)`
+    /// (a square matrix of side `NX + NU`, rows and columns in `(x, u)`
+    /// order) for the weights `μ`: what [`Hessian::Exact`] asks for.
+    /// `None` where they cannot be evaluated. The default has none, so a
+    /// system without it fails at IPOPT's first Hessian evaluation under
+    /// [`Hessian::Exact`].
+    fn weighted_second_derivatives(
+        &mut self,
+        _t: f64,
+        _x: &[f64; NX],
+        _u: &[f64; NU],
+        _mu: &[f64; NX],
+    ) -> Option<Vec<Vec<f64>>> {
+        None
+    }
 }
 
 /// Bounds of one node's state and control; `±f64::INFINITY` for none,
@@ -93,6 +109,9 @@ pub enum Hessian {
     /// (each node's 12 × 12 block from `2 (NX + NU)` Jacobian evaluations):
     /// second-order information at first-order cost per entry.
     JacobianDifferences,
+    /// The objective's exact Hessian plus the constraints' exact second
+    /// derivatives from [`Dynamics::weighted_second_derivatives`].
+    Exact,
 }
 
 /// The transcription of one optimal-control problem: `nodes` nodes
@@ -472,9 +491,16 @@ impl<D: Dynamics<NX, NU>, const NX: usize, const NU: usize> Nlp for Trapezoidal<
                     *m += l;
                 }
             }
-            let Some(second) =
-                self.second_derivatives(k, &z[k * Self::BLOCK..(k + 1) * Self::BLOCK], &mu)
-            else {
+            let block_z = &z[k * Self::BLOCK..(k + 1) * Self::BLOCK];
+            let second = if self.hessian == Hessian::Exact {
+                let x: [f64; NX] = core::array::from_fn(|i| block_z[i]);
+                let u: [f64; NU] = core::array::from_fn(|i| block_z[NX + i]);
+                self.dynamics
+                    .weighted_second_derivatives(self.times[k], &x, &u, &mu)
+            } else {
+                self.second_derivatives(k, block_z, &mu)
+            };
+            let Some(second) = second else {
                 return false;
             };
             let mut entry = block.iter_mut();

@@ -1,6 +1,8 @@
-//! The first seed's optimal-control problem: the two-link, four-muscle
-//! robot ([`rodyn_scenarios::muscle_robot`]) follows desired joint
-//! trajectories with the least muscle effort.
+//! The optimal-control problem of Friedmann, Wojtusch & von Stryk (PAMM):
+//! the two-link, four-muscle robot ([`rodyn_scenarios::muscle_robot`])
+//! follows desired joint trajectories with the least muscle effort. This
+//! module holds the task, its transcription and the robot on its Thelen
+//! muscles; [`crate::smooth_muscle_robot`] the robot on smooth ones.
 //!
 //! State `x = (q₁, q₂, q̇₁, q̇₂, a₁ … a₄)` (rad, rad/s, activations in
 //! `[0, 1]`), control `u = (u₁ … u₄)`, the muscle excitations in `[0, 1]`:
@@ -20,7 +22,7 @@
 //! J = ∫ Σᵢ aᵢ² dt + r Σᵢ ∫ u̇ᵢ² dt,   r = 10⁻³ s².
 //! ```
 //!
-//! The seed asks for "energy-minimal" controls without a formula. Squared
+//! The paper asks for "energy-minimal" controls without a formula. Squared
 //! activations are a common effort measure of muscle optimal control
 //! (Crowninshield & Brand 1981 sum squared stresses; activations squared
 //! or cubed are used by e.g. Anderson & Pandy 2001). The obvious
@@ -31,7 +33,10 @@
 //! the cost of a steady excitation, and the solver chatters between nodes
 //! (seen with this model: excitations alternating node by node at every
 //! grid tried). The rate penalty `r` rules that out at a few per cent of
-//! the objective.
+//! the objective. It also fixes the trapezoidal rule's one free direction
+//! per muscle: each interval's activation defect involves the excitations
+//! at both its ends, so an excitation alternating node by node is
+//! invisible to the activation term.
 //!
 //! The state Jacobians `A = ∂f/∂x`, `B = ∂f/∂u` come by one of three
 //! routes ([`Derivatives`]), compared by the example in one run.
@@ -42,7 +47,7 @@ use rodyn::algorithm::forward_dynamics::Aba;
 use rodyn::algorithm::jacobian::JacobianData;
 use rodyn::drive::{aba_derivatives_with_drives, DriveDerivatives};
 use rodyn::planar::Planar;
-use rodyn::sim::{Integrator, Rk4};
+use rodyn::sim::{AuxiliaryLoads, Integrator, Rk4};
 use rodyn::{Data, Dual};
 use rodyn_scenarios::muscle_robot::{
     self as robot, activation_rates, RobotData, RobotForces, RobotLoads, RobotModel, RobotMuscles,
@@ -58,7 +63,7 @@ pub enum Derivatives {
     /// rodyn's analytic derivatives: `∂q̈/∂(q, q̇)` of forward dynamics
     /// with the muscles (Carpentier & Mansard's for the rigid body, the
     /// paths' gradients and Hessians and the muscles' tension partials for
-    /// the drives), the seed's sensitivity `∂q̈/∂a` (one extra
+    /// the drives), the paper's sensitivity `∂q̈/∂a` (one extra
     /// articulated-body pass per muscle) and `∂ȧ/∂(u, a)` in closed form.
     Analytic,
     /// Forward-mode dual numbers through the whole of `f`: one pass per
@@ -328,7 +333,7 @@ pub fn activation_rate_derivatives(
     }
 }
 
-fn split<S: Copy>(x: &[S; NX]) -> ([S; NV], [S; NV], [S; NU]) {
+pub(crate) fn split<S: Copy>(x: &[S; NX]) -> ([S; NV], [S; NV], [S; NU]) {
     (
         core::array::from_fn(|i| x[i]),
         core::array::from_fn(|i| x[NV + i]),
@@ -336,7 +341,7 @@ fn split<S: Copy>(x: &[S; NX]) -> ([S; NV], [S; NV], [S; NU]) {
     )
 }
 
-fn join<S: Copy>(a: &[S; NV], b: &[S; NV], c: &[S; NU]) -> [S; NX] {
+pub(crate) fn join<S: Copy>(a: &[S; NV], b: &[S; NV], c: &[S; NU]) -> [S; NX] {
     core::array::from_fn(|i| {
         if i < NV {
             a[i]
@@ -360,6 +365,9 @@ pub struct Task {
     pub nodes: usize,
     /// Peak angles of shoulder and elbow, rad: each joint swings from 0
     /// (hanging) to its peak and back, `q_d(t) = peak (1 − cos 2πt/T)/2`.
+    /// The default 0.5 and 0.75 rad are within the smooth muscles' reach;
+    /// at 0.6 and 0.9 rad m1 saturates over the peak and IPOPT reports
+    /// local infeasibility.
     pub peak: [f64; NV],
     /// How the solver gets the Hessian of the Lagrangian.
     pub hessian: Hessian,
@@ -370,7 +378,7 @@ impl Default for Task {
         Self {
             duration: 2.0,
             nodes: 101,
-            peak: [0.6, 0.9],
+            peak: [0.5, 0.75],
             hessian: Hessian::QuasiNewton,
         }
     }
@@ -411,6 +419,12 @@ impl Task {
         &self,
         route: Derivatives,
     ) -> rodyn::Result<Trapezoidal<MuscleRobot, NX, NU>> {
+        Ok(self.transcribe_with(MuscleRobot::new(route)?))
+    }
+
+    /// The collocation problem of [`transcribe`](Self::transcribe) for
+    /// any model of the robot's dynamics with the same state and control.
+    pub fn transcribe_with<D: Dynamics<NX, NU>>(&self, dynamics: D) -> Trapezoidal<D, NX, NU> {
         let task = *self;
         let bounds = move |t: f64| {
             let (q, _) = task.desired(t);
@@ -440,7 +454,7 @@ impl Task {
             }
         };
         let mut problem = Trapezoidal::new(
-            MuscleRobot::new(route)?,
+            dynamics,
             0.0,
             self.duration,
             self.nodes,
@@ -449,28 +463,61 @@ impl Task {
             self.weights(),
         );
         problem.hessian = self.hessian;
-        Ok(problem)
+        problem
     }
 }
 
-/// The optimal controls replayed: RK4 from the first node's state with the
-/// excitations interpolated linearly between nodes (as the collocation
-/// assumes), step `dt`; returns the RMS over the run of the angle error
-/// against the desired trajectory (rad) and the largest error (rad).
-///
-/// # Errors
-/// When the simulation fails (a rodyn error).
-pub fn resimulate(task: &Task, nodes: &[Node<NX, NU>], dt: f64) -> rodyn::Result<(f64, f64)> {
-    let excitation = |t: f64| -> [f64; NU] {
+/// The excitations of `nodes` as a function of time, linear between
+/// nodes (as the collocation assumes) and held at the ends.
+pub fn excitation_of(nodes: &[Node<NX, NU>]) -> impl FnMut(f64) -> [f64; NU] + '_ {
+    move |t: f64| {
         let h = nodes[1].t - nodes[0].t;
         let position = ((t - nodes[0].t) / h).clamp(0.0, (nodes.len() - 1) as f64);
         // In range by the clamp; the cast truncates toward zero.
         let k = (position.floor() as usize).min(nodes.len() - 2);
         let s = position - k as f64;
         core::array::from_fn(|i| (1.0 - s) * nodes[k].u[i] + s * nodes[k + 1].u[i])
-    };
+    }
+}
+
+/// The optimal controls replayed: RK4 from the first node's state with the
+/// excitations interpolated linearly between nodes (as the collocation
+/// assumes), step `dt`, the Thelen muscles; returns the RMS over the run
+/// of the angle error against the desired trajectory (rad) and the
+/// largest error (rad).
+///
+/// # Errors
+/// When the simulation fails (a rodyn error).
+pub fn resimulate(task: &Task, nodes: &[Node<NX, NU>], dt: f64) -> rodyn::Result<(f64, f64)> {
     let muscles = robot::MUSCLES_F64;
-    let mut loads = RobotLoads::new(&muscles, excitation);
+    let mut loads = RobotLoads::new(&muscles, excitation_of(nodes));
+    let run = replay(task, nodes, dt, &mut loads)?;
+    Ok((run.rms, run.max))
+}
+
+/// A replay of optimal controls: the angle error against the desired
+/// trajectory and the angles along the way.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Replay {
+    /// RMS over the run and both joints of the angle error, rad.
+    pub rms: f64,
+    /// Largest angle error, rad.
+    pub max: f64,
+    /// `(t, q)` after every step, s and rad.
+    pub samples: Vec<(f64, [f64; NV])>,
+}
+
+/// RK4 at step `dt` under `loads` (the muscles driven by the excitations
+/// of `nodes`) from the first node's state.
+///
+/// # Errors
+/// When the simulation fails (a rodyn error).
+pub fn replay<L: AuxiliaryLoads<f64, NB, NV, NV, NU, Planar>>(
+    task: &Task,
+    nodes: &[Node<NX, NU>],
+    dt: f64,
+    loads: &mut L,
+) -> rodyn::Result<Replay> {
     let (q, v, a) = split(&nodes[0].x);
     let mut state = robot::RobotState::with_auxiliary(q, v, a);
     let mut data = Data::new();
@@ -478,22 +525,22 @@ pub fn resimulate(task: &Task, nodes: &[Node<NX, NU>], dt: f64) -> rodyn::Result
     let end = nodes[nodes.len() - 1].t;
     let steps = ((end - nodes[0].t) / dt).round() as usize;
     let (mut sum, mut worst) = (0.0, 0.0_f64);
+    let mut samples = Vec::with_capacity(steps + 1);
+    samples.push((state.t, state.q));
     for _ in 0..steps {
-        rk4.step(
-            Aba,
-            &robot::MODEL_F64,
-            &mut data,
-            &mut state,
-            dt,
-            &mut loads,
-        )?;
+        rk4.step(Aba, &robot::MODEL_F64, &mut data, &mut state, dt, loads)?;
         let (desired, _) = task.desired(state.t);
         for (q, d) in state.q.iter().zip(desired) {
             sum += (q - d) * (q - d);
             worst = worst.max((q - d).abs());
         }
+        samples.push((state.t, state.q));
     }
-    Ok(((sum / (steps * NV) as f64).sqrt(), worst))
+    Ok(Replay {
+        rms: (sum / (steps * NV) as f64).sqrt(),
+        max: worst,
+        samples,
+    })
 }
 
 #[cfg(test)]

@@ -1,4 +1,4 @@
-//! The seed's optimal-control problem on a coarse grid (26 nodes, at most
+//! The muscle robot's optimal-control problem (Thelen muscles) on a coarse grid (26 nodes, at most
 //! 1,000 iterations, so that it runs in seconds unoptimised): the solution
 //! holds the desired angles and the bounds, its defects are below 1e-6,
 //! its controls replayed by RK4 follow the desired motion, and the

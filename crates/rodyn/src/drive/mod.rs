@@ -15,6 +15,7 @@
 //! | [`NonlinearSpring`]         | a [`Path`]     | `T = k (L - L₀) + k₃ (L - L₀)³`        | no          |
 //! | [`LinearDamper`]            | a [`Path`]     | `T = c L̇`                              | no          |
 //! | [`ThelenMuscle`]            | a [`Path`]     | Hill-type, Thelen (2003), rigid tendon | activation  |
+//! | [`DeGrooteMuscle`]          | a [`Path`]     | smooth Hill-type, De Groote et al. (2016), rigid tendon | activation |
 //! | [`JointMotor`]              | a joint        | `τ = N k_t i`                          | current     |
 //!
 //! **Drive inputs `w`.** Elements read their inputs from one vector `w`.
@@ -74,6 +75,7 @@ pub mod derivatives;
 pub mod geometry;
 pub mod motor;
 pub mod muscle;
+pub mod muscle_de_groote;
 pub mod path;
 pub mod spring;
 
@@ -85,6 +87,7 @@ pub use derivatives::{
 pub use geometry::PointGeometry;
 pub use motor::JointMotor;
 pub use muscle::{ThelenMuscle, ThelenParameters};
+pub use muscle_de_groote::{DeGrooteMuscle, DeGrooteParameters};
 pub use path::{Path, PathKinematics, MIN_SEGMENT_LENGTH};
 pub use spring::{LinearSpring, NonlinearSpring};
 
