@@ -27,6 +27,7 @@ use std::env;
 const OVERRIDE: &str = "RODYN_TUNING";
 
 fn main() {
+    refuse_std_on_bare_metal();
     println!("cargo::rustc-check-cfg=cfg(rodyn_tuning, values(\"in_order\", \"out_of_order\"))");
     println!("cargo::rerun-if-env-changed={OVERRIDE}");
     let profile = match env::var(OVERRIDE).as_deref() {
@@ -63,5 +64,22 @@ fn default_profile() -> &'static str {
         "in_order"
     } else {
         "out_of_order"
+    }
+}
+
+/// Stops a build of the default `std` feature for a target without the
+/// standard library (`target_os = "none"`: every microcontroller) with one
+/// message that says what to write, instead of rustc's "can't find crate
+/// for `std`" in every crate above.
+fn refuse_std_on_bare_metal() {
+    let std_on = env::var_os("CARGO_FEATURE_STD").is_some();
+    let bare_metal = env::var("CARGO_CFG_TARGET_OS").is_ok_and(|os| os == "none");
+    if std_on && bare_metal {
+        let target = env::var("TARGET").unwrap_or_default();
+        println!(
+            "cargo::error=rodyn: the `std` feature (on by default) needs the standard library, \
+             which {target} does not have. Depend on rodyn without it: \
+             rodyn = {{ version = \"0.1\", default-features = false, features = [\"libm\"] }}"
+        );
     }
 }
