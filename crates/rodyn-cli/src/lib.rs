@@ -16,12 +16,14 @@
 //! PositiveFinite`), and what a hand-written parser calls with `parse`.
 
 mod count;
+mod number;
 mod output;
 mod positive;
 pub mod probe;
 mod steps;
 
 pub use count::Count;
+pub use number::shown;
 pub use output::{writable_dir, writable_file};
 pub use positive::PositiveFinite;
 pub use steps::step_count;

@@ -1,5 +1,6 @@
 //! A positive, finite, normal number.
 
+use crate::shown;
 use core::fmt;
 use core::str::FromStr;
 
@@ -27,7 +28,7 @@ impl PositiveFinite {
         } else if x.is_infinite() {
             Err(format!("must be finite, not {x}"))
         } else if x <= 0.0 {
-            Err(format!("must be positive, not {x}"))
+            Err(format!("must be positive, not {}", shown(x)))
         } else if !x.is_normal() {
             Err(format!(
                 "{x:e} is too small to compute with (below {:e})",
@@ -52,7 +53,11 @@ impl PositiveFinite {
             } else {
                 format!(" {unit}")
             };
-            Err(format!("{} is above the limit of {max}{unit}", self.0))
+            Err(format!(
+                "{} is above the limit of {}{unit}",
+                shown(self.0),
+                shown(max)
+            ))
         }
     }
 }

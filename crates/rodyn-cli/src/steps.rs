@@ -1,5 +1,7 @@
 //! The number of steps of a run, bounded.
 
+use crate::shown;
+
 /// The number of steps of length `dt` in `duration`, rounded to the
 /// nearest: at least one, at most `max_steps`. `duration_name` and
 /// `dt_name` are the arguments' names as the user typed them, for the
@@ -20,12 +22,16 @@ pub fn step_count(
     let steps = (duration / dt).round();
     if steps.is_nan() || steps < 1.0 {
         Err(format!(
-            "{dt_name} {dt} s is longer than {duration_name} {duration} s: the run would take no step"
+            "{dt_name} {} s is longer than {duration_name} {} s: the run would take no step",
+            shown(dt),
+            shown(duration)
         ))
     } else if steps > max_steps as f64 {
         Err(format!(
-            "{duration_name} {duration} s at {dt_name} {dt} s is {steps:.3e} steps, above the limit of {max_steps}; \
-             shorten {duration_name} or lengthen {dt_name}"
+            "{duration_name} {} s at {dt_name} {} s is {steps:.3e} steps, above the limit of {max_steps}; \
+             shorten {duration_name} or lengthen {dt_name}",
+            shown(duration),
+            shown(dt)
         ))
     } else {
         // In range, so the conversion is exact.
