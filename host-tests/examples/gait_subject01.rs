@@ -14,9 +14,10 @@
 
 use plotters::prelude::*;
 use rodyn::Data;
+use rodyn_cli::writable_dir;
 use rodyn_host_tests::subject_gait::{
-    data_dir, inverse_dynamics, model_torques, opensim_loads, read_inputs, with_prosthesis, Frame,
-    GRAVITY, LOAD_COLUMNS, MODEL,
+    check_coverage, data_dir, inverse_dynamics, model_torques, opensim_loads, read_inputs,
+    with_prosthesis, Frame, GRAVITY, LOAD_COLUMNS, MODEL,
 };
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -48,7 +49,13 @@ fn arguments() -> Result<Arguments, String> {
     let mut args = std::env::args().skip(1);
     while let Some(arg) = args.next() {
         match arg.as_str() {
-            "--out" => out = args.next().map(PathBuf::from),
+            "--out" => {
+                out = Some(
+                    args.next()
+                        .map(PathBuf::from)
+                        .ok_or("--out needs a directory")?,
+                )
+            }
             "--data" => {
                 data = args
                     .next()
@@ -82,8 +89,14 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
     let args = arguments()?;
     let input = args.data.join("inverse_dynamics_inputs_60hz.csv");
     let samples = read_inputs(&input)?;
-    std::fs::create_dir_all(&args.out)
-        .map_err(|e| format!("cannot create {}: {e}", args.out.display()))?;
+    check_coverage(
+        &input,
+        &samples,
+        2 * EDGE_FRAMES + 1,
+        "the filter's edge frames at each end and one between",
+        RIGHT_CYCLE,
+    )?;
+    writable_dir(&args.out).map_err(|e| format!("--out: {e}"))?;
     let (model, model32) = MODEL;
     let mass = model.total_mass();
     let weight = mass * GRAVITY;

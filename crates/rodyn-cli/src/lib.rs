@@ -8,6 +8,8 @@
 //! - [`step_count`]: the number of steps of a run, bounded.
 //! - [`writable_dir`] and [`writable_file`]: an output checked before a
 //!   long computation rather than after it.
+//! - [`no_arguments`]: a program without options refuses arguments
+//!   rather than ignoring them.
 //! - [`probe`]: the test harness that runs a tool with hostile values of
 //!   every argument and requires a clean refusal.
 //!
@@ -16,6 +18,7 @@
 //! PositiveFinite`), and what a hand-written parser calls with `parse`.
 
 mod count;
+mod no_arguments;
 mod number;
 mod output;
 mod positive;
@@ -23,6 +26,7 @@ pub mod probe;
 mod steps;
 
 pub use count::Count;
+pub use no_arguments::no_arguments;
 pub use number::shown;
 pub use output::{writable_dir, writable_file};
 pub use positive::PositiveFinite;
