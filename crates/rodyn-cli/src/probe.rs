@@ -177,9 +177,11 @@ pub fn assert_refuses_hostile_values(exe: &Path, option: &NumericOption<'_>) {
     }
 }
 
-/// The value-taking options of a help or usage text: each `--name` (or
-/// `-n`) followed by a `<VALUE>` placeholder, the convention of clap's
-/// help and of rodyn's hand-written usage lines.
+/// The value-taking arguments of a help or usage text: each `--name`
+/// (or `-n`) followed by a `<VALUE>` placeholder, the convention of
+/// clap's help and of rodyn's hand-written usage lines, then the
+/// positional arguments of clap's `Arguments:` section as it writes them
+/// (`<SCENARIO>`, `[CALLS]`).
 #[must_use]
 pub fn value_options(help: &str) -> Vec<String> {
     let tokens: Vec<&str> = help
@@ -187,12 +189,28 @@ pub fn value_options(help: &str) -> Vec<String> {
         .filter(|t| !t.is_empty())
         .collect();
     let mut options = Vec::new();
+    let mut add = |name: String| {
+        if !options.contains(&name) {
+            options.push(name);
+        }
+    };
     for pair in tokens.windows(2) {
         let (name, value) = (pair[0].trim_end_matches(','), pair[1]);
         if name.starts_with('-') && name.len() > 1 && value.starts_with('<') {
-            let name = name.to_owned();
-            if !options.contains(&name) {
-                options.push(name);
+            add(name.to_owned());
+        }
+    }
+    let mut in_arguments = false;
+    for line in help.lines() {
+        if !line.starts_with(' ') && !line.is_empty() {
+            in_arguments = line.trim_end() == "Arguments:";
+            continue;
+        }
+        let text = line.trim_start();
+        let indent = line.len() - text.len();
+        if in_arguments && indent == 2 && (text.starts_with('<') || text.starts_with('[')) {
+            if let Some(name) = text.split_whitespace().next() {
+                add(name.to_owned());
             }
         }
     }

@@ -39,7 +39,8 @@ fn numeric(subcommand: &str) -> &'static [&'static str] {
 /// The other value-taking options, each with a probe below.
 fn other(subcommand: &str) -> &'static [&'static str] {
     match subcommand {
-        "run" => &["--method", "--integrator", "--scalar", "--out"],
+        "run" => &["<SCENARIO>", "--method", "--integrator", "--scalar", "--out"],
+        "failures" => &["[EXPERIMENT]", "--out"],
         _ => &["--out"],
     }
 }
