@@ -38,12 +38,17 @@ const EDGE_FRAMES: usize = 5;
 /// assumption of this example, not a measurement.
 const PROSTHESIS_MASS_FRACTION: f64 = 0.391;
 
+const USAGE: &str = "usage: gait_subject01 --out <DIR> [--data <DIR>]
+  --out <DIR>   where the table, the summary and the figures go (created if missing)
+  --data <DIR>  where inverse_dynamics_inputs_60hz.csv is (default: the shared gait data)";
+
 struct Arguments {
     out: PathBuf,
     data: PathBuf,
 }
 
-fn arguments() -> Result<Arguments, String> {
+/// The arguments, or `None` after printing the usage for `--help`.
+fn arguments() -> Result<Option<Arguments>, String> {
     let mut out = None;
     let mut data = data_dir();
     let mut args = std::env::args().skip(1);
@@ -63,19 +68,16 @@ fn arguments() -> Result<Arguments, String> {
                     .ok_or("--data needs a directory")?
             }
             "-h" | "--help" => {
-                return Err("usage: gait_subject01 --out DIR [--data DIR]".to_owned());
+                println!("{USAGE}");
+                return Ok(None);
             }
-            other => {
-                return Err(format!(
-                    "unknown argument `{other}`; usage: gait_subject01 --out DIR [--data DIR]"
-                ))
-            }
+            other => return Err(format!("unknown argument `{other}`\n{USAGE}")),
         }
     }
-    Ok(Arguments {
-        out: out.ok_or("usage: gait_subject01 --out DIR [--data DIR]")?,
+    Ok(Some(Arguments {
+        out: out.ok_or(format!("--out is missing\n{USAGE}"))?,
         data,
-    })
+    }))
 }
 
 fn main() {
@@ -86,7 +88,9 @@ fn main() {
 }
 
 fn run() -> Result<(), Box<dyn std::error::Error>> {
-    let args = arguments()?;
+    let Some(args) = arguments()? else {
+        return Ok(());
+    };
     let input = args.data.join("inverse_dynamics_inputs_60hz.csv");
     let samples = read_inputs(&input)?;
     check_coverage(

@@ -4,51 +4,16 @@
 //! index out of range or NaN averages. The files are written here, so the
 //! test needs no measured data.
 
-use rodyn_host_tests::subject_gait::{check_coverage, read_inputs, COORDINATES};
+mod gait_inputs;
+
+use gait_inputs::{frames, write_inputs};
+use rodyn_host_tests::subject_gait::{check_coverage, read_inputs};
 use std::path::PathBuf;
 
-/// The header of `inverse_dynamics_inputs_60hz.csv`.
-fn header() -> Vec<String> {
-    let translation = |c: &str| c.ends_with("_tx") || c.ends_with("_ty");
-    let mut columns = vec!["time_s".to_owned()];
-    for (prefix, linear, angular) in [
-        ("q", "m", "rad"),
-        ("qd", "m_per_s", "rad_per_s"),
-        ("qdd", "m_per_s2", "rad_per_s2"),
-    ] {
-        for c in COORDINATES {
-            let unit = if translation(c) { linear } else { angular };
-            columns.push(format!("{prefix}_{c}_{unit}"));
-        }
-    }
-    for side in ["r", "l"] {
-        for name in ["Fx_N", "Fy_N", "CoPx_m", "CoPy_m", "Tz_Nm"] {
-            columns.push(format!("{side}_{name}"));
-        }
-    }
-    columns
-}
-
-/// A file of `times.len()` rows at `times`, every other field zero.
+/// A file of rows at `times` in this test's scratch directory.
 fn write_file(name: &str, times: &[f64]) -> PathBuf {
-    let header = header();
-    let mut text = header.join(",");
-    for t in times {
-        text.push('\n');
-        text.push_str(&format!("{t:.8}"));
-        text.push_str(&",0".repeat(header.len() - 1));
-    }
     let dir = std::env::temp_dir().join(format!("rodyn-gait-coverage-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join(name);
-    std::fs::write(&path, text).unwrap();
-    path
-}
-
-/// 60 Hz frames from `start` to `end` s.
-fn frames(start: f64, end: f64) -> Vec<f64> {
-    let n = ((end - start) * 60.0).round() as usize;
-    (0..=n).map(|k| start + k as f64 / 60.0).collect()
+    write_inputs(&dir.join(name), times)
 }
 
 const CYCLE: (f64, f64) = (0.618, 1.852);

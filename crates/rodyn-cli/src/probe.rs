@@ -9,7 +9,7 @@
 //! argument cannot skip the probe.
 
 use std::io::Read;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::process::{Command, ExitStatus, Stdio};
 use std::time::{Duration, Instant};
 
@@ -141,6 +141,39 @@ pub fn assert_no_panic(outcome: &Outcome, args: &[&str]) {
         "{args:?} died by a signal:\n{}",
         outcome.stderr
     );
+}
+
+/// The path of example `name` of `package`, built first (quick when it is
+/// up to date) in the profile of the running test. Cargo gives tests the
+/// paths of binaries (`CARGO_BIN_EXE_…`) but not of examples; `cargo
+/// test` builds the examples anyway, and `cargo test --test …` does not,
+/// hence the build here.
+///
+/// # Panics
+/// When the build fails, with cargo's status.
+#[must_use]
+pub fn example(package: &str, name: &str) -> PathBuf {
+    // target/<profile>/deps/<test binary>
+    let exe = std::env::current_exe().expect("the test's own path");
+    let profile_dir = exe
+        .parent()
+        .and_then(Path::parent)
+        .expect("the test runs from target/<profile>/deps")
+        .to_path_buf();
+    // The directory is named after the profile, but for `dev` (and
+    // `test`, which builds into `dev`'s directory).
+    let profile = match profile_dir.file_name().and_then(|n| n.to_str()) {
+        Some("debug") | None => "dev",
+        Some(other) => other,
+    };
+    let cargo = std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into());
+    let status = Command::new(cargo)
+        .args(["build", "--quiet", "--profile", profile, "-p", package])
+        .args(["--example", name])
+        .status()
+        .expect("cargo runs");
+    assert!(status.success(), "cargo build --example {name}: {status}");
+    profile_dir.join("examples").join(name)
 }
 
 /// A numeric option and how to reach it.

@@ -17,6 +17,7 @@
 
 use clap::Parser;
 use plotters::prelude::*;
+use rodyn_cli::{writable_dir, Count, PositiveFinite};
 use rodyn_optimal_control::collocation::Node;
 use rodyn_optimal_control::ipopt::{solve, Options, Solution, Status};
 use rodyn_optimal_control::muscle_robot::{
@@ -34,12 +35,12 @@ struct Arguments {
     /// Output directory (created if missing).
     #[arg(long)]
     out: PathBuf,
-    /// Collocation nodes.
-    #[arg(long, default_value_t = Task::default().nodes)]
-    nodes: usize,
-    /// Duration of the motion, s.
-    #[arg(long, default_value_t = Task::default().duration)]
-    duration: f64,
+    /// Collocation nodes, 3 to 5000.
+    #[arg(long, default_value_t = Count(Task::default().nodes), allow_hyphen_values = true)]
+    nodes: Nodes,
+    /// Duration of the motion, s, positive and at most 60 s.
+    #[arg(long, default_value_t = PositiveFinite(Task::default().duration), allow_hyphen_values = true)]
+    duration: PositiveFinite,
     /// Only the analytic route (skips the comparison of derivative routes).
     #[arg(long)]
     single: bool,
@@ -52,6 +53,31 @@ struct Arguments {
 /// deactivation have different time constants), so the dual infeasibility
 /// stalls above IPOPT's `tol` and is reported beside.
 const STATIONARY_OBJECTIVE: f64 = 1e-8;
+
+/// Collocation nodes: at least the three a trapezoidal transcription
+/// needs; at most 5000, whose problem IPOPT still holds in memory and
+/// solves in minutes.
+type Nodes = Count<3, 5000>;
+
+/// The longest motion `--duration` takes (s): the re-simulation at
+/// [`RESIMULATION_STEP`] is then 600 000 RK4 steps.
+const MAX_DURATION: f64 = 60.0;
+
+/// The task the arguments describe, checked before any solve: the
+/// duration within [`MAX_DURATION`] and the output directory writable
+/// (the node count is checked by its type as it is parsed).
+fn checked_task(arguments: &Arguments) -> Result<Task, String> {
+    let duration = arguments
+        .duration
+        .at_most(MAX_DURATION, "s")
+        .map_err(|e| format!("--duration: {e}"))?;
+    writable_dir(&arguments.out).map_err(|e| format!("--out: {e}"))?;
+    Ok(Task {
+        duration: duration.get(),
+        nodes: arguments.nodes.get(),
+        ..Task::default()
+    })
+}
 
 /// RK4 step of the re-simulation, s.
 const RESIMULATION_STEP: f64 = 1e-4;
@@ -99,16 +125,7 @@ fn run(task: &Task, route: Derivatives) -> Result<Run, Box<dyn std::error::Error
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let arguments = Arguments::parse();
-    if arguments.nodes < 3 || !(arguments.duration > 0.0 && arguments.duration.is_finite()) {
-        return Err("need at least 3 nodes and a positive, finite duration".into());
-    }
-    let task = Task {
-        duration: arguments.duration,
-        nodes: arguments.nodes,
-        ..Task::default()
-    };
-    std::fs::create_dir_all(&arguments.out)
-        .map_err(|e| format!("cannot create {}: {e}", arguments.out.display()))?;
+    let task = checked_task(&arguments)?;
     eprintln!(
         "muscle robot: {} nodes over {} s, {} variables",
         task.nodes,
