@@ -14,6 +14,7 @@ use rodyn_model::render::{render_svg, View};
 use rodyn_model::runtime::RuntimeModel;
 use rodyn_model::tree::render_tree;
 use rodyn_model::{build::generate_source, LoadOptions, WarningKinds};
+use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -48,8 +49,7 @@ fn main() -> ExitCode {
 fn run(args: &[String]) -> Result<(), String> {
     let (command, rest) = args.split_first().ok_or(USAGE)?;
     if matches!(command.as_str(), "-h" | "--help" | "help") {
-        println!("{USAGE}");
-        return Ok(());
+        return emit(&format!("{USAGE}\n"));
     }
     let mut file: Option<PathBuf> = None;
     let mut module = None;
@@ -140,27 +140,24 @@ fn run(args: &[String]) -> Result<(), String> {
             for w in &model.warnings {
                 eprintln!("{w}");
             }
-            print!("{source}");
-            Ok(())
+            emit(&source)
         }
         "check" => {
             let model = rodyn_model::load(&file, options).map_err(|d| d.to_string())?;
             for w in &model.warnings {
                 eprintln!("{w}");
             }
-            println!(
-                "{}: ok, {} bodies, nq = {}, nv = {}",
+            emit(&format!(
+                "{}: ok, {} bodies, nq = {}, nv = {}\n",
                 file.display(),
                 model.bodies.len(),
                 model.nq(),
                 model.nv()
-            );
-            Ok(())
+            ))
         }
         "tree" => {
             let model = rodyn_model::load(&file, options).map_err(|d| d.to_string())?;
-            print!("{}", render_tree(&model));
-            Ok(())
+            emit(&render_tree(&model))
         }
         "render" => {
             let model = rodyn_model::load(&file, options).map_err(|d| d.to_string())?;
@@ -183,7 +180,7 @@ fn run(args: &[String]) -> Result<(), String> {
                 Some(path) => {
                     std::fs::write(&path, svg).map_err(|e| format!("-o {}: {e}", path.display()))?
                 }
-                None => print!("{svg}"),
+                None => emit(&svg)?,
             }
             Ok(())
         }
@@ -219,5 +216,16 @@ fn pixels(text: &str) -> Result<f64, String> {
         Ok(w)
     } else {
         Err(format!("`{text}` is outside {min} to {max} px"))
+    }
+}
+
+/// Writes `text` to standard output. A reader that stopped early (`| head`)
+/// is no error: what it wanted it has.
+fn emit(text: &str) -> Result<(), String> {
+    match std::io::stdout().lock().write_all(text.as_bytes()) {
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {
+            Err(format!("cannot write to standard output: {e}"))
+        }
+        _ => Ok(()),
     }
 }
