@@ -11,17 +11,31 @@ fn exe() -> &'static Path {
     Path::new(env!("CARGO_BIN_EXE_rodyn-sim"))
 }
 
-/// A scratch directory of this test process.
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("rodyn-sim-probe-{}-{name}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+/// A scratch directory of this test process, removed when dropped.
+struct Scratch(PathBuf);
+
+impl Scratch {
+    fn new(name: &str) -> Self {
+        let dir =
+            std::env::temp_dir().join(format!("rodyn-sim-probe-{}-{name}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        Self(dir)
+    }
+    fn path(&self) -> &str {
+        self.0.to_str().unwrap()
+    }
 }
 
-/// A path that cannot be a directory: it goes through a plain file.
-fn unwritable() -> PathBuf {
-    let dir = scratch("unwritable");
-    let file = dir.join("a-file");
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+/// A path in `scratch` that cannot be a directory: it goes through a
+/// plain file.
+fn unwritable(scratch: &Scratch) -> PathBuf {
+    let file = scratch.0.join("a-file");
     std::fs::write(&file, "not a directory").unwrap();
     file.join("out")
 }
@@ -39,7 +53,13 @@ fn numeric(subcommand: &str) -> &'static [&'static str] {
 /// The other value-taking options, each with a probe below.
 fn other(subcommand: &str) -> &'static [&'static str] {
     match subcommand {
-        "run" => &["<SCENARIO>", "--method", "--integrator", "--scalar", "--out"],
+        "run" => &[
+            "<SCENARIO>",
+            "--method",
+            "--integrator",
+            "--scalar",
+            "--out",
+        ],
         "failures" => &["[EXPERIMENT]", "--out"],
         _ => &["--out"],
     }
@@ -62,8 +82,8 @@ fn every_option_is_probed() {
 
 #[test]
 fn numeric_options_refuse_hostile_values() {
-    let out = scratch("numeric");
-    let out = out.to_str().unwrap();
+    let scratch = Scratch::new("numeric");
+    let out = scratch.path();
     for option in numeric("run") {
         assert_refuses_hostile_values(
             exe(),
@@ -79,8 +99,8 @@ fn numeric_options_refuse_hostile_values() {
 
 #[test]
 fn runs_without_end_or_without_a_step_are_refused_with_the_limit() {
-    let out = scratch("limits");
-    let out = out.to_str().unwrap();
+    let scratch = Scratch::new("limits");
+    let out = scratch.path();
     let refused = |args: &[&str], words: &[&str]| {
         let mut all = vec!["run", "arm-swing", "-o", out];
         all.extend(args);
@@ -103,8 +123,8 @@ fn runs_without_end_or_without_a_step_are_refused_with_the_limit() {
 
 #[test]
 fn other_options_refuse_unknown_choices_and_unwritable_outputs() {
-    let out = scratch("choices");
-    let out = out.to_str().unwrap();
+    let scratch = Scratch::new("choices");
+    let out = scratch.path();
     for option in ["--method", "--integrator", "--scalar"] {
         assert_refused(
             exe(),
@@ -118,7 +138,7 @@ fn other_options_refuse_unknown_choices_and_unwritable_outputs() {
         &["failures", "no-such-experiment"],
         "no-such-experiment",
     );
-    let bad = unwritable();
+    let bad = unwritable(&scratch);
     let bad = bad.to_str().unwrap();
     for args in [
         vec!["run", "arm-swing", "--duration", "0.01", "-o", bad],
@@ -134,7 +154,8 @@ fn other_options_refuse_unknown_choices_and_unwritable_outputs() {
 
 #[test]
 fn a_short_valid_run_still_succeeds_and_writes_its_files() {
-    let out = scratch("valid");
+    let scratch = Scratch::new("valid");
+    let out = &scratch.0;
     let outcome = run(
         exe(),
         &[
@@ -143,7 +164,7 @@ fn a_short_valid_run_still_succeeds_and_writes_its_files() {
             "--duration",
             "0.05",
             "-o",
-            out.to_str().unwrap(),
+            scratch.path(),
         ],
     );
     assert!(outcome.status.success(), "{}", outcome.stderr);
@@ -151,5 +172,4 @@ fn a_short_valid_run_still_succeeds_and_writes_its_files() {
     let csv = std::fs::read_to_string(out.join("arm-swing.csv")).unwrap();
     assert_eq!(csv.lines().count(), 1 + 6, "{csv}");
     assert!(out.join("arm-swing.svg").is_file() && out.join("arm-swing.gif").is_file());
-    let _ = std::fs::remove_dir_all(&out);
 }
