@@ -10,6 +10,7 @@
 //! rodyn-model render <file> [--q a,b,...] [--view xy|xz|yz|iso] [-o out.svg]   stick figure
 //! ```
 
+use rodyn_model::names::module_name;
 use rodyn_model::render::{render_svg, View};
 use rodyn_model::runtime::RuntimeModel;
 use rodyn_model::tree::render_tree;
@@ -64,7 +65,17 @@ fn run(args: &[String]) -> Result<(), String> {
     let mut it = rest.iter();
     while let Some(arg) = it.next() {
         match arg.as_str() {
-            "--module" => module = Some(it.next().ok_or("--module needs a name")?.clone()),
+            "--module" => {
+                let name = it.next().ok_or("--module needs a name")?;
+                // The generator would rename it; say so instead.
+                let usable = module_name(name);
+                if &usable != name {
+                    return Err(format!(
+                        "--module: `{name}` is not a Rust module name; `{usable}` would be"
+                    ));
+                }
+                module = Some(name.clone());
+            }
             "--floating-base" => options.floating_base = true,
             "--strict" => options.strict = true,
             "--round-quarter-turns" => options.round_quarter_turns = true,

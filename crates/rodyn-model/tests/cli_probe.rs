@@ -106,6 +106,16 @@ fn other_options_refuse_bad_values_outputs_and_inputs() {
         // The value missing.
         assert_refused(exe(), &["render", &pendulum, option], option);
     }
+    // A module name the generator would have to change.
+    for name in ["a b", "", "9x", "fn", "Panda"] {
+        assert_refused(exe(), &["rust", &pendulum, "--module", name], "--module");
+    }
+    let outcome = run(exe(), &["rust", &pendulum, "--module", "pendulum_model"]);
+    assert!(
+        outcome.status.success() && outcome.stdout.contains("pub mod pendulum_model {"),
+        "{}",
+        outcome.stderr
+    );
     // An option of another command is refused, not ignored.
     assert_refused(exe(), &["check", &pendulum, "--module", "m"], "--module");
     assert_refused(exe(), &["tree", &pendulum, "--view", "xy"], "--view");
