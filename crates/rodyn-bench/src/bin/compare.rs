@@ -112,13 +112,23 @@ fn run_pinocchio(program: &Path, manifest: &Path, ms: f64) -> Result<PinocchioRo
     let mut round = PinocchioRound::default();
     for line in String::from_utf8_lossy(&out.stdout).lines() {
         let fields: Vec<&str> = line.split_whitespace().collect();
+        // A field that is not a finite number would become NaN in the
+        // table without a word: refuse the line instead.
+        let number = |x: &str| -> Result<f64, String> {
+            x.parse::<f64>()
+                .ok()
+                .filter(|x| x.is_finite())
+                .ok_or(format!(
+                    "`{x}` is not a finite number in Pinocchio's line: {line}"
+                ))
+        };
         match fields.as_slice() {
             ["check", name, rest @ ..] => {
-                let tau = rest.iter().map(|x| x.parse().unwrap_or(f64::NAN)).collect();
+                let tau = rest.iter().map(|x| number(x)).collect::<Result<_, _>>()?;
                 round.torques.insert((*name).to_owned(), tau);
             }
             ["time", name, algorithm, ns] => {
-                let ns = ns.parse().unwrap_or(f64::NAN);
+                let ns = number(ns)?;
                 round
                     .ns
                     .insert(((*name).to_owned(), (*algorithm).to_owned()), ns);
