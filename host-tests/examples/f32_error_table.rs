@@ -14,14 +14,15 @@
 
 use nalgebra::DMatrix;
 use rodyn::Scalar;
+use rodyn_cli::no_arguments;
 use rodyn_host_tests::fixture::compare::{compare_fixture, ALGORITHMS};
 use rodyn_host_tests::fixture::Fixture;
 use rodyn_host_tests::for_each_fixture;
 
 /// The largest condition number of the fixture's reference mass matrices.
-fn mass_matrix_condition(name: &str) -> f64 {
-    let fixture = Fixture::load_named(name).unwrap_or_else(|e| panic!("{e}"));
-    fixture
+fn mass_matrix_condition(name: &str) -> Result<f64, String> {
+    let fixture = Fixture::load_named(name).map_err(|e| e.to_string())?;
+    Ok(fixture
         .states
         .iter()
         .map(|s| {
@@ -30,20 +31,22 @@ fn mass_matrix_condition(name: &str) -> f64 {
             let eig = m.symmetric_eigen().eigenvalues;
             eig.max() / eig.min()
         })
-        .fold(0.0, f64::max)
+        .fold(0.0, f64::max))
 }
 
-fn row<S: Scalar, const NB: usize, const NQ: usize, const NV: usize>(name: &str) -> String {
-    let errors = compare_fixture::<S, NB, NQ, NV>(name).unwrap_or_else(|e| panic!("{name}: {e}"));
+fn row<S: Scalar, const NB: usize, const NQ: usize, const NV: usize>(
+    name: &str,
+) -> Result<String, String> {
+    let errors = compare_fixture::<S, NB, NQ, NV>(name).map_err(|e| format!("{name}: {e}"))?;
     let cells: Vec<String> = ALGORITHMS
         .iter()
         .map(|(_, checks)| format!("{:.1e}", errors.max_of(checks)))
         .collect();
-    format!(
+    Ok(format!(
         "| {name} | {NV} | {:.0e} | {} |",
-        mass_matrix_condition(name),
+        mass_matrix_condition(name)?,
         cells.join(" | ")
-    )
+    ))
 }
 
 macro_rules! table {
@@ -51,7 +54,7 @@ macro_rules! table {
         let header: Vec<&str> = ALGORITHMS.iter().map(|(name, _)| *name).collect();
         println!("| model | nv | κ₂(M) | {} |", header.join(" | "));
         println!("|---|---:|---:|{}", "---:|".repeat(ALGORITHMS.len()));
-        $( println!("{}", row::<$scalar, $nb, $nq, $nv>($name)); )*
+        $( println!("{}", row::<$scalar, $nb, $nq, $nv>($name)?); )*
     }};
 }
 
@@ -62,9 +65,11 @@ macro_rules! f64_table {
     ($($fixture:tt)*) => { table!(f64; $($fixture)*) };
 }
 
-fn main() {
+fn main() -> Result<(), String> {
+    no_arguments("f32_error_table", "prints the table of every fixture")?;
     println!("### f32: relative error against Pinocchio\n");
     for_each_fixture!(f32_table);
     println!("\n### f64: relative error against Pinocchio\n");
     for_each_fixture!(f64_table);
+    Ok(())
 }

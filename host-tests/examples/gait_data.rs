@@ -28,6 +28,7 @@ use gait_support::gait_planar::{endpoint, ENDPOINTS_F64, MODEL_F64, NQ};
 use rodyn::algorithm::kinematics::forward_kinematics;
 use rodyn::planar::Planar;
 use rodyn::Data;
+use rodyn_cli::no_arguments;
 use std::f64::consts::PI;
 
 /// Stride period T (s): a cadence of 0.91 strides (1.8 steps) per second.
@@ -301,6 +302,7 @@ fn vertical_shape_mean() -> f64 {
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
+    no_arguments("gait_data", "writes host-tests/data/gait")?;
     let mut coordinates = joint_series();
     let speed = place_pelvis(&mut coordinates);
     let cycle = GaitCycle { coordinates };

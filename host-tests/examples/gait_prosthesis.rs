@@ -18,6 +18,7 @@ use gait_support::data::{data_dir, GaitCycle, GroundReaction};
 use gait_support::gait_planar::{v, MODEL_F32, MODEL_F64};
 use gait_support::inverse_dynamics::{gait_inverse_dynamics, GaitData, GaitFrame};
 use plotters::prelude::*;
+use rodyn_cli::no_arguments;
 use std::path::Path;
 
 /// One curve of a figure: label, colour, values over the cycle.
@@ -83,6 +84,10 @@ fn peak(values: &[f64]) -> (usize, f64) {
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
+    no_arguments(
+        "gait_prosthesis",
+        "reads host-tests/data/gait and writes docs/img/gait",
+    )?;
     let cycle = GaitCycle::read(&data_dir().join("joint_fourier.csv"))?;
     let reactions = GroundReaction::read_all(&data_dir().join("ground_reaction.csv"))?;
     let mass = MODEL_F64.total_mass();

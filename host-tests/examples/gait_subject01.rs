@@ -14,9 +14,10 @@
 
 use plotters::prelude::*;
 use rodyn::Data;
+use rodyn_cli::writable_dir;
 use rodyn_host_tests::subject_gait::{
-    data_dir, inverse_dynamics, model_torques, opensim_loads, read_inputs, with_prosthesis, Frame,
-    GRAVITY, LOAD_COLUMNS, MODEL,
+    check_coverage, data_dir, inverse_dynamics, model_torques, opensim_loads, read_inputs,
+    with_prosthesis, Frame, GRAVITY, LOAD_COLUMNS, MODEL,
 };
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -37,18 +38,29 @@ const EDGE_FRAMES: usize = 5;
 /// assumption of this example, not a measurement.
 const PROSTHESIS_MASS_FRACTION: f64 = 0.391;
 
+const USAGE: &str = "usage: gait_subject01 --out <DIR> [--data <DIR>]
+  --out <DIR>   where the table, the summary and the figures go (created if missing)
+  --data <DIR>  where inverse_dynamics_inputs_60hz.csv is (default: the shared gait data)";
+
 struct Arguments {
     out: PathBuf,
     data: PathBuf,
 }
 
-fn arguments() -> Result<Arguments, String> {
+/// The arguments, or `None` after printing the usage for `--help`.
+fn arguments() -> Result<Option<Arguments>, String> {
     let mut out = None;
     let mut data = data_dir();
     let mut args = std::env::args().skip(1);
     while let Some(arg) = args.next() {
         match arg.as_str() {
-            "--out" => out = args.next().map(PathBuf::from),
+            "--out" => {
+                out = Some(
+                    args.next()
+                        .map(PathBuf::from)
+                        .ok_or("--out needs a directory")?,
+                )
+            }
             "--data" => {
                 data = args
                     .next()
@@ -56,19 +68,16 @@ fn arguments() -> Result<Arguments, String> {
                     .ok_or("--data needs a directory")?
             }
             "-h" | "--help" => {
-                return Err("usage: gait_subject01 --out DIR [--data DIR]".to_owned());
+                println!("{USAGE}");
+                return Ok(None);
             }
-            other => {
-                return Err(format!(
-                    "unknown argument `{other}`; usage: gait_subject01 --out DIR [--data DIR]"
-                ))
-            }
+            other => return Err(format!("unknown argument `{other}`\n{USAGE}")),
         }
     }
-    Ok(Arguments {
-        out: out.ok_or("usage: gait_subject01 --out DIR [--data DIR]")?,
+    Ok(Some(Arguments {
+        out: out.ok_or(format!("--out is missing\n{USAGE}"))?,
         data,
-    })
+    }))
 }
 
 fn main() {
@@ -79,11 +88,19 @@ fn main() {
 }
 
 fn run() -> Result<(), Box<dyn std::error::Error>> {
-    let args = arguments()?;
+    let Some(args) = arguments()? else {
+        return Ok(());
+    };
     let input = args.data.join("inverse_dynamics_inputs_60hz.csv");
     let samples = read_inputs(&input)?;
-    std::fs::create_dir_all(&args.out)
-        .map_err(|e| format!("cannot create {}: {e}", args.out.display()))?;
+    check_coverage(
+        &input,
+        &samples,
+        2 * EDGE_FRAMES + 1,
+        "the filter's edge frames at each end and one between",
+        RIGHT_CYCLE,
+    )?;
+    writable_dir(&args.out).map_err(|e| format!("--out: {e}"))?;
     let (model, model32) = MODEL;
     let mass = model.total_mass();
     let weight = mass * GRAVITY;

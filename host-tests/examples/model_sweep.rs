@@ -16,6 +16,7 @@
 use rodyn::algorithm::crba::crba;
 use rodyn::algorithm::rnea::rnea;
 use rodyn::Data;
+use rodyn_cli::writable_file;
 use rodyn_model::runtime::{RuntimeModel, MAX_BODIES, MAX_NV};
 use rodyn_model::{load, LoadOptions};
 use serde_json::{json, Value};
@@ -25,10 +26,18 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let [input, output] = args.as_slice() else {
         return Err("usage: model_sweep IN.json OUT.json".into());
     };
-    let robots: Vec<Value> = serde_json::from_str(&std::fs::read_to_string(input)?)?;
+    let text = std::fs::read_to_string(input).map_err(|e| format!("{input}: {e}"))?;
+    let robots: Vec<Value> = serde_json::from_str(&text).map_err(|e| format!("{input}: {e}"))?;
+    if robots.is_empty() {
+        return Err(format!("{input}: no robots in the list").into());
+    }
+    // The output is checked before the sweep, not after it.
+    writable_file(std::path::Path::new(output))?;
     let mut results = Vec::new();
     for (n, robot) in robots.iter().enumerate() {
-        let urdf = robot["urdf"].as_str().ok_or("urdf")?;
+        let urdf = robot["urdf"]
+            .as_str()
+            .ok_or_else(|| format!("{input}: robot {} has no \"urdf\" path", n + 1))?;
         eprintln!("[{}/{}] {urdf}", n + 1, robots.len());
         let options = LoadOptions {
             floating_base: robot["floating_base"].as_bool().unwrap_or(true),
@@ -88,6 +97,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         }
         results.push(json!({"urdf": urdf, "loaded": true, "warnings": warnings, "nq": nq, "nv": nv, "states": states}));
     }
-    std::fs::write(output, serde_json::to_string(&results)?)?;
+    std::fs::write(output, serde_json::to_string(&results)?)
+        .map_err(|e| format!("{output}: {e}"))?;
     Ok(())
 }

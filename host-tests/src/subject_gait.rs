@@ -111,7 +111,11 @@ pub struct InputError {
 
 impl fmt::Display for InputError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}:{}", self.file.display(), self.line)?;
+        write!(f, "{}", self.file.display())?;
+        // Line 0 is the file as a whole.
+        if self.line > 0 {
+            write!(f, ":{}", self.line)?;
+        }
         if let Some(column) = &self.column {
             write!(f, ": column `{column}`")?;
         }
@@ -237,6 +241,50 @@ pub fn read_inputs(path: &Path) -> Result<Vec<Sample>, InputError> {
         return Err(error(0, None, "no data rows".to_owned()));
     }
     Ok(samples)
+}
+
+/// Checks that `samples`, read from `path`, are enough for an analysis:
+/// at least `min_rows` rows (`why` says what needs them), and times that
+/// reach from `span.0` to `span.1` seconds. A file that passes
+/// [`read_inputs`] can still be too short for an analysis that averages
+/// over its inner frames or follows a gait cycle: without this check such
+/// a file gives NaN averages or an index out of range.
+///
+/// # Errors
+/// The file, how many rows it has or which times they cover, and what is
+/// missing.
+pub fn check_coverage(
+    path: &Path,
+    samples: &[Sample],
+    min_rows: usize,
+    why: &str,
+    span: (f64, f64),
+) -> Result<(), InputError> {
+    let error = |message: String| InputError {
+        file: path.to_path_buf(),
+        line: 0,
+        column: None,
+        message,
+    };
+    if samples.len() < min_rows {
+        return Err(error(format!(
+            "{} data rows, too few: at least {min_rows} are needed ({why})",
+            samples.len()
+        )));
+    }
+    let (first, last) = match (samples.first(), samples.last()) {
+        (Some(first), Some(last)) => (first.time, last.time),
+        _ => return Err(error("no data rows".to_owned())),
+    };
+    // A thousandth of a 60 Hz frame: the times are printed to 1e-8 s.
+    let slack = 1e-5;
+    if first > span.0 + slack || last < span.1 - slack {
+        return Err(error(format!(
+            "the rows cover {first:.3}-{last:.3} s, but {:.3}-{:.3} s is needed",
+            span.0, span.1
+        )));
+    }
+    Ok(())
 }
 
 /// The model's `(q, v, v̇)` from OpenSim's coordinates, rates and

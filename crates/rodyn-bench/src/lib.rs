@@ -11,6 +11,7 @@
 //! Benchmarks are never part of `cargo test`: timings belong in reports,
 //! not in assertions.
 
+pub mod arguments;
 pub mod cases;
 pub mod models;
 pub mod state;

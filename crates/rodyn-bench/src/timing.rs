@@ -46,23 +46,3 @@ pub fn median_ns<R>(ms: f64, states: usize, mut f: impl FnMut(usize) -> R) -> f6
     let mut runs: Vec<f64> = (0..5).map(|_| ns_per_call(calls, states, &mut f)).collect();
     median(&mut runs)
 }
-
-/// The `--ms M` argument of a timing binary (milliseconds per
-/// measurement), `default` without it.
-///
-/// # Panics
-/// When `--ms` is not followed by a number.
-#[must_use]
-pub fn ms_argument(default: f64) -> f64 {
-    let mut args = std::env::args().skip(1);
-    let mut ms = default;
-    while let Some(a) = args.next() {
-        if a == "--ms" {
-            ms = args
-                .next()
-                .and_then(|v| v.parse().ok())
-                .expect("--ms <milliseconds>");
-        }
-    }
-    ms
-}

@@ -10,6 +10,7 @@
 use plotters::prelude::*;
 use rodyn::algorithm::forward_dynamics::Aba;
 use rodyn::sim::{Integrator, Rk4};
+use rodyn_cli::{no_arguments, writable_dir};
 use rodyn_scenarios::muscle_robot::{
     self as robot, example_excitation, RobotForces, RobotLoads, INITIAL_ACTIVATION, NU, NV,
 };
@@ -140,9 +141,10 @@ where
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let samples = simulate()?;
+    no_arguments("rodyn-drive-plots", "writes docs/img/drives")?;
     let out = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../docs/img/drives");
-    std::fs::create_dir_all(&out)?;
+    writable_dir(&out)?;
+    let samples = simulate()?;
 
     let trajectory = out.join("muscle_robot_trajectory.svg");
     {

@@ -10,20 +10,31 @@
 //! rodyn-model render <file> [--q a,b,...] [--view xy|xz|yz|iso] [-o out.svg]   stick figure
 //! ```
 
+use rodyn_model::names::module_name;
 use rodyn_model::render::{render_svg, View};
 use rodyn_model::runtime::RuntimeModel;
 use rodyn_model::tree::render_tree;
 use rodyn_model::{build::generate_source, LoadOptions, WarningKinds};
+use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
 const USAGE: &str = "usage:
-  rodyn-model rust  <file> [--module NAME] [--floating-base] [--strict]   print the generated Rust module
-  rodyn-model check <file> [--floating-base] [--strict]                   check a model file and print its warnings
-  rodyn-model tree  <file> [--floating-base] [--strict]                   print bodies, joints, endpoints, drives, nq and nv
-  rodyn-model render <file> [--floating-base] [--strict] [--q a,b,...] [--view xy|xz|yz|iso] [--width PX] [-o out.svg]
+  rodyn-model rust  <file> [--module <NAME>] [--floating-base] [--strict]   print the generated Rust module
+  rodyn-model check <file> [--floating-base] [--strict]                     check a model file and print its warnings
+  rodyn-model tree  <file> [--floating-base] [--strict]                     print bodies, joints, endpoints, drives, nq and nv
+  rodyn-model render <file> [--floating-base] [--strict] [--q <a,b,...>] [--view <xy|xz|yz|iso>] [--width <PX>] [-o <out.svg>]
                                                                draw a stick figure at q (default: zeros; planar models view xy, others iso)
-options for every command: --round-quarter-turns, --silence KINDS (comma-separated kinds of warning, or all: limit, dynamics, mimic, geometry, transmission, gazebo, calibration, unknown-element, unnamed-robot, fixed-root-inertia, massless-tensor, link-tensor, body-tensor)";
+                                                               --width from 16 to 10000 px (default 480); each of q finite, at most 1e6 in size
+options for every command: --round-quarter-turns, --silence <KINDS> (comma-separated kinds of warning, or all: limit, dynamics, mimic, geometry, transmission, gazebo, calibration, unknown-element, unnamed-robot, fixed-root-inertia, massless-tensor, link-tensor, body-tensor)";
+
+/// The picture's width (px) unless `--width` says otherwise, and its bounds.
+const DEFAULT_WIDTH: f64 = 480.0;
+const WIDTH_RANGE: (f64, f64) = (16.0, 10_000.0);
+
+/// The largest size of a coordinate `--q` takes (rad or m): beyond it a
+/// picture shows nothing a smaller value would not.
+const MAX_COORDINATE: f64 = 1e6;
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -38,17 +49,33 @@ fn main() -> ExitCode {
 
 fn run(args: &[String]) -> Result<(), String> {
     let (command, rest) = args.split_first().ok_or(USAGE)?;
-    let mut file = None;
+    if matches!(command.as_str(), "-h" | "--help" | "help") {
+        return emit(&format!("{USAGE}\n"));
+    }
+    let mut file: Option<PathBuf> = None;
     let mut module = None;
     let mut options = LoadOptions::default();
     let mut q: Vec<f64> = Vec::new();
     let mut view = None;
     let mut output = None;
-    let mut width = 480.0;
+    let mut width = DEFAULT_WIDTH;
+    // Options that only one command reads, as given: refused elsewhere
+    // rather than silently ignored.
+    let mut render_only: Vec<&str> = Vec::new();
     let mut it = rest.iter();
     while let Some(arg) = it.next() {
         match arg.as_str() {
-            "--module" => module = Some(it.next().ok_or("--module needs a name")?.clone()),
+            "--module" => {
+                let name = it.next().ok_or("--module needs a name")?;
+                // The generator would rename it; say so instead.
+                let usable = module_name(name);
+                if &usable != name {
+                    return Err(format!(
+                        "--module: `{name}` is not a Rust module name; `{usable}` would be"
+                    ));
+                }
+                module = Some(name.clone());
+            }
             "--floating-base" => options.floating_base = true,
             "--strict" => options.strict = true,
             "--round-quarter-turns" => options.round_quarter_turns = true,
@@ -64,12 +91,10 @@ fn run(args: &[String]) -> Result<(), String> {
                 let list = it.next().ok_or("--q needs comma-separated numbers")?;
                 q = list
                     .split(',')
-                    .map(|x| {
-                        x.trim()
-                            .parse::<f64>()
-                            .map_err(|_| format!("--q: `{x}` is not a number"))
-                    })
-                    .collect::<Result<_, _>>()?;
+                    .map(coordinate)
+                    .collect::<Result<_, _>>()
+                    .map_err(|e| format!("--q: {e}"))?;
+                render_only.push("--q");
             }
             "--view" => {
                 let v = it.next().ok_or("--view needs xy, xz, yz or iso")?;
@@ -77,23 +102,44 @@ fn run(args: &[String]) -> Result<(), String> {
                     View::parse(v)
                         .ok_or(format!("--view: unknown view `{v}`; use xy, xz, yz or iso"))?,
                 );
+                render_only.push("--view");
             }
             "--width" => {
-                width = it
-                    .next()
-                    .and_then(|w| w.parse().ok())
-                    .ok_or("--width needs a number of pixels")?;
+                let w = it.next().ok_or("--width needs a number of pixels")?;
+                width = pixels(w).map_err(|e| format!("--width: {e}"))?;
+                render_only.push("--width");
             }
             "-o" | "--output" => {
-                output = Some(PathBuf::from(it.next().ok_or("-o needs a file name")?))
+                output = Some(PathBuf::from(it.next().ok_or("-o needs a file name")?));
+                render_only.push("-o");
             }
-            other if other.starts_with("--") => {
+            other if other.starts_with('-') => {
                 return Err(format!("unknown option {other}\n{USAGE}"))
             }
-            other => file = Some(PathBuf::from(other)),
+            other => {
+                if let Some(first) = &file {
+                    return Err(format!(
+                        "two model files, {} and {other}: give one",
+                        first.display()
+                    ));
+                }
+                file = Some(PathBuf::from(other));
+            }
         }
     }
     let file = file.ok_or(USAGE)?;
+    if command != "render" {
+        if let Some(option) = render_only.first() {
+            return Err(format!(
+                "{option} applies to `render` only, not to `{command}`"
+            ));
+        }
+    }
+    if command != "rust" && module.is_some() {
+        return Err(format!(
+            "--module applies to `rust` only, not to `{command}`"
+        ));
+    }
     match command.as_str() {
         "rust" => {
             let stem = file
@@ -105,27 +151,24 @@ fn run(args: &[String]) -> Result<(), String> {
             for w in &model.warnings {
                 eprintln!("{w}");
             }
-            print!("{source}");
-            Ok(())
+            emit(&source)
         }
         "check" => {
             let model = rodyn_model::load(&file, options).map_err(|d| d.to_string())?;
             for w in &model.warnings {
                 eprintln!("{w}");
             }
-            println!(
-                "{}: ok, {} bodies, nq = {}, nv = {}",
+            emit(&format!(
+                "{}: ok, {} bodies, nq = {}, nv = {}\n",
                 file.display(),
                 model.bodies.len(),
                 model.nq(),
                 model.nv()
-            );
-            Ok(())
+            ))
         }
         "tree" => {
             let model = rodyn_model::load(&file, options).map_err(|d| d.to_string())?;
-            print!("{}", render_tree(&model));
-            Ok(())
+            emit(&render_tree(&model))
         }
         "render" => {
             let model = rodyn_model::load(&file, options).map_err(|d| d.to_string())?;
@@ -146,12 +189,54 @@ fn run(args: &[String]) -> Result<(), String> {
                 .map_err(|e| format!("cannot pose the model: {e}"))?;
             match output {
                 Some(path) => {
-                    std::fs::write(&path, svg).map_err(|e| format!("{}: {e}", path.display()))?
+                    std::fs::write(&path, svg).map_err(|e| format!("-o {}: {e}", path.display()))?
                 }
-                None => print!("{svg}"),
+                None => emit(&svg)?,
             }
             Ok(())
         }
-        _ => Err(USAGE.to_string()),
+        _ => Err(format!("unknown command `{command}`\n{USAGE}")),
+    }
+}
+
+/// One coordinate of `--q`: a finite number of sensible size.
+fn coordinate(text: &str) -> Result<f64, String> {
+    let x: f64 = text
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{text}` is not a number"))?;
+    if !x.is_finite() {
+        Err(format!("`{text}` is not a finite number"))
+    } else if x.abs() > MAX_COORDINATE {
+        Err(format!(
+            "`{text}` is beyond the limit of {MAX_COORDINATE:e} in size"
+        ))
+    } else {
+        Ok(x)
+    }
+}
+
+/// The picture's width: a finite number of pixels within [`WIDTH_RANGE`].
+fn pixels(text: &str) -> Result<f64, String> {
+    let w: f64 = text
+        .trim()
+        .parse()
+        .map_err(|_| format!("`{text}` is not a number of pixels"))?;
+    let (min, max) = WIDTH_RANGE;
+    if (min..=max).contains(&w) {
+        Ok(w)
+    } else {
+        Err(format!("`{text}` is outside {min} to {max} px"))
+    }
+}
+
+/// Writes `text` to standard output. A reader that stopped early (`| head`)
+/// is no error: what it wanted it has.
+fn emit(text: &str) -> Result<(), String> {
+    match std::io::stdout().lock().write_all(text.as_bytes()) {
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {
+            Err(format!("cannot write to standard output: {e}"))
+        }
+        _ => Ok(()),
     }
 }

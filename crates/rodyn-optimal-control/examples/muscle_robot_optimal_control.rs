@@ -28,6 +28,7 @@
 use clap::Parser;
 use plotters::coord::Shift;
 use plotters::prelude::*;
+use rodyn_cli::{writable_dir, Count, PositiveFinite};
 use rodyn_optimal_control::collocation::{Hessian, Node};
 use rodyn_optimal_control::ipopt::{Options, Status};
 use rodyn_optimal_control::muscle_robot::{Derivatives, Task, EXCITATION_RATE_WEIGHT, NX};
@@ -39,10 +40,9 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-/// Fewest collocation nodes accepted.
-const MIN_NODES: usize = 3;
-/// Most collocation nodes accepted (the refined grid has `2 N − 1`).
-const MAX_NODES: usize = 1001;
+/// Collocation nodes N: at least the three a trapezoidal transcription
+/// needs; at most 1001 (the refined grid has `2 N − 1`).
+type Nodes = Count<3, 1001>;
 /// Longest motion accepted, s.
 const MAX_DURATION: f64 = 20.0;
 
@@ -54,44 +54,31 @@ struct Arguments {
     /// Output directory (created if missing; must be writable).
     #[arg(long)]
     out: PathBuf,
-    /// Collocation nodes N, between 3 and 1001 (the mesh-refinement solve
-    /// uses 2 N − 1).
-    #[arg(long, default_value_t = Task::default().nodes)]
-    nodes: usize,
+    /// Collocation nodes N, 3 to 1001 (the mesh-refinement solve uses
+    /// 2 N − 1).
+    #[arg(long, default_value_t = Count(Task::default().nodes), allow_hyphen_values = true)]
+    nodes: Nodes,
     /// Duration of the motion, s: positive, at most 20.
-    #[arg(long, default_value_t = Task::default().duration)]
-    duration: f64,
+    #[arg(long, default_value_t = PositiveFinite(Task::default().duration), allow_hyphen_values = true)]
+    duration: PositiveFinite,
     /// Leave out the Thelen muscles' comparison solve (about half a
     /// minute).
     #[arg(long)]
     skip_thelen: bool,
 }
 
-/// The arguments checked before any solve: the grid, the duration and
-/// that the output directory takes a file.
+/// The task the arguments describe, checked before any solve: the
+/// duration within [`MAX_DURATION`] and the output directory writable (the
+/// node count is checked by its type as it is parsed).
 fn validate(arguments: &Arguments) -> Result<Task, String> {
-    if !(MIN_NODES..=MAX_NODES).contains(&arguments.nodes) {
-        return Err(format!(
-            "--nodes must be between {MIN_NODES} and {MAX_NODES} (got {})",
-            arguments.nodes
-        ));
-    }
-    let duration = arguments.duration;
-    if !(duration.is_finite() && duration > 0.0 && duration <= MAX_DURATION) {
-        return Err(format!(
-            "--duration must be a positive, finite number of seconds, at most {MAX_DURATION} (got {duration})"
-        ));
-    }
-    let out = &arguments.out;
-    std::fs::create_dir_all(out)
-        .map_err(|e| format!("--out: cannot create the directory {}: {e}", out.display()))?;
-    let probe = out.join(".write_probe");
-    std::fs::write(&probe, b"")
-        .and_then(|()| std::fs::remove_file(&probe))
-        .map_err(|e| format!("--out: cannot write into {}: {e}", out.display()))?;
+    let duration = arguments
+        .duration
+        .at_most(MAX_DURATION, "s")
+        .map_err(|e| format!("--duration: {e}"))?;
+    writable_dir(&arguments.out).map_err(|e| format!("--out: {e}"))?;
     Ok(Task {
-        duration,
-        nodes: arguments.nodes,
+        duration: duration.get(),
+        nodes: arguments.nodes.get(),
         ..Task::default()
     })
 }

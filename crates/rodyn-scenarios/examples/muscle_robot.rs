@@ -8,11 +8,13 @@
 
 use rodyn::algorithm::forward_dynamics::Aba;
 use rodyn::sim::{Integrator, Rk4};
+use rodyn_cli::no_arguments;
 use rodyn_scenarios::muscle_robot::{
     self as robot, example_excitation, RobotForces, RobotLoads, INITIAL_ACTIVATION, NU, NV,
 };
 
-fn main() -> Result<(), rodyn::Error> {
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    no_arguments("muscle_robot", "prints a fixed 2 s run")?;
     let model = robot::MODEL_F64;
     let muscles = robot::MUSCLES_F64;
     let mut data = rodyn::Data::new();

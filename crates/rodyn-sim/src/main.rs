@@ -12,13 +12,15 @@ mod chart;
 mod failures;
 mod models;
 mod plot;
+mod progress;
 mod run;
 mod scenario;
 mod trajectory;
 
 use clap::{Parser, Subcommand};
-use scenario::{IntegratorKind, Method, RunConfig, ScalarType, Scenario};
-use std::path::PathBuf;
+use rodyn_cli::{shown, step_count, writable_dir, PositiveFinite};
+use scenario::{IntegratorKind, Method, RunConfig, ScalarType, Scenario, MAX_DURATION, MAX_STEPS};
+use std::path::{Path, PathBuf};
 
 #[derive(Parser)]
 #[command(
@@ -37,14 +39,16 @@ enum Command {
     Run {
         /// The scenario.
         scenario: Scenario,
-        /// Simulated time (s).
-        #[arg(long, default_value_t = 5.0)]
-        duration: f64,
+        /// Simulated time (s), positive, at most 1000 s and 10 million steps.
+        // Hyphen values reach the value parser, which names the argument,
+        // instead of being taken for an unknown option.
+        #[arg(long, default_value = "5", allow_hyphen_values = true)]
+        duration: PositiveFinite,
         /// Step (s); by default the scenario's own (0.5 ms for the
         /// quadruped, whose stiff feet the default semi-implicit Euler
         /// cannot hold at 1 ms; 1 ms otherwise).
-        #[arg(long)]
-        dt: Option<f64>,
+        #[arg(long, allow_hyphen_values = true)]
+        dt: Option<PositiveFinite>,
         /// Forward-dynamics method.
         #[arg(long, value_enum, default_value_t = Method::Aba)]
         method: Method,
@@ -89,20 +93,41 @@ fn main() {
         } => {
             let config = RunConfig {
                 scenario,
-                duration,
-                dt: dt.unwrap_or_else(|| scenario.default_step()),
+                duration: duration.get(),
+                dt: dt.map_or_else(|| scenario.default_step(), PositiveFinite::get),
                 method,
                 scalar,
                 integrator,
                 sample_interval: 0.01,
             };
-            run::run_command(&config, &out)
+            check_run(&config, &out).and_then(|()| run::run_command(&config, &out))
         }
-        Command::Chart { out } => chart::chart_command(&out),
-        Command::Failures { experiment, out } => failures::failures_command(experiment, &out),
+        Command::Chart { out } => check_output(&out).and_then(|()| chart::chart_command(&out)),
+        Command::Failures { experiment, out } => {
+            check_output(&out).and_then(|()| failures::failures_command(experiment, &out))
+        }
     };
     if let Err(e) = result {
         eprintln!("error: {e}");
         std::process::exit(1);
     }
+}
+
+/// Refuses, before any work, a run that would not end in reasonable time
+/// or would take no step, and an output directory that cannot be written.
+fn check_run(config: &RunConfig, out: &Path) -> Result<(), Box<dyn std::error::Error>> {
+    if config.duration > MAX_DURATION {
+        return Err(format!(
+            "--duration {} s is above the limit of {MAX_DURATION} s of simulated time",
+            shown(config.duration)
+        )
+        .into());
+    }
+    step_count(config.duration, config.dt, MAX_STEPS, "--duration", "--dt")?;
+    check_output(out)
+}
+
+/// The output directory, created and checked for writing.
+fn check_output(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
+    writable_dir(out).map_err(|e| format!("--out: {e}").into())
 }

@@ -3,9 +3,9 @@
 use crate::animate::{planar_stick_figure_gif, stick_figure_gif};
 use crate::models::arm7;
 use crate::plot::{plot, Curve, Figure, Mark, Scale, Series};
+use crate::progress::Progress;
 use crate::scenario::{run, RunConfig, Scenario};
 use crate::trajectory::Trajectory;
-use indicatif::{ProgressBar, ProgressStyle};
 use rodyn::space::VectorOps;
 use rodyn::spatial::Force;
 use rodyn::Data;
@@ -18,13 +18,9 @@ use std::path::Path;
 pub fn run_command(config: &RunConfig, out: &Path) -> Result<(), Box<dyn std::error::Error>> {
     std::fs::create_dir_all(out)?;
     let steps = (config.duration / config.dt).round() as u64;
-    let bar = ProgressBar::new(steps);
-    bar.set_style(ProgressStyle::with_template(
-        "{spinner} {msg} [{bar:40}] {pos}/{len} steps ({eta})",
-    )?);
-    bar.set_message(config.scenario.name());
-    let trajectory = run(config, Some(&bar));
-    bar.finish_and_clear();
+    let progress = Progress::new(config.scenario.name(), steps);
+    let trajectory = run(config, Some(&progress));
+    progress.finish();
     let name = config.scenario.name();
     let csv = out.join(format!("{name}.csv"));
     let plot_path = out.join(format!("{name}.svg"));

@@ -2,9 +2,9 @@
 //! forward-dynamics method, scalar type, integrator and step.
 
 use crate::models::{arm7, ARM7_RELEASE};
+use crate::progress::Progress;
 use crate::trajectory::Trajectory;
 use clap::ValueEnum;
-use indicatif::ProgressBar;
 use rodyn::algorithm::forward_dynamics::{Aba, Crba, ForwardDynamics};
 use rodyn::sim::{
     AuxiliaryLoads, ConfigurationRate, ExplicitEuler, ImplicitEuler, Integrator, NoLoads, Rk4,
@@ -158,6 +158,14 @@ fn quadruped_guard(q: &[f64]) -> Option<String> {
     }
 }
 
+/// The most steps a run may take: about ten seconds of the arm's
+/// semi-implicit Euler on a desktop, minutes of the quadruped's RK4.
+pub const MAX_STEPS: usize = 10_000_000;
+
+/// The most simulated time a run may cover (s): its recorded samples, one
+/// per 10 ms or per step if longer, then stay within memory.
+pub const MAX_DURATION: f64 = 1000.0;
+
 /// One run's settings.
 #[derive(Clone, Copy, Debug)]
 pub struct RunConfig {
@@ -191,14 +199,14 @@ impl RunConfig {
 
 /// Runs a scenario; a dynamics error ends the run early and is recorded in
 /// the trajectory.
-pub fn run(config: &RunConfig, progress: Option<&ProgressBar>) -> Trajectory {
+pub fn run(config: &RunConfig, progress: Option<&Progress>) -> Trajectory {
     match config.scalar {
         ScalarType::F32 => run_typed::<f32>(config, progress),
         ScalarType::F64 => run_typed::<f64>(config, progress),
     }
 }
 
-fn run_typed<S: Scalar>(config: &RunConfig, progress: Option<&ProgressBar>) -> Trajectory {
+fn run_typed<S: Scalar>(config: &RunConfig, progress: Option<&Progress>) -> Trajectory {
     match config.scenario {
         Scenario::ArmSwing => {
             let model = arm7::<S>();
@@ -277,7 +285,7 @@ fn by_integrator<S, G, L, const NB: usize, const NQ: usize, const NV: usize, con
     loads: L,
     state: State<S, NQ, NV, NZ>,
     internal_names: Vec<String>,
-    progress: Option<&ProgressBar>,
+    progress: Option<&Progress>,
     guard: Option<Guard>,
 ) -> Trajectory
 where
@@ -323,7 +331,7 @@ struct Run<
     loads: L,
     state: State<S, NQ, NV, NZ>,
     internal_names: Vec<String>,
-    progress: Option<&'a ProgressBar>,
+    progress: Option<&'a Progress>,
     guard: Option<Guard>,
 }
 
@@ -370,7 +378,7 @@ fn drive<S: Scalar, const NQ: usize, const NV: usize, const NZ: usize>(
     config: &RunConfig,
     mut state: State<S, NQ, NV, NZ>,
     internal_names: Vec<String>,
-    progress: Option<&ProgressBar>,
+    progress: Option<&Progress>,
     guard: Option<Guard>,
     mut step: impl FnMut(&mut State<S, NQ, NV, NZ>) -> rodyn::Result<()>,
 ) -> Trajectory {
@@ -392,9 +400,9 @@ fn drive<S: Scalar, const NQ: usize, const NV: usize, const NZ: usize>(
                 break;
             }
         }
-        if let Some(bar) = progress {
+        if let Some(progress) = progress {
             if n % 1000 == 0 {
-                bar.set_position(n as u64);
+                progress.at(n as u64);
             }
         }
     }

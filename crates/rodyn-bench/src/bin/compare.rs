@@ -13,8 +13,10 @@
 //! table reports the median over rounds. Before timing, the first state's
 //! RNEA torques of both libraries are compared, to prove the models agree.
 
+use clap::Parser;
 use rodyn::space::Space;
 use rodyn::spatial::Spatial;
+use rodyn_bench::arguments::{milliseconds, Rounds};
 use rodyn_bench::cases::{Case, ModelCase};
 use rodyn_bench::models::{chains::CHAIN_GRAVITY, planar_chain, planar_chain_3d};
 use rodyn_bench::models::{PANDA, PANDA_URDF, SOLO12, SOLO12_URDF, UR5, UR5_URDF};
@@ -110,13 +112,23 @@ fn run_pinocchio(program: &Path, manifest: &Path, ms: f64) -> Result<PinocchioRo
     let mut round = PinocchioRound::default();
     for line in String::from_utf8_lossy(&out.stdout).lines() {
         let fields: Vec<&str> = line.split_whitespace().collect();
+        // A field that is not a finite number would become NaN in the
+        // table without a word: refuse the line instead.
+        let number = |x: &str| -> Result<f64, String> {
+            x.parse::<f64>()
+                .ok()
+                .filter(|x| x.is_finite())
+                .ok_or(format!(
+                    "`{x}` is not a finite number in Pinocchio's line: {line}"
+                ))
+        };
         match fields.as_slice() {
             ["check", name, rest @ ..] => {
-                let tau = rest.iter().map(|x| x.parse().unwrap_or(f64::NAN)).collect();
+                let tau = rest.iter().map(|x| number(x)).collect::<Result<_, _>>()?;
                 round.torques.insert((*name).to_owned(), tau);
             }
             ["time", name, algorithm, ns] => {
-                let ns = ns.parse().unwrap_or(f64::NAN);
+                let ns = number(ns)?;
                 round
                     .ns
                     .insert(((*name).to_owned(), (*algorithm).to_owned()), ns);
@@ -150,44 +162,31 @@ fn cpu_model() -> String {
         .unwrap_or_else(|| "unknown CPU".to_owned())
 }
 
+/// rodyn against Pinocchio on the same URDFs and the same states.
+#[derive(Parser)]
 struct Options {
-    program: PathBuf,
-    rounds: usize,
+    /// Pinocchio's timing program.
+    #[arg(long, required_unless_present = "inputs_only")]
+    pinocchio: Option<PathBuf>,
+    /// Rounds, each timing every model and algorithm once in each library
+    /// (1 to 100).
+    #[arg(long, default_value = "7", allow_hyphen_values = true)]
+    rounds: Rounds,
+    /// Milliseconds per measurement (at most 10000).
+    #[arg(long, default_value = "20", value_parser = milliseconds, allow_hyphen_values = true)]
     ms: f64,
     /// Write the models' manifest and states, then stop (for profiling
     /// Pinocchio on the same inputs: `cargo xtask host-profile --pinocchio`).
+    #[arg(long)]
     inputs_only: bool,
 }
 
-fn parse_args() -> Result<Options, String> {
-    let mut opts = Options {
-        program: PathBuf::new(),
-        rounds: 7,
-        ms: 20.0,
-        inputs_only: false,
-    };
-    let mut args = std::env::args().skip(1);
-    while let Some(arg) = args.next() {
-        let mut value = || args.next().ok_or(format!("{arg} needs a value"));
-        match arg.as_str() {
-            "--pinocchio" => opts.program = PathBuf::from(value()?),
-            "--rounds" => opts.rounds = value()?.parse().map_err(|e| format!("--rounds: {e}"))?,
-            "--ms" => opts.ms = value()?.parse().map_err(|e| format!("--ms: {e}"))?,
-            "--inputs-only" => opts.inputs_only = true,
-            _ => return Err(format!("unknown argument {arg}")),
-        }
-    }
-    if opts.program.as_os_str().is_empty() && !opts.inputs_only {
-        return Err(
-            "usage: compare --pinocchio <program> [--rounds N] [--ms M] | compare --inputs-only"
-                .into(),
-        );
-    }
-    Ok(opts)
-}
-
 fn main() -> Result<(), String> {
-    let opts = parse_args()?;
+    let opts = Options::parse();
+    let program = opts.pinocchio.clone().unwrap_or_default();
+    if !opts.inputs_only && !program.is_file() {
+        return Err(format!("--pinocchio: {} is not a file", program.display()));
+    }
     let dir = PathBuf::from("target/pinocchio-bench");
     std::fs::create_dir_all(&dir).map_err(|e| e.to_string())?;
     let io = |e: std::io::Error| e.to_string();
@@ -256,12 +255,12 @@ fn main() -> Result<(), String> {
 
     let mut rodyn_ns: BTreeMap<(usize, &str, bool), Vec<f64>> = BTreeMap::new();
     let mut pinocchio_ns: BTreeMap<(String, String), Vec<f64>> = BTreeMap::new();
-    for round in 0..opts.rounds {
-        eprint!("round {}/{}\r", round + 1, opts.rounds);
+    for round in 0..opts.rounds.get() {
+        eprint!("round {}/{}\r", round + 1, opts.rounds.get());
         let _ = std::io::stderr().flush();
         let mut pinocchio = None;
         if round % 2 == 1 {
-            pinocchio = Some(run_pinocchio(&opts.program, &manifest_path, opts.ms)?);
+            pinocchio = Some(run_pinocchio(&program, &manifest_path, opts.ms)?);
         }
         for (i, e) in entries.iter_mut().enumerate() {
             for a in Algorithm::ALL {
@@ -275,7 +274,7 @@ fn main() -> Result<(), String> {
         }
         let pinocchio = match pinocchio {
             Some(p) => p,
-            None => run_pinocchio(&opts.program, &manifest_path, opts.ms)?,
+            None => run_pinocchio(&program, &manifest_path, opts.ms)?,
         };
         if round == 0 {
             check_agreement(&mut entries, &pinocchio)?;
@@ -290,7 +289,7 @@ fn main() -> Result<(), String> {
         "CPU: {} ({} logical cores); {} rounds, {} random states per model, medians.\n",
         cpu_model(),
         std::thread::available_parallelism().map_or(0, usize::from),
-        opts.rounds,
+        opts.rounds.get(),
         STATES
     );
     println!("| model | nv | algorithm | rodyn 3-D (ns) | rodyn planar (ns) | Pinocchio (ns) | rodyn / Pinocchio |");

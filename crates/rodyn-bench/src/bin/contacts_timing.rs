@@ -19,13 +19,15 @@
 
 use std::hint::black_box;
 
+use clap::Parser;
 use rodyn::algorithm::constrained_dynamics::{
     constrained_forward_dynamics_with, ConstraintData, ConstraintMethod, ConstraintSettings,
     Contact,
 };
 use rodyn::{Data, Model};
+use rodyn_bench::arguments::milliseconds;
 use rodyn_bench::state::random_states;
-use rodyn_bench::timing::{median_ns, ms_argument};
+use rodyn_bench::timing::median_ns;
 use rodyn_host_tests::contact_fixture::{contacts, solo12, solo12_contacts, talos};
 
 fn run<const NB: usize, const NQ: usize, const NV: usize>(
@@ -55,8 +57,16 @@ fn run<const NB: usize, const NQ: usize, const NV: usize>(
     }
 }
 
+/// rodyn's time per call of constrained forward dynamics.
+#[derive(Parser)]
+struct Cli {
+    /// Milliseconds per measurement (at most 10000).
+    #[arg(long, default_value = "50", value_parser = milliseconds, allow_hyphen_values = true)]
+    ms: f64,
+}
+
 fn main() {
-    let ms = ms_argument(50.0);
+    let ms = Cli::parse().ms;
     let solo_feet = contacts(&solo12_contacts()["states"][0]["cases"][3]);
     run("solo12", "constrained_4_points", &solo12(), &solo_feet, ms);
     let (talos, fixture) = talos();

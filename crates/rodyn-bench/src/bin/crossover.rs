@@ -10,11 +10,14 @@
 //! time of CRBA forward dynamics divided by that of ABA against the number
 //! of links. Below 1, CRBA is faster.
 
+use clap::Parser;
 use plotters::prelude::*;
+use rodyn_bench::arguments::{milliseconds, Rounds};
 use rodyn_bench::cases::{Case, ModelCase};
 use rodyn_bench::models::{planar_chain, planar_chain_3d};
 use rodyn_bench::timing::median;
 use rodyn_bench::Algorithm;
+use rodyn_cli::writable_file;
 use std::io::Write as _;
 
 const STATES: usize = 32;
@@ -43,29 +46,18 @@ fn all_chains() -> Vec<(usize, [Box<dyn Case>; 4])> {
     chains!(1, 2, 3, 4, 6, 8, 10, 12, 16, 20, 30, 40, 60, 80, 120)
 }
 
+/// ABA against CRBA forward dynamics for chains of 1 to 120 links.
+#[derive(Parser)]
 struct Options {
-    rounds: usize,
+    /// Rounds, each timing every chain once (1 to 100).
+    #[arg(long, default_value = "5", allow_hyphen_values = true)]
+    rounds: Rounds,
+    /// Milliseconds per measurement (at most 10000).
+    #[arg(long, default_value = "10", value_parser = milliseconds, allow_hyphen_values = true)]
     ms: f64,
+    /// The chart (SVG).
+    #[arg(long, default_value = "docs/img/perf/crossover.svg")]
     out: String,
-}
-
-fn parse_args() -> Result<Options, String> {
-    let mut opts = Options {
-        rounds: 5,
-        ms: 10.0,
-        out: "docs/img/perf/crossover.svg".into(),
-    };
-    let mut args = std::env::args().skip(1);
-    while let Some(arg) = args.next() {
-        let mut value = || args.next().ok_or(format!("{arg} needs a value"));
-        match arg.as_str() {
-            "--rounds" => opts.rounds = value()?.parse().map_err(|e| format!("--rounds: {e}"))?,
-            "--ms" => opts.ms = value()?.parse().map_err(|e| format!("--ms: {e}"))?,
-            "--out" => opts.out = value()?,
-            _ => return Err(format!("unknown argument {arg}")),
-        }
-    }
-    Ok(opts)
 }
 
 /// The smallest chain length from which ABA stays faster than CRBA.
@@ -78,7 +70,9 @@ fn crossover(lengths: &[usize], ratio: &[f64]) -> Option<usize> {
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let opts = parse_args()?;
+    let opts = Options::parse();
+    // The chart is written after minutes of timing: check its place first.
+    writable_file(std::path::Path::new(&opts.out)).map_err(|e| format!("--out: {e}"))?;
     let mut chains = all_chains();
     let target_ns = opts.ms * 1.0e6;
     let methods = [Algorithm::Aba, Algorithm::CrbaForwardDynamics];
@@ -104,8 +98,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .collect();
     let mut samples: Vec<[[Vec<f64>; 2]; 4]> =
         (0..chains.len()).map(|_| Default::default()).collect();
-    for round in 0..opts.rounds {
-        eprint!("round {}/{}\r", round + 1, opts.rounds);
+    for round in 0..opts.rounds.get() {
+        eprint!("round {}/{}\r", round + 1, opts.rounds.get());
         let _ = std::io::stderr().flush();
         for (c, (_, cases)) in chains.iter_mut().enumerate() {
             for (v, case) in cases.iter_mut().enumerate() {
@@ -140,7 +134,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
 
     println!(
         "{} rounds, medians, ns per call; ratio = CRBA forward dynamics / ABA.\n",
-        opts.rounds
+        opts.rounds.get()
     );
     print!("| links |");
     for v in VARIANTS {

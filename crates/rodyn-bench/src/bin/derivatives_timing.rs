@@ -19,11 +19,14 @@
 
 use std::hint::black_box;
 
+use clap::Parser;
 use rodyn::algorithm::derivatives::{aba_derivatives, rnea_derivatives, DerivativeData};
 use rodyn::{Data, Model};
+use rodyn_bench::arguments::{milliseconds, Only};
 use rodyn_bench::models::{planar_chain_3d, PANDA, SOLO12, UR5};
 use rodyn_bench::state::random_states;
-use rodyn_bench::timing::{median_ns, ms_argument};
+use rodyn_bench::timing::median_ns;
+use std::process::ExitCode;
 
 /// How each algorithm is measured: timed over about `ms` milliseconds and
 /// printed, or (`only`) one of them called a fixed number of times.
@@ -72,30 +75,62 @@ fn run<const NB: usize, const NQ: usize, const NV: usize>(
     });
 }
 
-fn main() {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    let only = args.iter().position(|a| a == "--only").map(|i| {
-        let usage = "--only MODEL ALGORITHM CALLS";
-        let calls = args.get(i + 3).and_then(|c| c.parse().ok()).expect(usage);
-        let model = args.get(i + 1).expect(usage).as_str();
-        (model, Mode::Only(args.get(i + 2).expect(usage), calls))
-    });
-    match only {
-        None => {
-            let mode = Mode::Timed(ms_argument(50.0));
-            run("ur5", &UR5, &mode);
-            run("panda", &PANDA, &mode);
-            run("solo12", &SOLO12, &mode);
+/// The timed models, then those of `--only` alone.
+const TIMED: [&str; 3] = ["ur5", "panda", "solo12"];
+const MODELS: [&str; 7] = [
+    "ur5", "panda", "solo12", "chain20", "chain30", "chain40", "chain60",
+];
+const ALGORITHMS: [&str; 2] = ["rnea_derivatives", "aba_derivatives"];
+
+/// rodyn's time per call of the analytic derivatives.
+#[derive(Parser)]
+struct Cli {
+    /// Milliseconds per measurement (at most 10000).
+    #[arg(long, default_value = "50", value_parser = milliseconds, allow_hyphen_values = true)]
+    ms: f64,
+    /// One algorithm on one model for exactly CALLS calls (1 to 100000000),
+    /// printing nothing: for profilers.
+    #[arg(long, num_args = 3, value_names = ["MODEL", "ALGORITHM", "CALLS"], allow_hyphen_values = true)]
+    only: Option<Vec<String>>,
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let only = match cli
+        .only
+        .as_deref()
+        .map(|v| Only::parse(v, &MODELS, &ALGORITHMS))
+    {
+        Some(Err(e)) => {
+            eprintln!("error: {e}");
+            return ExitCode::FAILURE;
         }
-        Some((model, mode)) => match model {
-            "ur5" => run(model, &UR5, &mode),
-            "panda" => run(model, &PANDA, &mode),
-            "solo12" => run(model, &SOLO12, &mode),
-            "chain20" => run(model, &planar_chain_3d::<20>(), &mode),
-            "chain30" => run(model, &planar_chain_3d::<30>(), &mode),
-            "chain40" => run(model, &planar_chain_3d::<40>(), &mode),
-            "chain60" => run(model, &planar_chain_3d::<60>(), &mode),
-            _ => panic!("unknown model {model}"),
-        },
+        Some(Ok(only)) => Some(only),
+        None => None,
+    };
+    match &only {
+        None => {
+            let mode = Mode::Timed(cli.ms);
+            for model in TIMED {
+                by_name(model, &mode);
+            }
+        }
+        Some(only) => by_name(&only.model, &Mode::Only(&only.algorithm, only.calls)),
+    }
+    ExitCode::SUCCESS
+}
+
+/// Runs the model called `name` (one of [`MODELS`]).
+fn by_name(name: &str, mode: &Mode) {
+    match name {
+        "ur5" => run(name, &UR5, mode),
+        "panda" => run(name, &PANDA, mode),
+        "solo12" => run(name, &SOLO12, mode),
+        "chain20" => run(name, &planar_chain_3d::<20>(), mode),
+        "chain30" => run(name, &planar_chain_3d::<30>(), mode),
+        "chain40" => run(name, &planar_chain_3d::<40>(), mode),
+        "chain60" => run(name, &planar_chain_3d::<60>(), mode),
+        // `Only::parse` admits only the names above.
+        _ => unreachable!("model {name} is not in MODELS"),
     }
 }

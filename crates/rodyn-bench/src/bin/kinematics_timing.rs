@@ -18,15 +18,18 @@
 
 use std::hint::black_box;
 
+use clap::Parser;
 use rodyn::algorithm::centroidal::{centroidal_map, CentroidalData};
 use rodyn::algorithm::frames::ReferenceFrame;
 use rodyn::algorithm::jacobian::{frame_jacobian, joint_jacobians, JacobianData};
 use rodyn::space::VectorOps;
 use rodyn::spatial::{Force, Motion, Transform};
 use rodyn::{Data, Frame, Model};
+use rodyn_bench::arguments::{milliseconds, Only};
 use rodyn_bench::models::{PANDA, SOLO12, UR5};
 use rodyn_bench::state::random_states;
-use rodyn_bench::timing::{median_ns as time, ms_argument};
+use rodyn_bench::timing::median_ns as time;
+use std::process::ExitCode;
 
 /// How each algorithm is measured: timed over about `ms` milliseconds and
 /// printed, or (`only`) one of them called a fixed number of times.
@@ -91,27 +94,52 @@ fn run<const NB: usize, const NQ: usize, const NV: usize>(
     });
 }
 
-fn main() {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    let mode = match args.iter().position(|a| a == "--only") {
-        Some(i) => {
-            let usage = "--only MODEL ALGORITHM CALLS";
-            let calls = args.get(i + 3).and_then(|c| c.parse().ok()).expect(usage);
-            Mode::Only(args.get(i + 2).expect(usage), calls)
+const MODELS: [&str; 3] = ["ur5", "panda", "solo12"];
+const ALGORITHMS: [&str; 4] = [
+    "joint_jacobians",
+    "frame_jacobian",
+    "centroidal_map",
+    "ccrba",
+];
+
+/// rodyn's time per call of the kinematics-for-control algorithms.
+#[derive(Parser)]
+struct Cli {
+    /// Milliseconds per measurement (at most 10000).
+    #[arg(long, default_value = "50", value_parser = milliseconds, allow_hyphen_values = true)]
+    ms: f64,
+    /// One algorithm on one model for exactly CALLS calls (1 to 100000000),
+    /// printing nothing: for profilers.
+    #[arg(long, num_args = 3, value_names = ["MODEL", "ALGORITHM", "CALLS"], allow_hyphen_values = true)]
+    only: Option<Vec<String>>,
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let only = match cli
+        .only
+        .as_deref()
+        .map(|v| Only::parse(v, &MODELS, &ALGORITHMS))
+    {
+        Some(Err(e)) => {
+            eprintln!("error: {e}");
+            return ExitCode::FAILURE;
         }
-        None => Mode::Timed(ms_argument(50.0)),
-    };
-    let only_model = match args.iter().position(|a| a == "--only") {
-        Some(i) => args.get(i + 1).map(String::as_str),
+        Some(Ok(only)) => Some(only),
         None => None,
+    };
+    let mode = match &only {
+        Some(only) => Mode::Only(&only.algorithm, only.calls),
+        None => Mode::Timed(cli.ms),
     };
     for (name, run_model) in [
         ("ur5", (|m: &Mode| run("ur5", &UR5, m)) as fn(&Mode)),
         ("panda", |m| run("panda", &PANDA, m)),
         ("solo12", |m| run("solo12", &SOLO12, m)),
     ] {
-        if only_model.is_none_or(|m| m == name) {
+        if only.as_ref().is_none_or(|o| o.model == name) {
             run_model(&mode);
         }
     }
+    ExitCode::SUCCESS
 }

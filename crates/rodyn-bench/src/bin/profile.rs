@@ -14,6 +14,9 @@
 //! Models: `panda`, `ur5`, `solo12`, `chainN` (N in 5, 10, 20, 30, 40, 50, 60)
 //! and `chainN_planar` (N in 5, 10, 20, 30, 40, 50, 60).
 
+use clap::builder::PossibleValuesParser;
+use clap::Parser;
+use rodyn_bench::arguments::Calls;
 use rodyn_bench::cases::{Case, ModelCase};
 use rodyn_bench::models::{planar_chain, planar_chain_3d, PANDA, SOLO12, UR5};
 use rodyn_bench::Algorithm;
@@ -43,19 +46,29 @@ fn case(name: &str) -> Option<Box<dyn Case>> {
     })
 }
 
+/// Runs one algorithm on one model many times, for profilers.
+#[derive(Parser)]
+struct Cli {
+    /// The algorithm.
+    #[arg(value_parser = PossibleValuesParser::new(Algorithm::ALL.map(Algorithm::name)))]
+    algorithm: String,
+    /// The model: panda, ur5, solo12, chainN or chainN_planar (N in 5, 10,
+    /// 20, 30, 40, 50, 60).
+    model: String,
+    /// How many calls (1 to 100000000).
+    #[arg(default_value = "100000", allow_hyphen_values = true)]
+    calls: Calls,
+}
+
 fn main() -> Result<(), String> {
-    let usage = "usage: profile <rnea|crba|crba_fd|aba> <model> [calls]";
-    let args: Vec<String> = std::env::args().skip(1).collect();
+    let cli = Cli::parse();
     let algorithm = Algorithm::ALL
         .into_iter()
-        .find(|a| Some(a.name()) == args.first().map(String::as_str))
-        .ok_or(usage)?;
-    let name = args.get(1).ok_or(usage)?;
-    let mut case = case(name).ok_or(format!("unknown model {name}"))?;
-    let calls = match args.get(2) {
-        Some(c) => c.parse().map_err(|e| format!("calls: {e}"))?,
-        None => 100_000,
-    };
+        .find(|a| a.name() == cli.algorithm)
+        .ok_or(format!("unknown algorithm {}", cli.algorithm))?;
+    let name = &cli.model;
+    let mut case = case(name).ok_or(format!("<MODEL>: unknown model {name}"))?;
+    let calls = cli.calls.get();
     let ns = case.time(algorithm, calls);
     println!(
         "{} {name}: {ns:.1} ns/call over {calls} calls",

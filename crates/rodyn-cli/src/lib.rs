@@ -1,0 +1,33 @@
+//! The pieces rodyn's command-line tools and examples share, so that each
+//! tool rejects a bad argument the same way, with the argument's name and
+//! the limit in the message, before any work starts:
+//!
+//! - [`PositiveFinite`]: a step, a duration, a size in pixels, a time
+//!   budget; rejects NaN, infinities, zero, negatives and subnormals.
+//! - [`Count`]: a whole number within stated bounds (rounds, calls, nodes).
+//! - [`step_count`]: the number of steps of a run, bounded.
+//! - [`writable_dir`] and [`writable_file`]: an output checked before a
+//!   long computation rather than after it.
+//! - [`no_arguments`]: a program without options refuses arguments
+//!   rather than ignoring them.
+//! - [`probe`]: the test harness that runs a tool with hostile values of
+//!   every argument and requires a clean refusal.
+//!
+//! The value types implement [`FromStr`](core::str::FromStr), which is
+//! what clap's derive uses as a value parser (`#[arg(long)] dt:
+//! PositiveFinite`), and what a hand-written parser calls with `parse`.
+
+mod count;
+mod no_arguments;
+mod number;
+mod output;
+mod positive;
+pub mod probe;
+mod steps;
+
+pub use count::Count;
+pub use no_arguments::no_arguments;
+pub use number::shown;
+pub use output::{writable_dir, writable_file};
+pub use positive::PositiveFinite;
+pub use steps::step_count;

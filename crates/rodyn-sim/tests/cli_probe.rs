@@ -1,0 +1,175 @@
+//! Every argument of `rodyn-sim` tried with hostile values: each must be
+//! refused at once with a message naming the argument, without a panic or
+//! a hang. The tables below must list every option the help shows; a new
+//! option fails `every_option_is_probed` until it is added here.
+
+use rodyn_cli::probe::NumericOption;
+use rodyn_cli::probe::{assert_listed, assert_refused, assert_refuses_hostile_values, run};
+use std::path::{Path, PathBuf};
+
+fn exe() -> &'static Path {
+    Path::new(env!("CARGO_BIN_EXE_rodyn-sim"))
+}
+
+/// A scratch directory of this test process, removed when dropped.
+struct Scratch(PathBuf);
+
+impl Scratch {
+    fn new(name: &str) -> Self {
+        let dir =
+            std::env::temp_dir().join(format!("rodyn-sim-probe-{}-{name}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        Self(dir)
+    }
+    fn path(&self) -> &str {
+        self.0.to_str().unwrap()
+    }
+}
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+/// A path in `scratch` that cannot be a directory: it goes through a
+/// plain file.
+fn unwritable(scratch: &Scratch) -> PathBuf {
+    let file = scratch.0.join("a-file");
+    std::fs::write(&file, "not a directory").unwrap();
+    file.join("out")
+}
+
+const SUBCOMMANDS: [&str; 3] = ["run", "chart", "failures"];
+
+/// The numeric options of each subcommand.
+fn numeric(subcommand: &str) -> &'static [&'static str] {
+    match subcommand {
+        "run" => &["--duration", "--dt"],
+        _ => &[],
+    }
+}
+
+/// The other value-taking options, each with a probe below.
+fn other(subcommand: &str) -> &'static [&'static str] {
+    match subcommand {
+        "run" => &[
+            "<SCENARIO>",
+            "--method",
+            "--integrator",
+            "--scalar",
+            "--out",
+        ],
+        "failures" => &["[EXPERIMENT]", "--out"],
+        _ => &["--out"],
+    }
+}
+
+#[test]
+fn every_option_is_probed() {
+    let top = run(exe(), &["--help"]);
+    assert_listed(&top.stdout, &[], &[]);
+    for subcommand in SUBCOMMANDS {
+        let help = run(exe(), &[subcommand, "--help"]);
+        assert!(
+            help.status.success(),
+            "{subcommand} --help: {}",
+            help.stderr
+        );
+        assert_listed(&help.stdout, numeric(subcommand), other(subcommand));
+    }
+}
+
+#[test]
+fn numeric_options_refuse_hostile_values() {
+    let scratch = Scratch::new("numeric");
+    let out = scratch.path();
+    for option in numeric("run") {
+        assert_refuses_hostile_values(
+            exe(),
+            &NumericOption {
+                option,
+                before: &["run", "arm-swing", "-o", out],
+                after: &[],
+                accepts: &[],
+            },
+        );
+    }
+}
+
+#[test]
+fn runs_without_end_or_without_a_step_are_refused_with_the_limit() {
+    let scratch = Scratch::new("limits");
+    let out = scratch.path();
+    let refused = |args: &[&str], words: &[&str]| {
+        let mut all = vec!["run", "arm-swing", "-o", out];
+        all.extend(args);
+        let outcome = assert_refused(exe(), &all, "--duration");
+        for w in words {
+            assert!(outcome.stderr.contains(w), "{args:?}: {}", outcome.stderr);
+        }
+    };
+    refused(&["--duration", "1001"], &["limit of 1000 s"]);
+    refused(&["--dt", "1e-9"], &["--dt", "limit of 10000000"]);
+    refused(
+        &["--duration", "1000", "--dt", "1e-5"],
+        &["limit of 10000000"],
+    );
+    refused(
+        &["--duration", "0.001", "--dt", "0.01"],
+        &["--dt", "no step"],
+    );
+}
+
+#[test]
+fn other_options_refuse_unknown_choices_and_unwritable_outputs() {
+    let scratch = Scratch::new("choices");
+    let out = scratch.path();
+    for option in ["--method", "--integrator", "--scalar"] {
+        assert_refused(
+            exe(),
+            &["run", "arm-swing", "-o", out, option, "nonsense"],
+            option,
+        );
+    }
+    assert_refused(exe(), &["run", "no-such-scenario"], "no-such-scenario");
+    assert_refused(
+        exe(),
+        &["failures", "no-such-experiment"],
+        "no-such-experiment",
+    );
+    let bad = unwritable(&scratch);
+    let bad = bad.to_str().unwrap();
+    for args in [
+        vec!["run", "arm-swing", "--duration", "0.01", "-o", bad],
+        vec!["chart", "-o", bad],
+        vec!["failures", "all", "-o", bad],
+    ] {
+        let outcome = assert_refused(exe(), &args, "--out");
+        assert!(outcome.stderr.contains(bad), "{}", outcome.stderr);
+    }
+    assert_refused(exe(), &["--no-such-option"], "--no-such-option");
+    assert_refused(exe(), &[], "Usage");
+}
+
+#[test]
+fn a_short_valid_run_still_succeeds_and_writes_its_files() {
+    let scratch = Scratch::new("valid");
+    let out = &scratch.0;
+    let outcome = run(
+        exe(),
+        &[
+            "run",
+            "arm-swing",
+            "--duration",
+            "0.05",
+            "-o",
+            scratch.path(),
+        ],
+    );
+    assert!(outcome.status.success(), "{}", outcome.stderr);
+    // 0.05 s at the default 1 ms: 50 steps, samples every 10 ms and the start.
+    let csv = std::fs::read_to_string(out.join("arm-swing.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 1 + 6, "{csv}");
+    assert!(out.join("arm-swing.svg").is_file() && out.join("arm-swing.gif").is_file());
+}
