@@ -5,7 +5,7 @@
 //! |--------------------------|-------------------------------------------------------------------|
 //! | `run [example]`          | builds the firmware, runs `example` (default: the arm controller) in QEMU, prints the decoded defmt log |
 //! | `test`                   | host tests (the core's and `rodyn-host-tests`' also in the in-order tuning profile), the no_std core for thumbv7em, every firmware example in QEMU against its expected output, sizes, panic sites, stack bounds, lint |
-//! | `lint`                   | rustfmt, clippy and rustdoc, warnings as errors, host and firmware; the core without float features stops at one error; `cargo package` of the published crates |
+//! | `lint`                   | rustfmt, clippy and rustdoc, warnings as errors, host and firmware; the core without float features stops at one error; `cargo package` of every crate, the published libraries built from their packages |
 //! | `costs`                  | runs the cost probe, measures sizes and bounds the stack, rewrites the tables in `docs/sections/firmware.md` and `firmware/expected/sizes.txt` |
 //! | `stack [image] [words]`  | worst-case stack per image and per cost-table row from a static call graph, checked against the painted figures (`--check-frames`: the frame reading against LLVM's `-Z emit-stack-sizes`) |
 //! | `panic-sites [image]`    | the panic call sites of one image (default: all) by source, function and line |
@@ -213,22 +213,39 @@ fn lint() -> Result<()> {
         &[("RUSTDOCFLAGS", "-D warnings")],
     )?;
     no_float_features_is_one_error()?;
-    // Together, so that rodyn-model's dependency on the unpublished core
-    // resolves to the core packaged beside it.
-    shell::cargo(&[
-        "package",
-        "-p",
-        "rodyn",
-        "-p",
-        "rodyn-model",
-        "--allow-dirty",
-    ])?;
+    packages()?;
     println!(
         "xtask lint: clean in {:.0} s",
         started.elapsed().as_secs_f64()
     );
     Ok(())
 }
+
+/// The crates as crates.io would get them. Every member is packaged with
+/// `--no-verify`: the manifests, the `include` lists and the versions on
+/// path dependencies are checked, nothing is compiled. Then the published
+/// libraries are packaged again and each compiled from its own tarball,
+/// which proves it holds what its build reads (the scenes' model files
+/// through rodyn-scenarios' build script). rodyn-sim, published too, is
+/// left at the first step: it has no build script and reads no file at
+/// build time, so its tarball's build would prove only what the workspace
+/// build does, for minutes of plotting and image crates in the package
+/// target folder. The internal crates are never published. Each command
+/// packages its crates together, so that a dependency on a crate not yet
+/// on crates.io resolves to the one packaged beside it.
+fn packages() -> Result<()> {
+    shell::cargo(&["package", "--workspace", "--no-verify", "--allow-dirty"])?;
+    let mut verified = vec!["package", "--allow-dirty"];
+    for name in VERIFIED_FROM_PACKAGE {
+        verified.extend(["-p", name]);
+    }
+    shell::cargo(&verified)
+}
+
+/// The published libraries, in dependency order, built from their
+/// packages by `lint`. The fourth published crate is the `rodyn-sim`
+/// tool; every other member has `publish = false`.
+const VERIFIED_FROM_PACKAGE: [&str; 3] = ["rodyn", "rodyn-model", "rodyn-scenarios"];
 
 /// Building the core with neither `std` nor `libm` must stop at the one
 /// `compile_error!` naming both features, not bury it in type errors.
