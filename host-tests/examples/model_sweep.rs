@@ -30,10 +30,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     for (n, robot) in robots.iter().enumerate() {
         let urdf = robot["urdf"].as_str().ok_or("urdf")?;
         eprintln!("[{}/{}] {urdf}", n + 1, robots.len());
-        let options = LoadOptions {
-            floating_base: robot["floating_base"].as_bool().unwrap_or(true),
-            ..LoadOptions::default()
-        };
+        let options =
+            LoadOptions::new().with_floating_base(robot["floating_base"].as_bool().unwrap_or(true));
         let description = match load(std::path::Path::new(urdf), options) {
             Ok(d) => d,
             Err(e) => {
