@@ -103,6 +103,17 @@ fn test() -> Result<()> {
         "--target",
         "thumbv7em-none-eabihf",
     ])?;
+    // The interop features stay no_std.
+    shell::cargo(&[
+        "build",
+        "-p",
+        "rodyn",
+        "--no-default-features",
+        "--features",
+        "libm,nalgebra",
+        "--target",
+        "thumbv7em-none-eabihf",
+    ])?;
 
     firmware::build()?;
     let mut failures = Vec::new();
