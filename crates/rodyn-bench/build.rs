@@ -19,16 +19,14 @@ fn main() {
         let _ = compile_with(
             urdf.join(file),
             module,
-            LoadOptions {
-                floating_base: *floating_base,
-                // The timed models take the UR5's quarter turns, written to
-                // 12 digits, as exact (an explicit opt-in since the model
-                // compiler keeps files' rotations by default): the
-                // comparison's figures were measured so, and the torques
-                // still agree with Pinocchio's to 1e-9 (compare.sh checks).
-                round_quarter_turns: true,
-                ..LoadOptions::default()
-            },
+            // The timed models take the UR5's quarter turns, written to 12
+            // digits, as exact (an explicit opt-in since the model compiler
+            // keeps files' rotations by default): the comparison's figures
+            // were measured so, and the torques still agree with
+            // Pinocchio's to 1e-9 (compare.sh checks).
+            LoadOptions::new()
+                .with_floating_base(*floating_base)
+                .with_round_quarter_turns(true),
         );
     }
     println!("cargo:rerun-if-changed=build.rs");

@@ -39,10 +39,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             .as_str()
             .ok_or_else(|| format!("{input}: robot {} has no \"urdf\" path", n + 1))?;
         eprintln!("[{}/{}] {urdf}", n + 1, robots.len());
-        let options = LoadOptions {
-            floating_base: robot["floating_base"].as_bool().unwrap_or(true),
-            ..LoadOptions::default()
-        };
+        let options =
+            LoadOptions::new().with_floating_base(robot["floating_base"].as_bool().unwrap_or(true));
         let description = match load(std::path::Path::new(urdf), options) {
             Ok(d) => d,
             Err(e) => {

@@ -58,11 +58,10 @@ fn against_constraint_dynamics<const B: usize, const Q: usize, const V: usize, c
             array::<V>(&state["tau"]),
         );
         for case in state["cases"].as_array().unwrap() {
-            let settings = ConstraintSettings {
-                kp: case["kp"].as_f64().unwrap(),
-                kd: case["kd"].as_f64().unwrap(),
-                damping: 0.0,
-            };
+            let settings = ConstraintSettings::baumgarte(
+                case["kp"].as_f64().unwrap(),
+                case["kd"].as_f64().unwrap(),
+            );
             let (ddq, lambda) = constrained_forward_dynamics_with(
                 method,
                 model,
@@ -225,11 +224,7 @@ fn check_equations<const B: usize, const Q: usize, const V: usize, const C: usiz
 #[test]
 fn satisfies_the_equations_of_motion_and_the_constraints() {
     let model = model();
-    let settings = ConstraintSettings {
-        kp: 25.0,
-        kd: 7.0,
-        damping: 0.0,
-    };
+    let settings = ConstraintSettings::baumgarte(25.0, 7.0);
     for state in &Fixture::load_named("solo12").unwrap().states {
         let (q, v, tau): ([f64; NQ], [f64; NV], [f64; NV]) = (
             state.q.clone().try_into().unwrap(),
@@ -247,11 +242,7 @@ fn satisfies_the_equations_of_motion_and_the_constraints() {
 #[test]
 fn satisfies_the_equations_with_frame_contacts() {
     let (model, fixture) = talos();
-    let settings = ConstraintSettings {
-        kp: 30.0,
-        kd: 8.0,
-        damping: 0.0,
-    };
+    let settings = ConstraintSettings::baumgarte(30.0, 8.0);
     for state in fixture["contact_states"].as_array().unwrap() {
         let (q, v, tau) = (
             array::<TALOS_NQ>(&state["q"]),
@@ -304,27 +295,9 @@ fn bad_input_and_redundant_contacts() {
     );
     let mut cdata = ConstraintData::<f64, NV, NC>::new();
     for (settings, index) in [
-        (
-            ConstraintSettings {
-                kp: -1.0,
-                ..ConstraintSettings::default()
-            },
-            0,
-        ),
-        (
-            ConstraintSettings {
-                kd: f64::NAN,
-                ..ConstraintSettings::default()
-            },
-            1,
-        ),
-        (
-            ConstraintSettings {
-                damping: f64::INFINITY,
-                ..ConstraintSettings::default()
-            },
-            2,
-        ),
+        (ConstraintSettings::new().with_kp(-1.0), 0),
+        (ConstraintSettings::new().with_kd(f64::NAN), 1),
+        (ConstraintSettings::new().with_damping(f64::INFINITY), 2),
     ] {
         let error = constrained_forward_dynamics(
             &model, &mut data, &mut cdata, &q, &v, &tau, &contacts, &settings,
@@ -404,10 +377,7 @@ fn bad_input_and_redundant_contacts() {
         matches!(error, Error::RedundantConstraints { contact: 1, .. }),
         "{error:?}"
     );
-    let damped = ConstraintSettings {
-        damping: 1e-6,
-        ..ConstraintSettings::default()
-    };
+    let damped = ConstraintSettings::new().with_damping(1e-6);
     let (ddq, lambda) =
         constrained_forward_dynamics(&model, &mut data, &mut cdata, &q, &v, &tau, &twice, &damped)
             .unwrap();
@@ -546,11 +516,10 @@ fn f32_stays_near_pinocchio() {
             for case in state["cases"].as_array().unwrap() {
                 let contacts: Vec<Contact<f32>> =
                     contacts(case).iter().map(Contact::cast).collect();
-                let settings = ConstraintSettings {
-                    kp: case["kp"].as_f64().unwrap() as f32,
-                    kd: case["kd"].as_f64().unwrap() as f32,
-                    damping: 0.0,
-                };
+                let settings = ConstraintSettings::baumgarte(
+                    case["kp"].as_f64().unwrap() as f32,
+                    case["kd"].as_f64().unwrap() as f32,
+                );
                 for method in METHODS {
                     let (ddq, lambda) = constrained_forward_dynamics_with(
                         method, &model, &mut data, &mut cdata, &q, &v, &tau, &contacts, &settings,
@@ -586,10 +555,7 @@ fn redundant_contacts_match_pinocchios_proximal_solver() {
     let fixture = solo12_fixture();
     let mut data = Data::new();
     let mut cdata = ConstraintData::<f64, NV, NC>::new();
-    let settings = ConstraintSettings {
-        damping: 1e-10,
-        ..ConstraintSettings::default()
-    };
+    let settings = ConstraintSettings::new().with_damping(1e-10);
     for method in METHODS {
         let (mut worst_ddq, mut worst_lambda, mut cases) = (0.0_f64, 0.0_f64, 0);
         for state in fixture["states"].as_array().unwrap() {

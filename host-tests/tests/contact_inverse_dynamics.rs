@@ -80,11 +80,7 @@ fn torques_give_back_the_motion_solo12() {
     let model = solo12();
     for settings in [
         ConstraintSettings::default(),
-        ConstraintSettings {
-            kp: 40.0,
-            kd: 9.0,
-            damping: 0.0,
-        },
+        ConstraintSettings::baumgarte(40.0, 9.0),
     ] {
         let (ddq, lambda, residual, cases) = round_trip::<SOLO_NB, SOLO_NQ, SOLO_NV, 12>(
             &model,
@@ -235,27 +231,9 @@ fn bad_input_is_an_error() {
     let zero = [0.0; SOLO_NV];
     assert!(call(&zero, &good).is_ok());
     for (settings, index) in [
-        (
-            ContactInverseDynamicsSettings {
-                unactuated: 19,
-                ..good
-            },
-            3,
-        ),
-        (
-            ContactInverseDynamicsSettings {
-                regularisation: 0.0,
-                ..good
-            },
-            4,
-        ),
-        (
-            ContactInverseDynamicsSettings {
-                friction: f64::NAN,
-                ..good
-            },
-            5,
-        ),
+        (good.with_unactuated(19), 3),
+        (good.with_regularisation(0.0), 4),
+        (good.with_friction(f64::NAN), 5),
     ] {
         assert_eq!(call(&zero, &settings), Err(Error::InvalidGain { index }));
     }

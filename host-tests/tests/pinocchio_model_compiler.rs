@@ -63,10 +63,7 @@ fn compare<const NB: usize, const NQ: usize, const NV: usize>(name: &str) {
     let fixture = Fixture::load_named(name).unwrap_or_else(|e| panic!("{e}"));
     let model: Model<f64, NB, NQ, NV> = fixture.model().unwrap_or_else(|e| panic!("{e}"));
     let urdf = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("../models/urdf/{name}.urdf"));
-    let options = LoadOptions {
-        floating_base: name == "solo12",
-        ..LoadOptions::default()
-    };
+    let options = LoadOptions::new().with_floating_base(name == "solo12");
     let compiled = rodyn_model::load(&urdf, options).unwrap_or_else(|e| panic!("{e}"));
     assert_eq!(compiled.bodies.len(), NB, "{name}: number of bodies");
     let mut compiled_model = model;

@@ -229,28 +229,10 @@ fn bad_settings_are_errors() {
     let mut state = resting_box::<f64>([0.0; 6]);
     let before = state;
     for (settings, index) in [
-        (
-            TimeSteppingSettings {
-                friction: -1.0,
-                ..good
-            },
-            0,
-        ),
-        (TimeSteppingSettings { sweeps: 0, ..good }, 1),
-        (
-            TimeSteppingSettings {
-                depth_recovery: 1.5,
-                ..good
-            },
-            2,
-        ),
-        (
-            TimeSteppingSettings {
-                margin: f64::NAN,
-                ..good
-            },
-            3,
-        ),
+        (TimeSteppingSettings::with_friction(-1.0), 0),
+        (good.with_sweeps(0), 1),
+        (good.with_depth_recovery(1.5), 2),
+        (good.with_margin(f64::NAN), 3),
     ] {
         let error = time_step(
             &model, &mut data, &mut sdata, &mut state, &[0.0; 6], &[0.0; 6], &points, &settings,

@@ -5,10 +5,11 @@
 //! |--------------------------|-------------------------------------------------------------------|
 //! | `run [example]`          | builds the firmware, runs `example` (default: the arm controller) in QEMU, prints the decoded defmt log |
 //! | `test`                   | host tests (the core's and `rodyn-host-tests`' also in the in-order tuning profile), the no_std core for thumbv7em, every firmware example in QEMU against its expected output, sizes, panic sites, stack bounds, lint |
-//! | `lint`                   | rustfmt, clippy and rustdoc, warnings as errors, host and firmware; the core without float features stops at one error; `cargo package` of the published crates |
+//! | `lint`                   | rustfmt, clippy and rustdoc, warnings as errors, host and firmware; the core without float features stops at one error; `cargo package` of every crate, the published libraries built from their packages; their public API against `xtask/public-api/` |
 //! | `costs`                  | runs the cost probe, measures sizes and bounds the stack, rewrites the tables in `docs/sections/firmware.md` and `firmware/expected/sizes.txt` |
 //! | `stack [image] [words]`  | worst-case stack per image and per cost-table row from a static call graph, checked against the painted figures (`--check-frames`: the frame reading against LLVM's `-Z emit-stack-sizes`) |
 //! | `panic-sites [image]`    | the panic call sites of one image (default: all) by source, function and line |
+//! | `public-api [--bless]`   | the public items of `rodyn` and `rodyn-model` (rustdoc JSON, nightly) against `xtask/public-api/*.txt`: a removed item fails; `--bless` rewrites the lists |
 //! | `bless`                  | rewrites `firmware/expected/*.log` from fresh runs, keeping `*` wildcards |
 //! | `profile [words]`        | one call of each algorithm on each model in QEMU with an instruction trace; prints where its instructions go, line by line (calls whose label contains every word) |
 //! | `host-profile <algorithm> <model> [--pinocchio]` | the same on the host: callgrind's count per instruction of one call of the `profile` binary (or of Pinocchio's timing program), charged line by line, and its floating-point operations |
@@ -27,6 +28,7 @@ mod fp_ops;
 mod host_profile;
 mod panic_sites;
 mod profile;
+mod public_api;
 mod setup;
 mod shell;
 mod stack_bound;
@@ -36,7 +38,7 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 const USAGE: &str =
-    "usage: cargo xtask <run [example] | test | lint | costs | stack [image [words]] | stack --frames <image> | stack --check-frames | panic-sites [image] | bless | profile [model] [algorithm] | host-profile <algorithm> <model> [--pinocchio]>";
+    "usage: cargo xtask <run [example] | test | lint | costs | stack [image [words]] | stack --frames <image> | stack --check-frames | panic-sites [image] | public-api [--bless] | bless | profile [model] [algorithm] | host-profile <algorithm> <model> [--pinocchio]>";
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -46,6 +48,7 @@ fn main() -> ExitCode {
         Some("lint") => lint(),
         Some("costs") => costs::regenerate(),
         Some("bless") => bless(),
+        Some("public-api") => public_api::run(args.get(1).map(String::as_str) == Some("--bless")),
         Some("stack") => stack_bound::run(&args[1..]),
         Some("panic-sites") => panic_sites::run(&args[1..]),
         Some("profile") => profile::run(&args[1..]),
@@ -100,6 +103,17 @@ fn test() -> Result<()> {
         "--no-default-features",
         "--features",
         "libm",
+        "--target",
+        "thumbv7em-none-eabihf",
+    ])?;
+    // The interop features stay no_std.
+    shell::cargo(&[
+        "build",
+        "-p",
+        "rodyn",
+        "--no-default-features",
+        "--features",
+        "libm,nalgebra",
         "--target",
         "thumbv7em-none-eabihf",
     ])?;
@@ -213,22 +227,40 @@ fn lint() -> Result<()> {
         &[("RUSTDOCFLAGS", "-D warnings")],
     )?;
     no_float_features_is_one_error()?;
-    // Together, so that rodyn-model's dependency on the unpublished core
-    // resolves to the core packaged beside it.
-    shell::cargo(&[
-        "package",
-        "-p",
-        "rodyn",
-        "-p",
-        "rodyn-model",
-        "--allow-dirty",
-    ])?;
+    packages()?;
+    public_api::run(false)?;
     println!(
         "xtask lint: clean in {:.0} s",
         started.elapsed().as_secs_f64()
     );
     Ok(())
 }
+
+/// The crates as crates.io would get them. Every member is packaged with
+/// `--no-verify`: the manifests, the `include` lists and the versions on
+/// path dependencies are checked, nothing is compiled. Then the published
+/// libraries are packaged again and each compiled from its own tarball,
+/// which proves it holds what its build reads (the scenes' model files
+/// through rodyn-scenarios' build script). rodyn-sim, published too, is
+/// left at the first step: it has no build script and reads no file at
+/// build time, so its tarball's build would prove only what the workspace
+/// build does, for minutes of plotting and image crates in the package
+/// target folder. The internal crates are never published. Each command
+/// packages its crates together, so that a dependency on a crate not yet
+/// on crates.io resolves to the one packaged beside it.
+fn packages() -> Result<()> {
+    shell::cargo(&["package", "--workspace", "--no-verify", "--allow-dirty"])?;
+    let mut verified = vec!["package", "--allow-dirty"];
+    for name in VERIFIED_FROM_PACKAGE {
+        verified.extend(["-p", name]);
+    }
+    shell::cargo(&verified)
+}
+
+/// The published libraries, in dependency order, built from their
+/// packages by `lint`. The fourth published crate is the `rodyn-sim`
+/// tool; every other member has `publish = false`.
+const VERIFIED_FROM_PACKAGE: [&str; 3] = ["rodyn", "rodyn-model", "rodyn-scenarios"];
 
 /// Building the core with neither `std` nor `libm` must stop at the one
 /// `compile_error!` naming both features, not bury it in type errors.

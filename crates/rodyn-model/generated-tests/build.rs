@@ -27,10 +27,7 @@ fn main() {
     let models = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../models");
     let mut all = String::new();
     for (file, module, floating_base) in MODELS {
-        let options = LoadOptions {
-            floating_base: *floating_base,
-            ..LoadOptions::default()
-        };
+        let options = LoadOptions::new().with_floating_base(*floating_base);
         let out = compile_with(models.join(file), module, options);
         writeln!(all, "include!({:?});", out.display().to_string()).unwrap();
     }
@@ -40,10 +37,7 @@ fn main() {
     writeln!(all, "include!({:?});", out.display().to_string()).unwrap();
     // Continuous joints on a free-flyer, against Pinocchio's layout.
     let urdf = Path::new(env!("CARGO_MANIFEST_DIR")).join("urdf/wheeled_arm.urdf");
-    let options = LoadOptions {
-        floating_base: true,
-        ..LoadOptions::default()
-    };
+    let options = LoadOptions::floating_base();
     let out = compile_with(urdf, "wheeled_arm", options);
     writeln!(all, "include!({:?});", out.display().to_string()).unwrap();
     // Mimic joints, against Pinocchio's mimic=True model.

@@ -28,6 +28,7 @@ pub mod description;
 pub mod diagnostic;
 pub mod geometry;
 pub mod names;
+mod options;
 pub mod physics;
 pub mod render;
 pub mod rodyn_file;
@@ -37,35 +38,9 @@ pub mod urdf;
 
 pub use description::ModelDescription;
 pub use diagnostic::{Diagnostic, Location, Severity, WarningKind, WarningKinds};
+pub use options::LoadOptions;
 
 use std::path::Path;
-
-/// How to read a model file.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct LoadOptions {
-    /// For a URDF: put a free-flyer between the world and the root link.
-    /// (A rodyn file says this itself with `floating_base = true`.)
-    pub floating_base: bool,
-    /// Turn the warnings about what cannot harm the dynamics (a link's
-    /// tensor that only a merge makes physical, a triangle-inequality
-    /// violation, a massless link with a tensor, a robot without a name)
-    /// into errors. A rodyn file can ask for it with `strict = true` in
-    /// its `[model]` table; the CLI with `--strict`.
-    pub strict: bool,
-    /// Round placements within 1e-10 of a quarter turn to exact quarter
-    /// turns, which CRBA exploits (π/2 written to 12 digits, as the UR
-    /// descriptions do, then counts as one). Off by default: the compiled
-    /// model keeps the file's rotations. A rodyn file asks with
-    /// `round_quarter_turns = true` in `[model]`; the CLI with
-    /// `--round-quarter-turns`.
-    pub round_quarter_turns: bool,
-    /// Kinds of warning not to report, nor to refuse in strict mode
-    /// (`WarningKinds::NONE.with(WarningKind::Limit)`). The others are
-    /// reported once per kind and file, with a count. A rodyn file adds
-    /// its own with `silence = ["limit", "geometry"]` in `[model]`; the
-    /// CLI with `--silence limit,geometry` (or `all`).
-    pub silence: WarningKinds,
-}
 
 /// The largest model file read, bytes: far above any robot's (a 16,000-link
 /// URDF is about 10 MB), far below what would exhaust a build machine.

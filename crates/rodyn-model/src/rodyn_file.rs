@@ -185,14 +185,7 @@ struct Scale {
 /// The first problem found, with its position in `file` (or in an included
 /// URDF).
 pub fn read_rodyn_file(file: &Path, text: &str, strict: bool) -> Result<ModelDescription> {
-    read_rodyn_file_with(
-        file,
-        text,
-        crate::LoadOptions {
-            strict,
-            ..crate::LoadOptions::default()
-        },
-    )
+    read_rodyn_file_with(file, text, crate::LoadOptions::new().with_strict(strict))
 }
 
 /// [`read_rodyn_file`] with the caller's options: strict mode and the

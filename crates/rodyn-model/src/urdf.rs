@@ -33,7 +33,18 @@ use std::path::Path;
 pub const URDF_GRAVITY: Vec3 = [0.0, 0.0, -9.81];
 
 /// How to read a URDF.
+///
+/// `#[non_exhaustive]`: a later option is not a breaking change. Build it
+/// with [`UrdfOptions::new`] and the `with_…` methods.
+///
+/// ```
+/// use rodyn_model::urdf::UrdfOptions;
+///
+/// let options = UrdfOptions::new().with_floating_base(true).with_strict(true);
+/// assert!(options.floating_base && options.strict);
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct UrdfOptions {
     /// Put a free-flyer between the world and the root link.
     pub floating_base: bool,
@@ -44,6 +55,66 @@ pub struct UrdfOptions {
     pub strict: bool,
     /// Kinds of warning not to report (nor to refuse in strict mode).
     pub silence: WarningKinds,
+}
+
+impl UrdfOptions {
+    /// A fixed root, warnings reported but not refused, nothing silenced
+    /// (the same as `default()`, usable in a `const`).
+    ///
+    /// ```
+    /// use rodyn_model::urdf::UrdfOptions;
+    ///
+    /// const OPTIONS: UrdfOptions = UrdfOptions::new();
+    /// assert_eq!(OPTIONS, UrdfOptions::default());
+    /// ```
+    #[must_use]
+    pub const fn new() -> Self {
+        Self {
+            floating_base: false,
+            strict: false,
+            silence: WarningKinds::NONE,
+        }
+    }
+
+    /// These options with a free-flyer under the root link, or not.
+    ///
+    /// ```
+    /// use rodyn_model::urdf::UrdfOptions;
+    ///
+    /// assert!(UrdfOptions::new().with_floating_base(true).floating_base);
+    /// ```
+    #[must_use]
+    pub const fn with_floating_base(mut self, floating_base: bool) -> Self {
+        self.floating_base = floating_base;
+        self
+    }
+
+    /// These options with strict mode on or off.
+    ///
+    /// ```
+    /// use rodyn_model::urdf::UrdfOptions;
+    ///
+    /// assert!(UrdfOptions::new().with_strict(true).strict);
+    /// ```
+    #[must_use]
+    pub const fn with_strict(mut self, strict: bool) -> Self {
+        self.strict = strict;
+        self
+    }
+
+    /// These options silencing `silence`'s kinds of warning.
+    ///
+    /// ```
+    /// use rodyn_model::{urdf::UrdfOptions, WarningKind, WarningKinds};
+    ///
+    /// let options = UrdfOptions::new().with_silence(WarningKinds::NONE.with(WarningKind::Limit));
+    /// assert!(options.silence.contains(WarningKind::Limit));
+    /// ```
+    #[must_use]
+    pub const fn with_silence(mut self, silence: WarningKinds) -> Self {
+        self.silence = silence;
+        self
+    }
 }
 
 /// Reads URDF `text` (the content of `file`) into a checked model.

@@ -13,12 +13,7 @@ fn write(name: &str, text: &str) -> PathBuf {
     path
 }
 
-const STRICT: LoadOptions = LoadOptions {
-    floating_base: false,
-    strict: true,
-    round_quarter_turns: false,
-    silence: rodyn_model::WarningKinds::NONE,
-};
+const STRICT: LoadOptions = LoadOptions::new().with_strict(true);
 
 /// A link `name` with `mass` and the tensor entries `(ixx, iyy, izz, ixy)`.
 fn link(name: &str, mass: f64, i: [f64; 4]) -> String {

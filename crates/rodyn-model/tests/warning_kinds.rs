@@ -72,25 +72,15 @@ fn silenced_kinds_are_not_reported_nor_refused_in_strict_mode() {
     let silence = WarningKinds::NONE
         .with(WarningKind::Limit)
         .with(WarningKind::MasslessTensor);
-    let left = messages(LoadOptions {
-        silence,
-        ..LoadOptions::default()
-    });
+    let left = messages(LoadOptions::new().with_silence(silence));
     assert_eq!(left.len(), 1, "{left:#?}");
     assert!(left[0].ends_with("[mimic]"));
     // Strict mode refuses the massless tensors unless they are silenced.
     let path = write("kinds_strict.urdf", &urdf());
-    let strict = LoadOptions {
-        strict: true,
-        ..LoadOptions::default()
-    };
+    let strict = LoadOptions::new().with_strict(true);
     assert!(load(&path, strict).is_err());
-    load(&path, LoadOptions { silence, ..strict }).unwrap();
-    assert!(messages(LoadOptions {
-        silence: WarningKinds::ALL,
-        ..LoadOptions::default()
-    })
-    .is_empty());
+    load(&path, strict.with_silence(silence)).unwrap();
+    assert!(messages(LoadOptions::new().with_silence(WarningKinds::ALL)).is_empty());
 }
 
 #[test]

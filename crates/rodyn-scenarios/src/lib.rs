@@ -9,11 +9,11 @@
 //!
 //! | module               | from                          | what it is                                                        |
 //! |----------------------|-------------------------------|-------------------------------------------------------------------|
-//! | [`pendulum`]         | `models/pendulum.toml`        | the seed pendulum and its return spring                           |
+//! | [`pendulum`]         | `models/pendulum.toml`        | a pendulum and its return spring                                  |
 //! | [`panda`]            | `models/panda.toml`           | the Franka Panda arm (7 DoF) with joint motors                    |
 //! | [`aibo`]             | `models/aibo.toml`            | an Aibo-size quadruped: floating trunk, 3 joints per leg, contacts |
-//! | [`two_link_muscles`] | `models/two_link_muscles.toml`| the seed's two-link robot with four Thelen muscles (planar)       |
-//! | [`gait_planar`]      | `models/gait_planar.toml`     | the seed's planar gait model (8 segments, Winter's table)         |
+//! | [`two_link_muscles`] | `models/two_link_muscles.toml`| a two-link robot with four Thelen muscles (planar)                |
+//! | [`gait_planar`]      | `models/gait_planar.toml`     | a planar gait model (8 segments, Winter's table)                  |
 //! | [`quadruped`]        | [`aibo`]                      | stance / trot PD controller, ground contact, one call per step     |
 //! | [`quadruped_balance`] | [`quadruped`]                | a trot that holds the trunk's height and attitude by inverse dynamics with contacts |
 //! | [`muscle_robot`]     | [`two_link_muscles`]          | forward dynamics with the muscles, its sensitivity `∂q̈/∂a`, loads with the activations as auxiliary states |

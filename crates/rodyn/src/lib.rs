@@ -41,6 +41,11 @@
 //! * `std` (default): float functions from the standard library.
 //! * `libm`: float functions from `libm`, for `no_std` targets.
 //! * `defmt`: `defmt::Format` for errors, for firmware logging.
+//! * `nalgebra`: `From`/`Into` between rodyn's vectors, matrices,
+//!   placements and spatial vectors and nalgebra's fixed-size types
+//!   ([`interop::nalgebra`](crate::interop)); turns on `approx`.
+//! * `approx`: approx's `AbsDiffEq`, `RelativeEq` and `UlpsEq` for rodyn's
+//!   value types ([`interop`]).
 //!
 //! ## Tuning profile
 //! A few kernels have two forms that give the same results (to rounding)
@@ -63,6 +68,7 @@ pub mod drive;
 pub mod endpoint;
 pub mod error;
 pub mod frame;
+pub mod interop;
 pub mod joint;
 pub mod model;
 pub mod planar;

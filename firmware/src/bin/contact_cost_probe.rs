@@ -78,11 +78,7 @@ fn probe_quadruped_contacts(counter: &InstructionCounter) -> bool {
     };
     let mut data = Data::new();
     let mut cdata = ConstraintData::<f32, NV, { 3 * LEGS }>::new();
-    let gains = ConstraintSettings {
-        kp: 25.0,
-        kd: 7.0,
-        damping: 0.0,
-    };
+    let gains = ConstraintSettings::baumgarte(25.0, 7.0);
     let fd = probe_scene(
         MODEL,
         "constrained-FD(4-feet)",

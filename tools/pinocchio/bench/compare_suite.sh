@@ -9,7 +9,8 @@
 # (constrained forward dynamics on Solo12 and Talos; Talos's URDF from
 # example-robot-data). Builds
 # tools/pinocchio/bench/bench_SUITE.cpp with compare.sh's flags (g++ -O3,
-# baseline x86-64) and runs it and rodyn-bench's `SUITE_timing` (release)
+# baseline x86-64) and runs it and rodyn-bench's `SUITE_timing` (release;
+# `contacts_timing` is an example)
 # alternately, twice, printing a markdown table of the medians and the
 # ratio rodyn / Pinocchio. compare_kinematics.sh and compare_derivatives.sh
 # name the suite for you.
@@ -42,8 +43,15 @@ if [[ ! -x "$EXE" || "$SRC" -nt "$EXE" || "$HEADER" -nt "$EXE" || "$0" -nt "$EXE
 fi
 
 cd "$ROOT"
-cargo build --quiet -p rodyn-bench --release --bin "${SUITE}_timing"
-RODYN="${CARGO_TARGET_DIR:-$ROOT/target}/release/${SUITE}_timing"
+RODYN="${CARGO_TARGET_DIR:-$ROOT/target}/release"
+if [[ "$SUITE" == contacts ]]; then
+    # An example: it reads the fixtures of the unpublished rodyn-host-tests.
+    cargo build --quiet -p rodyn-bench --release --example contacts_timing
+    RODYN="$RODYN/examples/contacts_timing"
+else
+    cargo build --quiet -p rodyn-bench --release --bin "${SUITE}_timing"
+    RODYN="$RODYN/${SUITE}_timing"
+fi
 TMP="$(mktemp -d)"
 for round in 1 2; do
     "$RODYN" --ms "$MS" >>"$TMP/rodyn"

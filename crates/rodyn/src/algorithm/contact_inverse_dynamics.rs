@@ -53,7 +53,19 @@ use crate::Scalar;
 const UNACTUATED_MAX: usize = 6;
 
 /// The settings of [`contact_inverse_dynamics`].
+///
+/// `#[non_exhaustive]`: a later setting is not a breaking change. Build it
+/// with [`ContactInverseDynamicsSettings::floating_base`] or
+/// [`ContactInverseDynamicsSettings::fixed_base`] and the `with_…` methods.
+///
+/// ```
+/// use rodyn::algorithm::contact_inverse_dynamics::ContactInverseDynamicsSettings;
+///
+/// let settings = ContactInverseDynamicsSettings::floating_base(0.7).with_regularisation(1e-10);
+/// assert_eq!((settings.unactuated, settings.friction, settings.regularisation), (6, 0.7, 1e-10));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct ContactInverseDynamicsSettings<S> {
     /// `nu`: the leading velocity coordinates without actuators (6 for a
     /// free-flying base, 0 for a fixed one).
@@ -76,6 +88,65 @@ impl<S: Scalar> ContactInverseDynamicsSettings<S> {
             regularisation: S::from_f64(1e3 * S::EPSILON),
             friction,
         }
+    }
+
+    /// A fixed base (`nu = 0`: every coordinate actuated), otherwise as
+    /// [`ContactInverseDynamicsSettings::floating_base`].
+    ///
+    /// ```
+    /// use rodyn::algorithm::contact_inverse_dynamics::ContactInverseDynamicsSettings;
+    ///
+    /// let settings = ContactInverseDynamicsSettings::<f64>::fixed_base(0.5);
+    /// assert_eq!(settings.unactuated, 0);
+    /// ```
+    #[must_use]
+    pub fn fixed_base(friction: S) -> Self {
+        Self::floating_base(friction).with_unactuated(0)
+    }
+
+    /// These settings with the first `unactuated` velocity coordinates
+    /// without actuators.
+    ///
+    /// ```
+    /// use rodyn::algorithm::contact_inverse_dynamics::ContactInverseDynamicsSettings;
+    ///
+    /// // A planar base: three unactuated coordinates.
+    /// let settings = ContactInverseDynamicsSettings::<f64>::floating_base(0.5).with_unactuated(3);
+    /// assert_eq!(settings.unactuated, 3);
+    /// ```
+    #[must_use]
+    pub const fn with_unactuated(mut self, unactuated: usize) -> Self {
+        self.unactuated = unactuated;
+        self
+    }
+
+    /// These settings with the relative damping `ε` (> 0) of the force
+    /// distribution.
+    ///
+    /// ```
+    /// use rodyn::algorithm::contact_inverse_dynamics::ContactInverseDynamicsSettings;
+    ///
+    /// let settings = ContactInverseDynamicsSettings::floating_base(0.5).with_regularisation(1e-9);
+    /// assert_eq!(settings.regularisation, 1e-9);
+    /// ```
+    #[must_use]
+    pub const fn with_regularisation(mut self, regularisation: S) -> Self {
+        self.regularisation = regularisation;
+        self
+    }
+
+    /// These settings with Coulomb's coefficient `μ` for the cone check.
+    ///
+    /// ```
+    /// use rodyn::algorithm::contact_inverse_dynamics::ContactInverseDynamicsSettings;
+    ///
+    /// let settings = ContactInverseDynamicsSettings::floating_base(0.5).with_friction(0.9);
+    /// assert_eq!(settings.friction, 0.9);
+    /// ```
+    #[must_use]
+    pub const fn with_friction(mut self, friction: S) -> Self {
+        self.friction = friction;
+        self
     }
 }
 

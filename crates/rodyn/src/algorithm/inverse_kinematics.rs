@@ -35,7 +35,19 @@ use crate::spatial::{Motion, Spatial, Transform, Vec3};
 use crate::Scalar;
 
 /// Settings of [`solve`].
+///
+/// `#[non_exhaustive]`: a later setting is not a breaking change. Build it
+/// with [`IkSettings::new`] and the `with_…` methods.
+///
+/// ```
+/// use rodyn::algorithm::inverse_kinematics::IkSettings;
+///
+/// let settings = IkSettings::<f64>::new().with_tolerance(1e-9).with_max_iterations(200);
+/// assert_eq!((settings.tolerance, settings.max_iterations), (1e-9, 200));
+/// assert_eq!(settings.damping, IkSettings::<f64>::new().damping);
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct IkSettings<S> {
     /// The damping `λ` (in the units of `e`: rad and m), > 0.
     pub damping: S,
@@ -60,6 +72,60 @@ impl<S: Scalar> IkSettings<S> {
             max_iterations: 100,
             stall_iterations: 10,
         }
+    }
+
+    /// These settings with damping `λ` (> 0).
+    ///
+    /// ```
+    /// use rodyn::algorithm::inverse_kinematics::IkSettings;
+    ///
+    /// assert_eq!(IkSettings::new().with_damping(1e-2).damping, 1e-2);
+    /// ```
+    #[must_use]
+    pub const fn with_damping(mut self, damping: S) -> Self {
+        self.damping = damping;
+        self
+    }
+
+    /// These settings with the convergence tolerance on `e`'s largest
+    /// component (rad, m).
+    ///
+    /// ```
+    /// use rodyn::algorithm::inverse_kinematics::IkSettings;
+    ///
+    /// assert_eq!(IkSettings::new().with_tolerance(1e-8).tolerance, 1e-8);
+    /// ```
+    #[must_use]
+    pub const fn with_tolerance(mut self, tolerance: S) -> Self {
+        self.tolerance = tolerance;
+        self
+    }
+
+    /// These settings with an iteration budget of `max_iterations`.
+    ///
+    /// ```
+    /// use rodyn::algorithm::inverse_kinematics::IkSettings;
+    ///
+    /// assert_eq!(IkSettings::<f32>::new().with_max_iterations(20).max_iterations, 20);
+    /// ```
+    #[must_use]
+    pub const fn with_max_iterations(mut self, max_iterations: usize) -> Self {
+        self.max_iterations = max_iterations;
+        self
+    }
+
+    /// These settings with [`solve_with_fallback`]'s stall window of
+    /// `stall_iterations` steps.
+    ///
+    /// ```
+    /// use rodyn::algorithm::inverse_kinematics::IkSettings;
+    ///
+    /// assert_eq!(IkSettings::<f64>::new().with_stall_iterations(5).stall_iterations, 5);
+    /// ```
+    #[must_use]
+    pub const fn with_stall_iterations(mut self, stall_iterations: usize) -> Self {
+        self.stall_iterations = stall_iterations;
+        self
     }
 }
 

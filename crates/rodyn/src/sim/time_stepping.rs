@@ -67,7 +67,18 @@ use crate::spatial::{Spatial, Transform, Vec3};
 use crate::Scalar;
 
 /// The settings of [`time_step`].
+///
+/// `#[non_exhaustive]`: a later setting is not a breaking change. Build it
+/// with [`TimeSteppingSettings::with_friction`] and the `with_…` methods.
+///
+/// ```
+/// use rodyn::sim::time_stepping::TimeSteppingSettings;
+///
+/// let settings = TimeSteppingSettings::with_friction(0.8).with_sweeps(50).with_margin(0.01);
+/// assert_eq!((settings.friction, settings.sweeps, settings.margin), (0.8, 50, 0.01));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct TimeSteppingSettings<S> {
     /// Coulomb's friction coefficient `μ` (dimensionless, ≥ 0).
     pub friction: S,
@@ -91,6 +102,49 @@ impl<S: Scalar> TimeSteppingSettings<S> {
             depth_recovery: S::from_f64(0.2),
             margin: S::from_f64(0.005),
         }
+    }
+
+    /// These settings with `sweeps` projected Gauss–Seidel sweeps per step
+    /// (at least 1).
+    ///
+    /// ```
+    /// use rodyn::sim::time_stepping::TimeSteppingSettings;
+    ///
+    /// assert_eq!(TimeSteppingSettings::with_friction(0.5).with_sweeps(10).sweeps, 10);
+    /// ```
+    #[must_use]
+    pub const fn with_sweeps(mut self, sweeps: usize) -> Self {
+        self.sweeps = sweeps;
+        self
+    }
+
+    /// These settings removing the fraction `β` (in `[0, 1]`) of a
+    /// penetration per step.
+    ///
+    /// ```
+    /// use rodyn::sim::time_stepping::TimeSteppingSettings;
+    ///
+    /// let settings = TimeSteppingSettings::with_friction(0.5).with_depth_recovery(0.1);
+    /// assert_eq!(settings.depth_recovery, 0.1);
+    /// ```
+    #[must_use]
+    pub const fn with_depth_recovery(mut self, depth_recovery: S) -> Self {
+        self.depth_recovery = depth_recovery;
+        self
+    }
+
+    /// These settings with a contact margin of `margin` (m, ≥ 0) above
+    /// the ground.
+    ///
+    /// ```
+    /// use rodyn::sim::time_stepping::TimeSteppingSettings;
+    ///
+    /// assert_eq!(TimeSteppingSettings::with_friction(0.5).with_margin(0.02).margin, 0.02);
+    /// ```
+    #[must_use]
+    pub const fn with_margin(mut self, margin: S) -> Self {
+        self.margin = margin;
+        self
     }
 
     /// # Errors

@@ -76,7 +76,19 @@ pub enum ConstraintMethod {
 }
 
 /// The gains of the constraint solve.
+///
+/// `#[non_exhaustive]`: a later setting is not a breaking change. Build it
+/// with [`ConstraintSettings::new`] (the exact solve),
+/// [`ConstraintSettings::baumgarte`] and the `with_…` methods.
+///
+/// ```
+/// use rodyn::algorithm::constrained_dynamics::ConstraintSettings;
+///
+/// let settings = ConstraintSettings::baumgarte(25.0, 7.0).with_damping(1e-8);
+/// assert_eq!((settings.kp, settings.kd, settings.damping), (25.0, 7.0, 1e-8));
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct ConstraintSettings<S> {
     /// `K_p`, 1/s²: position feedback of the Baumgarte term.
     pub kp: S,
@@ -87,14 +99,84 @@ pub struct ConstraintSettings<S> {
     pub damping: S,
 }
 
-impl<S: Scalar> Default for ConstraintSettings<S> {
-    /// No stabilisation, no damping: the exact KKT solution.
-    fn default() -> Self {
+impl<S: Scalar> ConstraintSettings<S> {
+    /// No stabilisation, no damping: the exact KKT solution (the same as
+    /// `default()`, usable in a `const`).
+    ///
+    /// ```
+    /// use rodyn::algorithm::constrained_dynamics::ConstraintSettings;
+    ///
+    /// const EXACT: ConstraintSettings<f32> = ConstraintSettings::new();
+    /// assert_eq!((EXACT.kp, EXACT.kd, EXACT.damping), (0.0, 0.0, 0.0));
+    /// ```
+    #[must_use]
+    pub const fn new() -> Self {
         Self {
             kp: S::ZERO,
             kd: S::ZERO,
             damping: S::ZERO,
         }
+    }
+
+    /// Baumgarte stabilisation with position gain `kp` (1/s²) and velocity
+    /// gain `kd` (1/s), no damping. `kd = 2 √kp` damps the drift critically.
+    ///
+    /// ```
+    /// use rodyn::algorithm::constrained_dynamics::ConstraintSettings;
+    ///
+    /// let settings = ConstraintSettings::baumgarte(25.0, 10.0);
+    /// assert_eq!((settings.kp, settings.kd, settings.damping), (25.0, 10.0, 0.0));
+    /// ```
+    #[must_use]
+    pub const fn baumgarte(kp: S, kd: S) -> Self {
+        Self::new().with_kp(kp).with_kd(kd)
+    }
+
+    /// These settings with position gain `kp` (1/s²).
+    ///
+    /// ```
+    /// use rodyn::algorithm::constrained_dynamics::ConstraintSettings;
+    ///
+    /// assert_eq!(ConstraintSettings::new().with_kp(4.0).kp, 4.0);
+    /// ```
+    #[must_use]
+    pub const fn with_kp(mut self, kp: S) -> Self {
+        self.kp = kp;
+        self
+    }
+
+    /// These settings with velocity gain `kd` (1/s).
+    ///
+    /// ```
+    /// use rodyn::algorithm::constrained_dynamics::ConstraintSettings;
+    ///
+    /// assert_eq!(ConstraintSettings::new().with_kd(4.0).kd, 4.0);
+    /// ```
+    #[must_use]
+    pub const fn with_kd(mut self, kd: S) -> Self {
+        self.kd = kd;
+        self
+    }
+
+    /// These settings with damping `μ` of the contact solve (m/N/s²), for
+    /// redundant contacts.
+    ///
+    /// ```
+    /// use rodyn::algorithm::constrained_dynamics::ConstraintSettings;
+    ///
+    /// assert_eq!(ConstraintSettings::new().with_damping(1e-6).damping, 1e-6);
+    /// ```
+    #[must_use]
+    pub const fn with_damping(mut self, damping: S) -> Self {
+        self.damping = damping;
+        self
+    }
+}
+
+impl<S: Scalar> Default for ConstraintSettings<S> {
+    /// No stabilisation, no damping: the exact KKT solution.
+    fn default() -> Self {
+        Self::new()
     }
 }
 
@@ -311,11 +393,7 @@ pub fn impulse_dynamics<
     if !(0.0..=1.0).contains(&e) {
         return Err(Error::InvalidGain { index: 0 });
     }
-    let settings = ConstraintSettings {
-        kp: S::ZERO,
-        kd: S::ZERO,
-        damping,
-    };
+    let settings = ConstraintSettings::new().with_damping(damping);
     check_input(contacts, &settings, NB, NC)?;
     check_finite(v_before, Quantity::Velocity)?;
     prepare(model, data, cdata, q, contacts, damping, Poses::Compute)?;

@@ -15,7 +15,11 @@
 //! (`host-tests/fixtures/contacts/`); each side draws its own 64 random
 //! states. No Baumgarte gains: the exact KKT solve on both sides.
 //!
-//! `cargo run --release -p rodyn-bench --bin contacts_timing [-- --ms M]`
+//! `cargo run --release -p rodyn-bench --example contacts_timing [-- --ms M]`
+//!
+//! An example rather than a binary: the fixtures come from the unpublished
+//! `rodyn-host-tests`, which only a dev-dependency may name (`cargo package
+//! --workspace` resolves every normal dependency from the packaged set).
 
 use std::hint::black_box;
 
