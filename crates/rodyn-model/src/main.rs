@@ -8,11 +8,14 @@
 //! (comma-separated kinds of warning, such as `limit,geometry`, or `all`).
 //! rodyn-model tree   <file> [--floating-base] [--strict]                   bodies, joints, endpoints, drives
 //! rodyn-model render <file> [--q a,b,...] [--view xy|xz|yz|iso] [-o out.svg]   stick figure
+//! rodyn-model view   <file> [--q a,b,...] [--package-path DIR]... [-o robot.html]   3-D viewer page
 //! ```
 
 use rodyn_model::render::{render_svg, View};
 use rodyn_model::runtime::RuntimeModel;
 use rodyn_model::tree::render_tree;
+use rodyn_model::view;
+use rodyn_model::visual::read_visuals;
 use rodyn_model::{build::generate_source, LoadOptions, WarningKinds};
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -23,6 +26,8 @@ const USAGE: &str = "usage:
   rodyn-model tree  <file> [--floating-base] [--strict]                   print bodies, joints, endpoints, drives, nq and nv
   rodyn-model render <file> [--floating-base] [--strict] [--q a,b,...] [--view xy|xz|yz|iso] [--width PX] [-o out.svg]
                                                                draw a stick figure at q (default: zeros; planar models view xy, others iso)
+  rodyn-model view  <file> [--floating-base] [--q a,b,...] [--package-path DIR]... [-o robot.html]
+                                                               write a 3-D viewer as one HTML file (meshes from the URDF; package://NAME/ found as DIR/NAME)
 options for every command: --round-quarter-turns, --silence KINDS (comma-separated kinds of warning, or all: limit, dynamics, mimic, geometry, transmission, gazebo, calibration, unknown-element, unnamed-robot, fixed-root-inertia, massless-tensor, link-tensor, body-tensor)";
 
 fn main() -> ExitCode {
@@ -45,6 +50,7 @@ fn run(args: &[String]) -> Result<(), String> {
     let mut view = None;
     let mut output = None;
     let mut width = 480.0;
+    let mut package_path: Vec<PathBuf> = Vec::new();
     let mut it = rest.iter();
     while let Some(arg) = it.next() {
         match arg.as_str() {
@@ -84,6 +90,10 @@ fn run(args: &[String]) -> Result<(), String> {
                     .and_then(|w| w.parse().ok())
                     .ok_or("--width needs a number of pixels")?;
             }
+            "--package-path" => package_path.push(PathBuf::from(
+                it.next()
+                    .ok_or("--package-path needs a folder that holds packages")?,
+            )),
             "-o" | "--output" => {
                 output = Some(PathBuf::from(it.next().ok_or("-o needs a file name")?))
             }
@@ -150,6 +160,28 @@ fn run(args: &[String]) -> Result<(), String> {
                 }
                 None => print!("{svg}"),
             }
+            Ok(())
+        }
+        "view" => {
+            let model = rodyn_model::load(&file, options).map_err(|d| d.to_string())?;
+            if !q.is_empty() && q.len() != model.nq() {
+                return Err(format!(
+                    "--q has {} numbers but the model has nq = {}",
+                    q.len(),
+                    model.nq()
+                ));
+            }
+            let visuals = read_visuals(&model, &package_path).map_err(|d| d.to_string())?;
+            for w in &visuals.warnings {
+                eprintln!("{w}");
+            }
+            let runtime = RuntimeModel::new(model).map_err(|d| d.to_string())?;
+            let html = rodyn_viewer::write_html(&view::scene(&runtime, visuals, &q))
+                .map_err(|e| format!("cannot write the page: {e}"))?;
+            let path = output
+                .unwrap_or_else(|| PathBuf::from(format!("{}.html", runtime.description.name)));
+            std::fs::write(&path, html).map_err(|e| format!("{}: {e}", path.display()))?;
+            println!("wrote {}", path.display());
             Ok(())
         }
         _ => Err(USAGE.to_string()),

@@ -3,6 +3,7 @@
 //!
 //! ```text
 //! rodyn-sim run quadruped-trot --duration 5 --dt 1e-3 --method aba --integrator rk4 --scalar f64 -o out/
+//! rodyn-sim run quadruped-trot --html out/trot.html
 //! rodyn-sim chart -o docs/img/sim
 //! rodyn-sim failures all -o docs/img/sim
 //! ```
@@ -15,6 +16,7 @@ mod plot;
 mod run;
 mod scenario;
 mod trajectory;
+mod viewer;
 
 use clap::{Parser, Subcommand};
 use scenario::{IntegratorKind, Method, RunConfig, ScalarType, Scenario};
@@ -57,6 +59,10 @@ enum Command {
         /// Output directory.
         #[arg(short, long, default_value = "out")]
         out: PathBuf,
+        /// Also write the run as a 3-D viewer page (one HTML file that
+        /// opens in any browser, offline).
+        #[arg(long, value_name = "FILE")]
+        html: Option<PathBuf>,
     },
     /// The speed-versus-accuracy chart for the arm, the quadruped and the muscle robot.
     Chart {
@@ -86,6 +92,7 @@ fn main() {
             integrator,
             scalar,
             out,
+            html,
         } => {
             let config = RunConfig {
                 scenario,
@@ -96,7 +103,7 @@ fn main() {
                 integrator,
                 sample_interval: 0.01,
             };
-            run::run_command(&config, &out)
+            run::run_command(&config, &out, html.as_deref())
         }
         Command::Chart { out } => chart::chart_command(&out),
         Command::Failures { experiment, out } => failures::failures_command(experiment, &out),

@@ -6,6 +6,7 @@ use crate::plot::{plot, Curve, Figure, Mark, Scale, Series};
 use crate::scenario::{run, RunConfig, Scenario};
 use crate::trajectory::Trajectory;
 use indicatif::{ProgressBar, ProgressStyle};
+use rodyn::sim::contact::ContactReport;
 use rodyn::space::VectorOps;
 use rodyn::spatial::Force;
 use rodyn::Data;
@@ -14,8 +15,13 @@ use rodyn_scenarios::{muscle_robot, two_link_muscles};
 use std::path::Path;
 
 /// Runs `config`, writes `<scenario>.csv`, `<scenario>.svg` and
-/// `<scenario>.gif` into `out`, and prints a summary.
-pub fn run_command(config: &RunConfig, out: &Path) -> Result<(), Box<dyn std::error::Error>> {
+/// `<scenario>.gif` into `out` (and the viewer page to `html`, when
+/// asked), and prints a summary.
+pub fn run_command(
+    config: &RunConfig,
+    out: &Path,
+    html: Option<&Path>,
+) -> Result<(), Box<dyn std::error::Error>> {
     std::fs::create_dir_all(out)?;
     let steps = (config.duration / config.dt).round() as u64;
     let bar = ProgressBar::new(steps);
@@ -183,6 +189,10 @@ pub fn run_command(config: &RunConfig, out: &Path) -> Result<(), Box<dyn std::er
         plot_path.display(),
         gif.display()
     );
+    if let Some(page) = html {
+        crate::viewer::write_page(config.scenario, &trajectory, page)?;
+        println!("wrote {}", page.display());
+    }
     match &trajectory.failure {
         // The files hold the run up to the failure, for a look at it.
         Some(f) => {
@@ -217,11 +227,26 @@ fn trunk_height(q: &[f64]) -> f64 {
 /// Normal force of each foot at each sample, recomputed in f64 from the
 /// recorded state with the scenario's ground.
 pub fn foot_forces(trajectory: &Trajectory) -> Result<Vec<Curve>, Box<dyn std::error::Error>> {
+    let mut out = vec![Vec::new(); LEGS];
+    for (t, reports) in trajectory.t.iter().zip(foot_contacts(trajectory)?) {
+        for (leg, report) in reports.iter().enumerate() {
+            out[leg].push((*t, report.force.z));
+        }
+    }
+    Ok(out)
+}
+
+/// Each foot's contact (point and ground force, world frame) at each
+/// sample, recomputed in f64 from the recorded state with the scenario's
+/// ground.
+pub fn foot_contacts(
+    trajectory: &Trajectory,
+) -> Result<Vec<[ContactReport<f64>; LEGS]>, Box<dyn std::error::Error>> {
     let model = quadruped::model::<f64>()?;
     let mut loads = QuadrupedLoads::<f64>::standing();
     let mut data = Data::new();
-    let mut out = vec![Vec::new(); LEGS];
-    for ((t, q), v) in trajectory.t.iter().zip(&trajectory.q).zip(&trajectory.v) {
+    let mut out = Vec::with_capacity(trajectory.t.len());
+    for (q, v) in trajectory.q.iter().zip(&trajectory.v) {
         // An f32 run's quaternion, widened to f64, is unit only to f32
         // precision: project it before the f64 checks see it.
         let mut q: [f64; quadruped::NQ] = q.as_slice().try_into()?;
@@ -237,9 +262,7 @@ pub fn foot_forces(trajectory: &Trajectory) -> Result<Vec<Curve>, Box<dyn std::e
             &mut f_ext,
             Some(&mut loads.reports),
         )?;
-        for (leg, report) in loads.reports.iter().enumerate() {
-            out[leg].push((*t, report.force.z));
-        }
+        out.push(loads.reports);
     }
     Ok(out)
 }
