@@ -1,20 +1,25 @@
 // rodyn viewer: draws the scene JSON above with three.js (the global THREE).
 // The producer computed every pose of a trajectory; this script composes
 // joint transforms along the parent array only for the joint sliders.
-// The URL fragment may say #t=1.5 (time, paused), #q=a,b,… (sliders) and
-// #show=frames,com,… or #show=all (layers). The body's data-status says
-// "ready" once a frame is drawn, or "error: …".
+// The URL fragment may say t=1.5 (time, paused), q=a,b,… (sliders),
+// show=frames,com,… or show=all, and hide=robot,… (layers), joined by &.
+// The body's data-status says "ready" once a frame is drawn, or "error: …".
 'use strict';
 
-const S = JSON.parse(document.getElementById('scene').textContent);
 const $ = (id) => document.getElementById(id);
+// A page inside a frame (a test harness) also tells its parent.
+const report = (status) => {
+  document.body.dataset.status = status;
+  if (window.parent !== window) window.parent.postMessage(status, '*');
+};
 const fail = (message) => {
-  document.body.dataset.status = 'error: ' + message;
+  report('error: ' + message);
   $('status').textContent = message;
 };
 window.addEventListener('error', (e) => fail(e.message));
 const consoleError = console.error;
 console.error = (...args) => { fail(args.join(' ')); consoleError(...args); };
+const S = JSON.parse($('scene').textContent);
 
 const V3 = (a) => new THREE.Vector3(a[0], a[1], a[2]);
 // A pose as the producer writes it: rotation rows, then translation.
@@ -49,9 +54,10 @@ const frames = S.bodies.map(() => {
 const holder = (body) => (body === null ? scene : frames[body]);
 const layers = { robot: [], axes: [], frames: [], com: [], inertia: [], endpoints: [], contacts: [] };
 const put = (layer, parent, object) => { parent.add(object); layers[layer].push(object); return object; };
-const reach = S.bodies.reduce((s, b) => s + V3(b.placement.slice(9)).length(), 0)
-  + S.endpoints.reduce((s, e) => Math.max(s, V3(e.position).length()), 0);
-const size = Math.max(reach, 0.2);
+// The model's size: its longest chain of joint offsets, plus an endpoint.
+const reach = [];
+S.bodies.forEach((b, i) => { reach[i] = (b.parent === null ? 0 : reach[b.parent]) + V3(b.placement.slice(9)).length(); });
+const size = Math.max(0.2, Math.max(0, ...reach) + S.endpoints.reduce((s, e) => Math.max(s, V3(e.position).length()), 0));
 const material = (c, fallback = 0x9aa3b0) => new THREE.MeshStandardMaterial({
   color: c ? new THREE.Color(c[0], c[1], c[2]) : fallback, opacity: c ? c[3] : 1,
   transparent: !!c && c[3] < 1, roughness: 0.6, metalness: 0.1,
@@ -166,16 +172,19 @@ const showContacts = (flat) => contactMarks.forEach((mark, k) => {
 
 // Layer switches.
 const shown = new Set((fragment.get('show') || '').split(','));
+const hidden = new Set((fragment.get('hide') || '').split(','));
+const applyLayers = []; // after the camera is placed, which looks at every layer
 for (const [name, objects] of Object.entries(layers)) {
   if (objects.length === 0) continue;
   const label = document.createElement('label');
   const box = document.createElement('input');
   box.type = 'checkbox';
   box.id = 'show-' + name;
-  box.checked = ['robot', 'endpoints', 'contacts'].includes(name) || shown.has(name) || shown.has('all');
+  const byDefault = ['robot', 'contacts'].concat(S.visuals.length ? [] : ['endpoints']);
+  box.checked = (byDefault.includes(name) || shown.has(name) || shown.has('all')) && !hidden.has(name);
   const apply = () => { visible[name] = box.checked; objects.forEach((o) => { o.visible = box.checked; }); };
   box.onchange = () => { apply(); if (T) placeAt(time); };
-  apply();
+  applyLayers.push(apply);
   label.append(box, ' ' + { robot: 'robot', axes: 'joint axes', frames: 'body frames', com: 'centres of mass', inertia: 'inertia ellipsoids', endpoints: 'endpoints', contacts: 'contact forces' }[name]);
   $('layers').append(label);
 }
@@ -311,6 +320,7 @@ const distance = (sphere.radius / Math.sin(halfAngle)) * 1.1;
 camera.position.copy(sphere.center).addScaledVector(side.normalize(), distance);
 controls.target.copy(sphere.center);
 controls.update();
+applyLayers.forEach((apply) => apply());
 if (T) {
   scale = sphere.radius;
   follow = S.bodies.length > 0 && S.bodies[0].nq > 1;
@@ -333,7 +343,7 @@ function frame(now) {
   }
   if (outline) outline.update();
   renderer.render(scene, camera);
-  if (document.body.dataset.status === 'loading') document.body.dataset.status = 'ready';
+  if (document.body.dataset.status === 'loading') report('ready');
   requestAnimationFrame(frame);
 }
 frame(performance.now());
