@@ -123,7 +123,7 @@ const dot = (r, colour) => new THREE.Mesh(new THREE.SphereGeometry(r, 16, 8), ma
 S.bodies.forEach((b, i) => {
   const f = frames[i];
   if (b.joint.axis) {
-    put('axes', f, new THREE.ArrowHelper(V3(b.joint.axis), new THREE.Vector3(), 0.25 * size, 0xff6f00, 0.05 * size, 0.03 * size));
+    put('axes', f, new THREE.ArrowHelper(V3(b.joint.axis), new THREE.Vector3(), 0.15 * size, 0xff6f00, 0.03 * size, 0.018 * size));
   }
   put('frames', f, new THREE.AxesHelper(0.12 * size));
   if (b.mass > 0) put('com', f, dot(radius * 1.2, 0x111111)).position.copy(V3(b.com));
