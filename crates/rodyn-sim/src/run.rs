@@ -190,7 +190,7 @@ pub fn run_command(
         gif.display()
     );
     if let Some(page) = html {
-        crate::viewer::write_page(config.scenario, &trajectory, page)?;
+        crate::viewer::write_page(config, &trajectory, page)?;
         println!("wrote {}", page.display());
     }
     match &trajectory.failure {

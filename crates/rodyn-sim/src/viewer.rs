@@ -4,7 +4,7 @@
 //! forward kinematics.
 
 use crate::run::foot_contacts;
-use crate::scenario::Scenario;
+use crate::scenario::{IntegratorKind, RunConfig, Scenario};
 use crate::trajectory::Trajectory;
 use rodyn_model::runtime::RuntimeModel;
 use rodyn_model::{view, visual, LoadOptions};
@@ -23,18 +23,22 @@ fn model_file(scenario: Scenario) -> PathBuf {
         .join(file)
 }
 
-/// Writes the page of `trajectory`, a run of `scenario`, to `path`.
+/// Writes the page of `trajectory`, a run of `config`, to `path`. The
+/// contacts are the compliant ground's, recomputed from the recorded
+/// state; a rigid-contact run's impulses are not recorded, so its page
+/// has none.
 pub fn write_page(
-    scenario: Scenario,
+    config: &RunConfig,
     trajectory: &Trajectory,
     path: &Path,
 ) -> Result<(), Box<dyn std::error::Error>> {
+    let scenario = config.scenario;
     let file = model_file(scenario);
     let description = rodyn_model::load(&file, LoadOptions::default())
         .map_err(|d| format!("the scenario's model: {d}"))?;
     let visuals = visual::read_visuals(&description, &[])?;
     let model = RuntimeModel::new(description)?;
-    let contacts = if scenario.has_feet() {
+    let contacts = if scenario.has_feet() && config.integrator != IntegratorKind::RigidContact {
         foot_contacts(trajectory)?
             .iter()
             .map(|feet| {
