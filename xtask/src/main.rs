@@ -217,14 +217,16 @@ fn lint() -> Result<()> {
         &[("RUSTDOCFLAGS", "-D warnings")],
     )?;
     no_float_features_is_one_error()?;
-    // Together, so that rodyn-model's dependency on the unpublished core
-    // resolves to the core packaged beside it.
+    // Together, so that rodyn-model's dependencies on the unpublished core
+    // and viewer resolve to the crates packaged beside it.
     shell::cargo(&[
         "package",
         "-p",
         "rodyn",
         "-p",
         "rodyn-model",
+        "-p",
+        "rodyn-viewer",
         "--allow-dirty",
     ])?;
     println!(

@@ -35,6 +35,8 @@ pub fn run_command(
     let csv = out.join(format!("{name}.csv"));
     let plot_path = out.join(format!("{name}.svg"));
     let gif = out.join(format!("{name}.gif"));
+    // The quadruped's foot forces (N), beside its torso position (m).
+    let forces_path = out.join(format!("{name}-forces.svg"));
     let frame = 0.04;
     match config.scenario {
         Scenario::ArmSwing => {
@@ -69,32 +71,48 @@ pub fn run_command(
             }
             trajectory.write_csv(&csv, &names)?;
             let forces = foot_forces(&trajectory)?;
-            let mut series = vec![
-                Series::new("torso x (m)", column(&trajectory, 0), Mark::Line, 0),
+            // Lengths and forces on plots of their own: one unit per axis.
+            let series = vec![
+                Series::new("torso x", column(&trajectory, 0), Mark::Line, 0),
                 Series::new(
-                    "torso z (m)",
+                    "torso z",
                     trajectory
                         .t
                         .iter()
                         .zip(&trajectory.q)
                         .map(|(t, q)| (*t, trunk_height(q)))
                         .collect(),
-                    Mark::Line,
+                    Mark::ThinLine,
                     1,
                 ),
             ];
-            for (leg, f) in forces.iter().enumerate() {
-                let scaled = f.iter().map(|&(t, n)| (t, n / 100.0)).collect();
-                series.push(Series::new(
-                    format!("{} normal force / 100 N", LEG_NAMES[leg]),
-                    scaled,
-                    Mark::ThinLine,
-                    2 + leg,
-                ));
-            }
             plot(
                 &plot_path,
-                &figure(&format!("quadruped: {name}"), "m, N/100"),
+                &figure(
+                    &format!("quadruped: {name}, torso position"),
+                    "position (m)",
+                ),
+                &series,
+            )?;
+            let marks = [Mark::Line, Mark::ThinLine, Mark::LinePoints, Mark::Points];
+            let series = forces
+                .into_iter()
+                .enumerate()
+                .map(|(leg, f)| {
+                    Series::new(
+                        format!("{} foot", LEG_NAMES[leg]),
+                        f,
+                        marks[leg % marks.len()],
+                        2 + leg,
+                    )
+                })
+                .collect::<Vec<_>>();
+            plot(
+                &forces_path,
+                &figure(
+                    &format!("quadruped: {name}, ground's normal force on each foot"),
+                    "normal force (N)",
+                ),
                 &series,
             )?;
             let model = quadruped::model::<f64>()?;
@@ -189,6 +207,9 @@ pub fn run_command(
         plot_path.display(),
         gif.display()
     );
+    if forces_path.exists() {
+        println!("wrote {}", forces_path.display());
+    }
     if let Some(page) = html {
         crate::viewer::write_page(config, &trajectory, page)?;
         println!("wrote {}", page.display());
