@@ -6,6 +6,7 @@
 //! | `run [example]`          | builds the firmware, runs `example` (default: the arm controller) in QEMU, prints the decoded defmt log |
 //! | `test`                   | host tests (the core's and `rodyn-host-tests`' also in the in-order tuning profile), the no_std core for thumbv7em, every firmware example in QEMU against its expected output, sizes, panic sites, stack bounds, lint |
 //! | `lint`                   | rustfmt, clippy and rustdoc, warnings as errors, host and firmware; the core without float features stops at one error; `cargo package` of every crate, the published libraries built from their packages; their public API against `xtask/public-api/` |
+//! | `viewer`                 | the viewer's pages in headless Chromium (also a step of `test`): every model's page draws without an error, the Panda against its reference image, the trot moves when scrubbed |
 //! | `costs`                  | runs the cost probe, measures sizes and bounds the stack, rewrites the tables in `docs/sections/firmware.md` and `firmware/expected/sizes.txt` |
 //! | `stack [image] [words]`  | worst-case stack per image and per cost-table row from a static call graph, checked against the painted figures (`--check-frames`: the frame reading against LLVM's `-Z emit-stack-sizes`) |
 //! | `panic-sites [image]`    | the panic call sites of one image (default: all) by source, function and line |
@@ -32,13 +33,14 @@ mod public_api;
 mod setup;
 mod shell;
 mod stack_bound;
+mod viewer;
 
 use anyhow::{bail, Result};
 use std::process::ExitCode;
 use std::time::Instant;
 
 const USAGE: &str =
-    "usage: cargo xtask <run [example] | test | lint | costs | stack [image [words]] | stack --frames <image> | stack --check-frames | panic-sites [image] | public-api [--bless] | bless | profile [model] [algorithm] | host-profile <algorithm> <model> [--pinocchio]>";
+    "usage: cargo xtask <run [example] | test | lint | costs | stack [image [words]] | stack --frames <image> | stack --check-frames | panic-sites [image] | viewer | public-api [--bless] | bless | profile [model] [algorithm] | host-profile <algorithm> <model> [--pinocchio]>";
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -47,6 +49,7 @@ fn main() -> ExitCode {
         Some("test") => test(),
         Some("lint") => lint(),
         Some("costs") => costs::regenerate(),
+        Some("viewer") => viewer::check(),
         Some("bless") => bless(),
         Some("public-api") => public_api::run(args.get(1).map(String::as_str) == Some("--bless")),
         Some("stack") => stack_bound::run(&args[1..]),
@@ -136,6 +139,7 @@ fn test() -> Result<()> {
     costs::check_goals_of_last_run()?;
     panic_sites::check()?;
     stack_bound::check()?;
+    viewer::check()?;
     lint()?;
 
     if !failures.is_empty() {
@@ -258,9 +262,11 @@ fn packages() -> Result<()> {
 }
 
 /// The published libraries, in dependency order, built from their
-/// packages by `lint`. The fourth published crate is the `rodyn-sim`
-/// tool; every other member has `publish = false`.
-const VERIFIED_FROM_PACKAGE: [&str; 3] = ["rodyn", "rodyn-model", "rodyn-scenarios"];
+/// packages by `lint`. The other published crates are the `rodyn-sim`
+/// tool and `rodyn-cli`, its argument types; every other member has
+/// `publish = false`.
+const VERIFIED_FROM_PACKAGE: [&str; 4] =
+    ["rodyn", "rodyn-viewer", "rodyn-model", "rodyn-scenarios"];
 
 /// Building the core with neither `std` nor `libm` must stop at the one
 /// `compile_error!` naming both features, not bury it in type errors.

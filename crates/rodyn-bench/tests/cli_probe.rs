@@ -4,12 +4,13 @@
 //! binaries' help shows; a new one fails `every_argument_is_probed`.
 
 use rodyn_cli::probe::{
-    assert_listed, assert_refused, assert_refuses_hostile_values, run, NumericOption, HOSTILE,
+    assert_listed, assert_refused, assert_refuses_hostile_values, example, run, NumericOption,
+    HOSTILE,
 };
 use std::path::Path;
 
 /// Each binary, its numeric arguments and its others.
-const BINARIES: [(&str, &str, &[&str], &[&str]); 6] = [
+const BINARIES: [(&str, &str, &[&str], &[&str]); 5] = [
     (
         "compare",
         env!("CARGO_BIN_EXE_compare"),
@@ -35,12 +36,6 @@ const BINARIES: [(&str, &str, &[&str], &[&str]); 6] = [
         &[],
     ),
     (
-        "contacts_timing",
-        env!("CARGO_BIN_EXE_contacts_timing"),
-        &["--ms"],
-        &[],
-    ),
-    (
         "profile",
         env!("CARGO_BIN_EXE_profile"),
         &["[CALLS]"],
@@ -61,6 +56,25 @@ fn every_argument_is_probed() {
         assert!(help.status.success(), "{name}: {}", help.stderr);
         assert_listed(&help.stdout, numeric, other);
     }
+}
+
+/// The contact benchmark, an example of this crate (its robots come from
+/// the unpublished test fixtures, a dev-dependency).
+#[test]
+fn the_contact_benchmark_example_refuses_hostile_values() {
+    let exe = example("rodyn-bench", "contacts_timing");
+    let help = run(&exe, &["--help"]);
+    assert!(help.status.success(), "{}", help.stderr);
+    assert_listed(&help.stdout, &["--ms"], &[]);
+    assert_refuses_hostile_values(
+        &exe,
+        &NumericOption {
+            option: "--ms",
+            before: &[],
+            after: &[],
+            accepts: &[],
+        },
+    );
 }
 
 #[test]

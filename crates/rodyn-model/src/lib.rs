@@ -19,7 +19,9 @@
 //! build with `file:line:column: error: sentence`.
 //!
 //! On a host, [`runtime::RuntimeModel`] builds the same model at run time for
-//! the `rodyn-model tree` and `rodyn-model render` commands.
+//! the `rodyn-model tree`, `rodyn-model render` and `rodyn-model view`
+//! commands; [`view`] turns it, with the URDF's [`visual`] geometry, into a
+//! self-contained HTML page.
 #![warn(missing_docs)]
 
 pub mod build;
@@ -35,6 +37,8 @@ pub mod rodyn_file;
 pub mod runtime;
 pub mod tree;
 pub mod urdf;
+pub mod view;
+pub mod visual;
 
 pub use description::ModelDescription;
 pub use diagnostic::{Diagnostic, Location, Severity, WarningKind, WarningKinds};

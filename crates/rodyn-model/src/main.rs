@@ -8,12 +8,15 @@
 //! (comma-separated kinds of warning, such as `limit,geometry`, or `all`).
 //! rodyn-model tree   <file> [--floating-base] [--strict]                   bodies, joints, endpoints, drives
 //! rodyn-model render <file> [--q a,b,...] [--view xy|xz|yz|iso] [-o out.svg]   stick figure
+//! rodyn-model view   <file> [--q a,b,...] [--package-path DIR]... [-o robot.html]   3-D viewer page
 //! ```
 
 use rodyn_model::names::module_name;
 use rodyn_model::render::{render_svg, View};
 use rodyn_model::runtime::RuntimeModel;
 use rodyn_model::tree::render_tree;
+use rodyn_model::view;
+use rodyn_model::visual::read_visuals;
 use rodyn_model::{build::generate_source, LoadOptions, WarningKinds};
 use std::io::Write;
 use std::path::PathBuf;
@@ -26,6 +29,8 @@ const USAGE: &str = "usage:
   rodyn-model render <file> [--floating-base] [--strict] [--q <a,b,...>] [--view <xy|xz|yz|iso>] [--width <PX>] [-o <out.svg>]
                                                                draw a stick figure at q (default: zeros; planar models view xy, others iso)
                                                                --width from 16 to 10000 px (default 480); each of q finite, at most 1e6 in size
+  rodyn-model view  <file> [--floating-base] [--q <a,b,...>] [--package-path <DIR>]... [-o <robot.html>]
+                                                               write a 3-D viewer as one HTML file (meshes from the URDF; package://NAME/ found as DIR/NAME)
 options for every command: --round-quarter-turns, --silence <KINDS> (comma-separated kinds of warning, or all: limit, dynamics, mimic, geometry, transmission, gazebo, calibration, unknown-element, unnamed-robot, fixed-root-inertia, massless-tensor, link-tensor, body-tensor)";
 
 /// The picture's width (px) unless `--width` says otherwise, and its bounds.
@@ -59,9 +64,10 @@ fn run(args: &[String]) -> Result<(), String> {
     let mut view = None;
     let mut output = None;
     let mut width = DEFAULT_WIDTH;
-    // Options that only one command reads, as given: refused elsewhere
-    // rather than silently ignored.
-    let mut render_only: Vec<&str> = Vec::new();
+    // Options that only some commands read, as given, with those commands:
+    // refused elsewhere rather than silently ignored.
+    let mut command_only: Vec<(&str, &[&str])> = Vec::new();
+    let mut package_path: Vec<PathBuf> = Vec::new();
     let mut it = rest.iter();
     while let Some(arg) = it.next() {
         match arg.as_str() {
@@ -94,7 +100,7 @@ fn run(args: &[String]) -> Result<(), String> {
                     .map(coordinate)
                     .collect::<Result<_, _>>()
                     .map_err(|e| format!("--q: {e}"))?;
-                render_only.push("--q");
+                command_only.push(("--q", &["render", "view"]));
             }
             "--view" => {
                 let v = it.next().ok_or("--view needs xy, xz, yz or iso")?;
@@ -102,16 +108,23 @@ fn run(args: &[String]) -> Result<(), String> {
                     View::parse(v)
                         .ok_or(format!("--view: unknown view `{v}`; use xy, xz, yz or iso"))?,
                 );
-                render_only.push("--view");
+                command_only.push(("--view", &["render"]));
             }
             "--width" => {
                 let w = it.next().ok_or("--width needs a number of pixels")?;
                 width = pixels(w).map_err(|e| format!("--width: {e}"))?;
-                render_only.push("--width");
+                command_only.push(("--width", &["render"]));
+            }
+            "--package-path" => {
+                package_path.push(PathBuf::from(
+                    it.next()
+                        .ok_or("--package-path needs a folder that holds packages")?,
+                ));
+                command_only.push(("--package-path", &["view"]));
             }
             "-o" | "--output" => {
                 output = Some(PathBuf::from(it.next().ok_or("-o needs a file name")?));
-                render_only.push("-o");
+                command_only.push(("-o", &["render", "view"]));
             }
             other if other.starts_with('-') => {
                 return Err(format!("unknown option {other}\n{USAGE}"))
@@ -128,12 +141,14 @@ fn run(args: &[String]) -> Result<(), String> {
         }
     }
     let file = file.ok_or(USAGE)?;
-    if command != "render" {
-        if let Some(option) = render_only.first() {
-            return Err(format!(
-                "{option} applies to `render` only, not to `{command}`"
-            ));
-        }
+    if let Some((option, commands)) = command_only
+        .iter()
+        .find(|(_, commands)| !commands.contains(&command.as_str()))
+    {
+        return Err(format!(
+            "{option} applies to `{}` only, not to `{command}`",
+            commands.join("` and `")
+        ));
     }
     if command != "rust" && module.is_some() {
         return Err(format!(
@@ -193,6 +208,28 @@ fn run(args: &[String]) -> Result<(), String> {
                 }
                 None => emit(&svg)?,
             }
+            Ok(())
+        }
+        "view" => {
+            let model = rodyn_model::load(&file, options).map_err(|d| d.to_string())?;
+            if !q.is_empty() && q.len() != model.nq() {
+                return Err(format!(
+                    "--q has {} numbers but the model has nq = {}",
+                    q.len(),
+                    model.nq()
+                ));
+            }
+            let visuals = read_visuals(&model, &package_path).map_err(|d| d.to_string())?;
+            for w in &visuals.warnings {
+                eprintln!("{w}");
+            }
+            let runtime = RuntimeModel::new(model).map_err(|d| d.to_string())?;
+            let html = rodyn_viewer::write_html(&view::scene(&runtime, visuals, &q))
+                .map_err(|e| format!("cannot write the page: {e}"))?;
+            let path = output
+                .unwrap_or_else(|| PathBuf::from(format!("{}.html", runtime.description.name)));
+            std::fs::write(&path, html).map_err(|e| format!("{}: {e}", path.display()))?;
+            println!("wrote {}", path.display());
             Ok(())
         }
         _ => Err(format!("unknown command `{command}`\n{USAGE}")),

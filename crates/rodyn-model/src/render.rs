@@ -153,6 +153,7 @@ pub fn render_svg(
             stroke * 0.6
         );
     }
+    draw_axes_and_scale(&mut svg, view, span, scale, stroke, &px, (x0, y0, margin));
     for (e, p) in d.endpoints.iter().zip(&endpoints) {
         let (x, y) = px(view.project(p));
         let colour = if d
@@ -173,4 +174,99 @@ pub fn render_svg(
     }
     let _ = writeln!(svg, "</svg>");
     Ok(svg)
+}
+
+/// The length of the scale bar, m: 1, 2 or 5 times a power of ten, about a
+/// fifth of the picture's `span` (m).
+#[must_use]
+pub fn scale_bar_length(span: f64) -> f64 {
+    let target = 0.2 * span;
+    let power = 10f64.powf(target.log10().floor());
+    [5.0, 2.0, 1.0]
+        .into_iter()
+        .map(|k| k * power)
+        .find(|&l| l <= target)
+        .unwrap_or(power)
+}
+
+/// The world axes at the origin (x red, y green, z blue, as long as the
+/// scale bar, each labelled; an axis seen end-on is left out) and a scale
+/// bar in the lower left corner labelled in metres.
+fn draw_axes_and_scale(
+    svg: &mut String,
+    view: View,
+    span: f64,
+    scale: f64,
+    stroke: f64,
+    px: &dyn Fn((f64, f64)) -> (f64, f64),
+    (x0, y0, margin): (f64, f64, f64),
+) {
+    let length = scale_bar_length(span);
+    let origin = px(view.project(&Vec3::ZERO));
+    for (axis, name, colour) in [
+        (Vec3::new(length, 0.0, 0.0), "x", "#d62728"),
+        (Vec3::new(0.0, length, 0.0), "y", "#2ca02c"),
+        (Vec3::new(0.0, 0.0, length), "z", "#1f77b4"),
+    ] {
+        let tip = px(view.project(&axis));
+        if (tip.0 - origin.0).hypot(tip.1 - origin.1) < 2.0 {
+            continue;
+        }
+        let _ = writeln!(
+            svg,
+            r#"<line x1="{:.1}" y1="{:.1}" x2="{:.1}" y2="{:.1}" stroke="{colour}" stroke-width="{:.1}"/>"#,
+            origin.0,
+            origin.1,
+            tip.0,
+            tip.1,
+            stroke * 0.6
+        );
+        let _ = writeln!(
+            svg,
+            r#"<text x="{:.1}" y="{:.1}" font-family="sans-serif" font-size="12" fill="{colour}">{name}</text>"#,
+            tip.0 + 3.0,
+            tip.1 - 3.0
+        );
+    }
+    // The bar sits half a margin in from the lower left corner.
+    let (bx, by) = px((x0 - 0.5 * margin, y0 - 0.5 * margin));
+    let bar = length * scale;
+    let label = if length >= 1.0 {
+        format!("{length} m")
+    } else {
+        format!("{} mm", (length * 1000.0).round())
+    };
+    let _ = writeln!(
+        svg,
+        r##"<path d="M {bx:.1} {:.1} V {by:.1} H {:.1} V {:.1}" fill="none" stroke="#333" stroke-width="1.5"/>"##,
+        by - 4.0,
+        bx + bar,
+        by - 4.0
+    );
+    let _ = writeln!(
+        svg,
+        r##"<text x="{:.1}" y="{:.1}" font-family="sans-serif" font-size="12" fill="#333" text-anchor="middle">{label}</text>"##,
+        bx + 0.5 * bar,
+        by - 6.0
+    );
+}
+
+#[cfg(test)]
+mod tests {
+    use super::scale_bar_length;
+
+    #[test]
+    fn the_scale_bar_is_a_round_fifth_of_the_picture() {
+        for (span, want) in [
+            (1.0, 0.2),
+            (1.2, 0.2),
+            (0.3, 0.05),
+            (2.6, 0.5),
+            (6.0, 1.0),
+            (0.012, 0.002),
+        ] {
+            let got = scale_bar_length(span);
+            assert!((got - want).abs() < 1e-12 * want, "span {span}: {got}");
+        }
+    }
 }

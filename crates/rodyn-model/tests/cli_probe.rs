@@ -29,7 +29,7 @@ fn scratch(name: &str) -> PathBuf {
 }
 
 const NUMERIC: [&str; 2] = ["--width", "--q"];
-const OTHER: [&str; 4] = ["--module", "--view", "-o", "--silence"];
+const OTHER: [&str; 5] = ["--module", "--view", "-o", "--silence", "--package-path"];
 
 #[test]
 fn every_option_is_probed() {
@@ -102,7 +102,15 @@ fn other_options_refuse_bad_values_outputs_and_inputs() {
         &["check", &pendulum, "--silence", "nonsense"],
         "--silence",
     );
-    for option in ["--module", "--view", "-o", "--silence", "--q", "--width"] {
+    for option in [
+        "--module",
+        "--view",
+        "-o",
+        "--silence",
+        "--q",
+        "--width",
+        "--package-path",
+    ] {
         // The value missing.
         assert_refused(exe(), &["render", &pendulum, option], option);
     }
@@ -119,6 +127,11 @@ fn other_options_refuse_bad_values_outputs_and_inputs() {
     // An option of another command is refused, not ignored.
     assert_refused(exe(), &["check", &pendulum, "--module", "m"], "--module");
     assert_refused(exe(), &["tree", &pendulum, "--view", "xy"], "--view");
+    assert_refused(
+        exe(),
+        &["render", &pendulum, "--package-path", "."],
+        "--package-path",
+    );
 
     let dir = scratch("files");
     let plain = dir.join("a-file");

@@ -140,7 +140,7 @@ fn chain_length(out: &Path) -> Res {
         &fig(
             "f32 against f64: joint-acceleration error with chain length",
             "links (1 m, 1 kg chain)",
-            "relative error of q̈",
+            "relative error of the joint accelerations",
             Scale::Linear,
             Scale::Log,
         ),
@@ -345,7 +345,7 @@ fn massless(out: &Path) -> Res {
         &fig(
             "A vanishing tip link: error growth, then rodyn's error (massless = 1e-50 on the axis)",
             "tip mass (kg)",
-            "relative error of q̈ (floored at 1e-17)",
+            "relative error of the joint accelerations (floored at 1e-17)",
             Scale::Log,
             Scale::Log,
         ),

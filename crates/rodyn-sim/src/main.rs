@@ -3,6 +3,7 @@
 //!
 //! ```text
 //! rodyn-sim run quadruped-trot --duration 5 --dt 1e-3 --method aba --integrator rk4 --scalar f64 -o out/
+//! rodyn-sim run quadruped-trot --html out/trot.html
 //! rodyn-sim chart -o docs/img/sim
 //! rodyn-sim failures all -o docs/img/sim
 //! ```
@@ -16,9 +17,10 @@ mod progress;
 mod run;
 mod scenario;
 mod trajectory;
+mod viewer;
 
 use clap::{Parser, Subcommand};
-use rodyn_cli::{shown, step_count, writable_dir, PositiveFinite};
+use rodyn_cli::{shown, step_count, writable_dir, writable_file, PositiveFinite};
 use scenario::{IntegratorKind, Method, RunConfig, ScalarType, Scenario, MAX_DURATION, MAX_STEPS};
 use std::path::{Path, PathBuf};
 
@@ -61,6 +63,10 @@ enum Command {
         /// Output directory.
         #[arg(short, long, default_value = "out")]
         out: PathBuf,
+        /// Also write the run as a 3-D viewer page (one HTML file that
+        /// opens in any browser, offline).
+        #[arg(long, value_name = "FILE")]
+        html: Option<PathBuf>,
     },
     /// The speed-versus-accuracy chart for the arm, the quadruped and the muscle robot.
     Chart {
@@ -90,6 +96,7 @@ fn main() {
             integrator,
             scalar,
             out,
+            html,
         } => {
             let config = RunConfig {
                 scenario,
@@ -100,7 +107,8 @@ fn main() {
                 integrator,
                 sample_interval: 0.01,
             };
-            check_run(&config, &out).and_then(|()| run::run_command(&config, &out))
+            check_run(&config, &out, html.as_deref())
+                .and_then(|()| run::run_command(&config, &out, html.as_deref()))
         }
         Command::Chart { out } => check_output(&out).and_then(|()| chart::chart_command(&out)),
         Command::Failures { experiment, out } => {
@@ -114,8 +122,13 @@ fn main() {
 }
 
 /// Refuses, before any work, a run that would not end in reasonable time
-/// or would take no step, and an output directory that cannot be written.
-fn check_run(config: &RunConfig, out: &Path) -> Result<(), Box<dyn std::error::Error>> {
+/// or would take no step, and an output directory or page that cannot be
+/// written.
+fn check_run(
+    config: &RunConfig,
+    out: &Path,
+    html: Option<&Path>,
+) -> Result<(), Box<dyn std::error::Error>> {
     if config.duration > MAX_DURATION {
         return Err(format!(
             "--duration {} s is above the limit of {MAX_DURATION} s of simulated time",
@@ -124,6 +137,9 @@ fn check_run(config: &RunConfig, out: &Path) -> Result<(), Box<dyn std::error::E
         .into());
     }
     step_count(config.duration, config.dt, MAX_STEPS, "--duration", "--dt")?;
+    if let Some(page) = html {
+        writable_file(page).map_err(|e| format!("--html: {e}"))?;
+    }
     check_output(out)
 }
 

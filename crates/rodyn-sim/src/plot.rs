@@ -206,10 +206,11 @@ pub fn plot(
         .collect();
     let (x0, x1) = range(data.iter().flatten().map(|p| p.0), figure.x_scale);
     let (y0, y1) = range(data.iter().flatten().map(|p| p.1), figure.y_scale);
-    // Up to SMALL_LEGEND entries the legend sits in the plot's upper right
-    // corner; a longer one would cover data there, so it gets a panel of
-    // its own to the right of the plot.
-    let side_legend = series.len() > SMALL_LEGEND;
+    // Up to SMALL_LEGEND entries the legend sits in a corner of the plot
+    // that holds no data; a longer one, or one that every corner's data
+    // would be under, gets a panel of its own to the right of the plot.
+    let corner = free_corner(series, &data, (x0, x1), (y0, y1));
+    let side_legend = series.len() > SMALL_LEGEND || corner.is_none();
     let width = if side_legend {
         800 + SIDE_LEGEND_WIDTH
     } else {
@@ -285,7 +286,7 @@ pub fn plot(
             .configure_series_labels()
             .background_style(WHITE.mix(0.85))
             .border_style(BLACK.mix(0.3))
-            .position(SeriesLabelPosition::UpperRight)
+            .position(corner.unwrap_or(SeriesLabelPosition::UpperRight))
             .label_font(("sans-serif", 13))
             .draw()?;
     }
@@ -295,6 +296,46 @@ pub fn plot(
 
 /// Most legend entries drawn inside the plot.
 const SMALL_LEGEND: usize = 6;
+
+/// The first corner of the plot (upper right, upper left, lower right,
+/// lower left) where the legend's box would cover no point of `data`
+/// (transformed points, axis ranges `x` and `y`).
+fn free_corner(
+    series: &[Series],
+    data: &[Vec<(f64, f64)>],
+    x: (f64, f64),
+    y: (f64, f64),
+) -> Option<SeriesLabelPosition> {
+    // The box in pixels (13 px text: about 7 px a character, 19 px a
+    // line, the mark and margins) over the plot area's 700 x 420 px.
+    let longest = series.iter().map(|s| s.name.chars().count()).max()?;
+    let width = (50.0 + 7.0 * longest as f64) / 700.0;
+    let height = (16.0 + 19.0 * series.len() as f64) / 420.0;
+    let corners = [
+        (SeriesLabelPosition::UpperRight, true, true),
+        (SeriesLabelPosition::UpperLeft, false, true),
+        (SeriesLabelPosition::LowerRight, true, false),
+        (SeriesLabelPosition::LowerLeft, false, false),
+    ];
+    corners.into_iter().find_map(|(position, right, upper)| {
+        let covered = data.iter().flatten().any(|&(px, py)| {
+            let fx = (px - x.0) / (x.1 - x.0);
+            let fy = (py - y.0) / (y.1 - y.0);
+            let in_x = if right {
+                fx >= 1.0 - width
+            } else {
+                fx <= width
+            };
+            let in_y = if upper {
+                fy >= 1.0 - height
+            } else {
+                fy <= height
+            };
+            in_x && in_y
+        });
+        (!covered).then_some(position)
+    })
+}
 /// Width of the side legend panel (px).
 const SIDE_LEGEND_WIDTH: u32 = 300;
 

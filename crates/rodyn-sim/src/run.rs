@@ -6,6 +6,7 @@ use crate::plot::{plot, Curve, Figure, Mark, Scale, Series};
 use crate::progress::Progress;
 use crate::scenario::{run, RunConfig, Scenario};
 use crate::trajectory::Trajectory;
+use rodyn::sim::contact::ContactReport;
 use rodyn::space::VectorOps;
 use rodyn::spatial::Force;
 use rodyn::Data;
@@ -14,8 +15,13 @@ use rodyn_scenarios::{muscle_robot, two_link_muscles};
 use std::path::Path;
 
 /// Runs `config`, writes `<scenario>.csv`, `<scenario>.svg` and
-/// `<scenario>.gif` into `out`, and prints a summary.
-pub fn run_command(config: &RunConfig, out: &Path) -> Result<(), Box<dyn std::error::Error>> {
+/// `<scenario>.gif` into `out` (and the viewer page to `html`, when
+/// asked), and prints a summary.
+pub fn run_command(
+    config: &RunConfig,
+    out: &Path,
+    html: Option<&Path>,
+) -> Result<(), Box<dyn std::error::Error>> {
     std::fs::create_dir_all(out)?;
     let steps = (config.duration / config.dt).round() as u64;
     let progress = Progress::new(config.scenario.name(), steps);
@@ -25,6 +31,8 @@ pub fn run_command(config: &RunConfig, out: &Path) -> Result<(), Box<dyn std::er
     let csv = out.join(format!("{name}.csv"));
     let plot_path = out.join(format!("{name}.svg"));
     let gif = out.join(format!("{name}.gif"));
+    // The quadruped's foot forces (N), beside its torso position (m).
+    let forces_path = out.join(format!("{name}-forces.svg"));
     let frame = 0.04;
     match config.scenario {
         Scenario::ArmSwing => {
@@ -59,32 +67,48 @@ pub fn run_command(config: &RunConfig, out: &Path) -> Result<(), Box<dyn std::er
             }
             trajectory.write_csv(&csv, &names)?;
             let forces = foot_forces(&trajectory)?;
-            let mut series = vec![
-                Series::new("torso x (m)", column(&trajectory, 0), Mark::Line, 0),
+            // Lengths and forces on plots of their own: one unit per axis.
+            let series = vec![
+                Series::new("torso x", column(&trajectory, 0), Mark::Line, 0),
                 Series::new(
-                    "torso z (m)",
+                    "torso z",
                     trajectory
                         .t
                         .iter()
                         .zip(&trajectory.q)
                         .map(|(t, q)| (*t, trunk_height(q)))
                         .collect(),
-                    Mark::Line,
+                    Mark::ThinLine,
                     1,
                 ),
             ];
-            for (leg, f) in forces.iter().enumerate() {
-                let scaled = f.iter().map(|&(t, n)| (t, n / 100.0)).collect();
-                series.push(Series::new(
-                    format!("{} normal force / 100 N", LEG_NAMES[leg]),
-                    scaled,
-                    Mark::ThinLine,
-                    2 + leg,
-                ));
-            }
             plot(
                 &plot_path,
-                &figure(&format!("quadruped: {name}"), "m, N/100"),
+                &figure(
+                    &format!("quadruped: {name}, torso position"),
+                    "position (m)",
+                ),
+                &series,
+            )?;
+            let marks = [Mark::Line, Mark::ThinLine, Mark::LinePoints, Mark::Points];
+            let series = forces
+                .into_iter()
+                .enumerate()
+                .map(|(leg, f)| {
+                    Series::new(
+                        format!("{} foot", LEG_NAMES[leg]),
+                        f,
+                        marks[leg % marks.len()],
+                        2 + leg,
+                    )
+                })
+                .collect::<Vec<_>>();
+            plot(
+                &forces_path,
+                &figure(
+                    &format!("quadruped: {name}, ground's normal force on each foot"),
+                    "normal force (N)",
+                ),
                 &series,
             )?;
             let model = quadruped::model::<f64>()?;
@@ -179,6 +203,13 @@ pub fn run_command(config: &RunConfig, out: &Path) -> Result<(), Box<dyn std::er
         plot_path.display(),
         gif.display()
     );
+    if forces_path.exists() {
+        println!("wrote {}", forces_path.display());
+    }
+    if let Some(page) = html {
+        crate::viewer::write_page(config, &trajectory, page)?;
+        println!("wrote {}", page.display());
+    }
     match &trajectory.failure {
         // The files hold the run up to the failure, for a look at it.
         Some(f) => {
@@ -213,11 +244,26 @@ fn trunk_height(q: &[f64]) -> f64 {
 /// Normal force of each foot at each sample, recomputed in f64 from the
 /// recorded state with the scenario's ground.
 pub fn foot_forces(trajectory: &Trajectory) -> Result<Vec<Curve>, Box<dyn std::error::Error>> {
+    let mut out = vec![Vec::new(); LEGS];
+    for (t, reports) in trajectory.t.iter().zip(foot_contacts(trajectory)?) {
+        for (leg, report) in reports.iter().enumerate() {
+            out[leg].push((*t, report.force.z));
+        }
+    }
+    Ok(out)
+}
+
+/// Each foot's contact (point and ground force, world frame) at each
+/// sample, recomputed in f64 from the recorded state with the scenario's
+/// ground.
+pub fn foot_contacts(
+    trajectory: &Trajectory,
+) -> Result<Vec<[ContactReport<f64>; LEGS]>, Box<dyn std::error::Error>> {
     let model = quadruped::model::<f64>()?;
     let mut loads = QuadrupedLoads::<f64>::standing();
     let mut data = Data::new();
-    let mut out = vec![Vec::new(); LEGS];
-    for ((t, q), v) in trajectory.t.iter().zip(&trajectory.q).zip(&trajectory.v) {
+    let mut out = Vec::with_capacity(trajectory.t.len());
+    for (q, v) in trajectory.q.iter().zip(&trajectory.v) {
         // An f32 run's quaternion, widened to f64, is unit only to f32
         // precision: project it before the f64 checks see it.
         let mut q: [f64; quadruped::NQ] = q.as_slice().try_into()?;
@@ -233,9 +279,7 @@ pub fn foot_forces(trajectory: &Trajectory) -> Result<Vec<Curve>, Box<dyn std::e
             &mut f_ext,
             Some(&mut loads.reports),
         )?;
-        for (leg, report) in loads.reports.iter().enumerate() {
-            out[leg].push((*t, report.force.z));
-        }
+        out.push(loads.reports);
     }
     Ok(out)
 }

@@ -59,6 +59,7 @@ fn other(subcommand: &str) -> &'static [&'static str] {
             "--integrator",
             "--scalar",
             "--out",
+            "--html",
         ],
         "failures" => &["[EXPERIMENT]", "--out"],
         _ => &["--out"],
@@ -148,6 +149,19 @@ fn other_options_refuse_unknown_choices_and_unwritable_outputs() {
         let outcome = assert_refused(exe(), &args, "--out");
         assert!(outcome.stderr.contains(bad), "{}", outcome.stderr);
     }
+    let good = scratch.path();
+    let args = [
+        "run",
+        "arm-swing",
+        "--duration",
+        "0.01",
+        "-o",
+        good,
+        "--html",
+        bad,
+    ];
+    let outcome = assert_refused(exe(), &args, "--html");
+    assert!(outcome.stderr.contains(bad), "{}", outcome.stderr);
     assert_refused(exe(), &["--no-such-option"], "--no-such-option");
     assert_refused(exe(), &[], "Usage");
 }
