@@ -129,7 +129,9 @@ pub fn cargo_command() -> Command {
 /// a directory inside another comes after it.
 fn path_remaps() -> Vec<(PathBuf, &'static str)> {
     let root = shell::root();
-    let mut remaps = vec![(root.clone(), "rodyn")];
+    // The firmware reaches rodyn's crates through `firmware/repo`, a link
+    // to the root (see firmware/Cargo.toml).
+    let mut remaps = vec![(root.clone(), "rodyn"), (dir().join("repo"), "rodyn")];
     let target = shell::target_dir();
     if !target.starts_with(&root) {
         // Sources generated into OUT_DIR (the compiled model files).
