@@ -103,11 +103,12 @@ pub fn build() -> Result<()> {
 /// images rewritten to fixed names.
 ///
 /// Panic locations (`core::panic::Location`, `file!()`) carry the path of
-/// their source file into flash: for rodyn's crates, which the firmware
-/// reaches by path, and for the registry's, an absolute path that names
-/// the clone's directory and cargo's home. Remapped, the images, their
-/// sizes and the cost tables are the same in every clone. Only that scope
-/// is remapped (`--remap-path-scope=macro`): the debug information keeps the
+/// their source file into flash: for the registry's crates and for files
+/// generated into the target directory, an absolute path that names cargo's
+/// home or the clone's directory. Remapped, the images, their sizes and the
+/// cost tables are the same in every clone (rodyn's own crates are named
+/// relative to `firmware/`, see its `Cargo.toml`). Only that scope is
+/// remapped (`--remap-path-scope=macro`): the debug information keeps the
 /// real paths, for debuggers and `cargo xtask profile`.
 pub fn cargo_command() -> Command {
     let flags: Vec<String> = path_remaps()

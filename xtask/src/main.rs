@@ -30,6 +30,7 @@ mod profile;
 mod setup;
 mod shell;
 mod stack_bound;
+mod template;
 
 use anyhow::{bail, Result};
 use std::process::ExitCode;
@@ -122,6 +123,7 @@ fn test() -> Result<()> {
     costs::check_goals_of_last_run()?;
     panic_sites::check()?;
     stack_bound::check()?;
+    template::check()?;
     lint()?;
 
     if !failures.is_empty() {
