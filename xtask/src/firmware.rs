@@ -96,7 +96,60 @@ pub fn elf_of(name: &str) -> PathBuf {
 
 /// Builds every example in release mode.
 pub fn build() -> Result<()> {
-    shell::cargo_in(dir(), &["build", "--release", "--bins"])
+    shell::run(cargo_command().args(["build", "--release", "--bins"]))
+}
+
+/// Cargo in the firmware directory, with the source paths that reach the
+/// images rewritten to fixed names.
+///
+/// Panic locations (`core::panic::Location`, `file!()`) carry the path of
+/// their source file into flash: for the registry's crates and for files
+/// generated into the target directory, an absolute path that names cargo's
+/// home or the clone's directory. Remapped, the images, their sizes and the
+/// cost tables are the same in every clone (rodyn's own crates are named
+/// relative to `firmware/`, see its `Cargo.toml`). Only that scope is
+/// remapped (`--remap-path-scope=macro`): the debug information keeps the
+/// real paths, for debuggers and `cargo xtask profile`.
+pub fn cargo_command() -> Command {
+    let flags: Vec<String> = path_remaps()
+        .into_iter()
+        .map(|(from, to)| format!("--remap-path-prefix={}={to}", from.display()))
+        .chain(["--remap-path-scope=macro".to_string()])
+        .collect();
+    // `--config` joins these to the rustflags of `firmware/.cargo/config.toml`
+    // (a `RUSTFLAGS` variable would replace them).
+    let list: Vec<String> = flags.iter().map(|f| toml_string(f)).collect();
+    let mut command = shell::cargo_command(&dir());
+    command
+        .arg("--config")
+        .arg(format!("target.{TARGET}.rustflags = [{}]", list.join(", ")));
+    command
+}
+
+/// (directory, fixed name) pairs; rustc applies the last that matches, so
+/// a directory inside another comes after it.
+fn path_remaps() -> Vec<(PathBuf, &'static str)> {
+    let root = shell::root();
+    // The firmware reaches rodyn's crates through `firmware/repo`, a link
+    // to the root (see firmware/Cargo.toml).
+    let mut remaps = vec![(root.clone(), "rodyn"), (dir().join("repo"), "rodyn")];
+    let target = shell::target_dir();
+    if !target.starts_with(&root) {
+        // Sources generated into OUT_DIR (the compiled model files).
+        remaps.push((target, "target"));
+    }
+    let cargo_home = std::env::var_os("CARGO_HOME")
+        .map(PathBuf::from)
+        .or_else(|| std::env::var_os("HOME").map(|home| PathBuf::from(home).join(".cargo")));
+    if let Some(cargo_home) = cargo_home {
+        remaps.push((cargo_home, "cargo-home"));
+    }
+    remaps
+}
+
+/// `text` as a TOML basic string.
+pub fn toml_string(text: &str) -> String {
+    format!("\"{}\"", text.replace('\\', "\\\\").replace('"', "\\\""))
 }
 
 /// How a run ended.

@@ -4,7 +4,7 @@
 //! | command                  | does                                                              |
 //! |--------------------------|-------------------------------------------------------------------|
 //! | `run [example]`          | builds the firmware, runs `example` (default: the arm controller) in QEMU, prints the decoded defmt log |
-//! | `test`                   | host tests (the core's and `rodyn-host-tests`' also in the in-order tuning profile), the no_std core for thumbv7em, every firmware example in QEMU against its expected output, sizes, panic sites, stack bounds, lint |
+//! | `test`                   | host tests (the core's and `rodyn-host-tests`' also in the in-order tuning profile), the no_std core for thumbv7em, every firmware example in QEMU against its expected output, sizes, panic sites, stack bounds, the viewer's pages in Chromium, the firmware template run from a copy outside the repository, lint |
 //! | `lint`                   | rustfmt, clippy and rustdoc, warnings as errors, host and firmware; the core without float features stops at one error; `cargo package` of every crate, the published libraries built from their packages; their public API against `xtask/public-api/` |
 //! | `viewer`                 | the viewer's pages in headless Chromium (also a step of `test`): every model's page draws without an error, the Panda against its reference image, the trot moves when scrubbed |
 //! | `costs`                  | runs the cost probe, measures sizes and bounds the stack, rewrites the tables in `docs/sections/firmware.md` and `firmware/expected/sizes.txt` |
@@ -33,6 +33,7 @@ mod public_api;
 mod setup;
 mod shell;
 mod stack_bound;
+mod template;
 mod viewer;
 
 use anyhow::{bail, Result};
@@ -140,6 +141,7 @@ fn test() -> Result<()> {
     panic_sites::check()?;
     stack_bound::check()?;
     viewer::check()?;
+    template::check()?;
     lint()?;
 
     if !failures.is_empty() {
