@@ -138,6 +138,15 @@ fn check_run(
     }
     step_count(config.duration, config.dt, MAX_STEPS, "--duration", "--dt")?;
     if let Some(page) = html {
+        let folder = page.parent().filter(|f| !f.as_os_str().is_empty());
+        if let Some(folder) = folder {
+            std::fs::create_dir_all(folder).map_err(|e| {
+                format!(
+                    "--html: cannot create the folder of {}: {e}",
+                    page.display()
+                )
+            })?;
+        }
         writable_file(page).map_err(|e| format!("--html: {e}"))?;
     }
     check_output(out)
