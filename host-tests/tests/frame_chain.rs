@@ -4,9 +4,11 @@
 //! `frame_jacobian_time_variation` times v, `frame_velocity`,
 //! `frame_placement`), and the tuned forms against the book's
 //! (`frame_chain::plain`), on every robot of the Pinocchio fixtures: the
-//! UR5, the Panda, Solo12, the branched tree and Talos (the contact
-//! fixture's states), a frame with a random placement on every body, in
-//! each reference frame.
+//! UR5, the Panda, Solo12, the branched tree, and ANYmal, the Unitree G1
+//! and Talos (`fixtures/frame_chain/`), a frame with a random placement on
+//! every body, in each reference frame; and for the last three, the
+//! chain's Jacobians of their feet, hands and grippers against Pinocchio's
+//! `computeFrameJacobian` (1e-12).
 //!
 //! Each error is `‖x − x_ref‖∞ / max(‖x_ref‖∞, 1)` over a Jacobian's
 //! entries, a velocity, `J̇ v` or a placement: at most 1e-14 in f64, and
@@ -20,12 +22,12 @@ use rodyn::algorithm::frame_chain::{
 use rodyn::algorithm::frames::{frame_placement, frame_velocity, ReferenceFrame};
 use rodyn::algorithm::jacobian::{
     frame_jacobian, frame_jacobian_time_variation, joint_jacobians_time_variation, mul_rates,
-    JacobianData,
+    to_linear_first, JacobianData,
 };
 use rodyn::prelude::*;
 use rodyn::{Error, Frame};
-use rodyn_host_tests::contact_fixture::{array, talos};
 use rodyn_host_tests::fixture::Fixture;
+use rodyn_host_tests::frame_chain_fixture::{load, FrameChainFixture, ANYMAL, G1, TALOS};
 use rodyn_host_tests::random::Rng;
 
 const REFERENCES: [ReferenceFrame; 3] = [
@@ -36,6 +38,8 @@ const REFERENCES: [ReferenceFrame; 3] = [
 
 const F64_TOLERANCE: f64 = 1e-14;
 const F32_TOLERANCE: f64 = 5e-6;
+/// rodyn's f64 Jacobians against Pinocchio's (different rounding).
+const PINOCCHIO_TOLERANCE: f64 = 1e-12;
 
 /// The largest error seen, and where.
 #[derive(Default)]
@@ -232,17 +236,6 @@ fn fixture_states<const NB: usize, const NQ: usize, const NV: usize>(
     (model, states)
 }
 
-fn talos_states() -> (Model<f64, 33, 39, 38>, Vec<([f64; 39], [f64; 38])>) {
-    let (model, fixture) = talos();
-    let states = fixture["contact_states"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|s| (array(&s["q"]), array(&s["v"])))
-        .collect();
-    (model, states)
-}
-
 macro_rules! fixture_tests {
     ($(($id:ident, $name:literal, $nb:literal, $nq:literal, $nv:literal)),* $(,)?) => {
         $(
@@ -266,14 +259,69 @@ fixture_tests! {
     (branched_tree, "branched_tree", 13, 13, 13),
 }
 
-#[test]
-fn talos_reduced() {
-    let (model, states) = talos_states();
-    assert!(!states.is_empty());
-    let e64 = compare::<f64, 33, 39, 38>("talos", &model, &states);
-    let e32 = compare::<f32, 33, 39, 38>("talos", &model, &states);
-    assert!(e64 <= F64_TOLERANCE, "talos: f64 {e64:e}");
-    assert!(e32 <= F32_TOLERANCE, "talos: f32 {e32:e}");
+/// The chain's Jacobians of the frames a controller asks for (feet,
+/// hands, grippers) against Pinocchio's `computeFrameJacobian`, in every
+/// reference frame: the worst `‖x − x_ref‖∞ / max(‖x_ref‖∞, 1)`.
+fn against_pinocchio<const NB: usize, const NQ: usize, const NV: usize>(
+    name: &str,
+    fixture: &FrameChainFixture<NB, NQ, NV>,
+) -> f64 {
+    let mut worst = Worst::default();
+    for (s, state) in fixture.states.iter().enumerate() {
+        for (f, (frame_name, frame)) in fixture.frames.iter().enumerate() {
+            for (r, reference) in [
+                ReferenceFrame::Local,
+                ReferenceFrame::World,
+                ReferenceFrame::LocalWorldAligned,
+            ]
+            .into_iter()
+            .enumerate()
+            {
+                let mut j = [Motion::ZERO; NV];
+                let x = frame_jacobian_from_q(&fixture.model, &state.q, frame, reference, &mut j)
+                    .unwrap();
+                let rows: Vec<f64> = to_linear_first(&j).iter().flatten().copied().collect();
+                let at = || format!("{name} state {s} {frame_name} {reference:?}");
+                worst.add(&rows, &state.jacobians[f][r], at);
+                worst.add(&placement(&x), &placement(&state.placements[f]), || {
+                    format!("{name} state {s} {frame_name} placement")
+                });
+            }
+        }
+    }
+    println!(
+        "{name} against Pinocchio: worst {:.2e} at {}",
+        worst.error, worst.at
+    );
+    worst.error
+}
+
+macro_rules! frame_chain_fixture_tests {
+    ($(($id:ident, $name:literal, $sizes:path)),* $(,)?) => {
+        $(
+            #[test]
+            fn $id() {
+                const NB: usize = $sizes.0;
+                const NQ: usize = $sizes.1;
+                const NV: usize = $sizes.2;
+                let fixture = load::<NB, NQ, NV>($name);
+                let states: Vec<_> = fixture.states.iter().map(|s| (s.q, s.v)).collect();
+                assert!(!states.is_empty());
+                let e64 = compare::<f64, NB, NQ, NV>($name, &fixture.model, &states);
+                let e32 = compare::<f32, NB, NQ, NV>($name, &fixture.model, &states);
+                let pin = against_pinocchio($name, &fixture);
+                assert!(e64 <= F64_TOLERANCE, "{}: f64 {e64:e}", $name);
+                assert!(e32 <= F32_TOLERANCE, "{}: f32 {e32:e}", $name);
+                assert!(pin <= PINOCCHIO_TOLERANCE, "{}: against Pinocchio {pin:e}", $name);
+            }
+        )*
+    };
+}
+
+frame_chain_fixture_tests! {
+    (anymal, "anymal", ANYMAL),
+    (g1, "g1", G1),
+    (talos, "talos", TALOS),
 }
 
 /// Bad input is an error that names it, never a panic or a NaN.
