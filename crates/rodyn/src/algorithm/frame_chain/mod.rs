@@ -467,16 +467,14 @@ fn move_columns<S: Scalar, G: FrameSpace>(
             .iter_mut()
             .for_each(|c| *c = o_m_f.act_inv_motion(c)),
         ReferenceFrame::LocalWorldAligned => {
-            let shift = G::translation_only(o_m_f);
-            columns
-                .iter_mut()
-                .for_each(|c| *c = shift.act_inv_motion(c));
+            let p = o_m_f.translation();
+            columns.iter_mut().for_each(|c| *c = G::shift_motion(c, &p));
         }
     }
 }
 
 /// World columns `from` moved into `reference` at the frame `o_m_f`, into
-/// `to` (of the same length).
+/// `to` (the shorter's length).
 #[inline(always)]
 fn express_columns<S: Scalar, G: FrameSpace>(
     o_m_f: &G::Transform<S>,
@@ -484,6 +482,13 @@ fn express_columns<S: Scalar, G: FrameSpace>(
     from: &[G::Motion<S>],
     to: &mut [G::Motion<S>],
 ) {
-    to.copy_from_slice(from);
-    move_columns::<S, G>(o_m_f, reference, to);
+    let pairs = to.iter_mut().zip(from);
+    match reference {
+        ReferenceFrame::World => pairs.for_each(|(t, f)| *t = *f),
+        ReferenceFrame::Local => pairs.for_each(|(t, f)| *t = o_m_f.act_inv_motion(f)),
+        ReferenceFrame::LocalWorldAligned => {
+            let p = o_m_f.translation();
+            pairs.for_each(|(t, f)| *t = G::shift_motion(f, &p));
+        }
+    }
 }
