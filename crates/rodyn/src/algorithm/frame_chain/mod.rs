@@ -79,7 +79,7 @@
 
 pub mod plain;
 
-use super::common::joint_rates;
+use super::common::{joint_configuration, joint_rates, ANGLES_FIRST};
 use super::frames::{zero_motion, FrameSpace, ReferenceFrame};
 use crate::data::Data;
 use crate::error::{Error, Result};
@@ -396,6 +396,11 @@ pub fn chains_jacobians<
 
 /// The world columns `ᵒXᵢ Sₖ` of the bodies on `path` into `jacobian`
 /// (the others zero), and the pose of the path's last body.
+///
+/// Out of order ([`ANGLES_FIRST`]) the path goes two bodies at a time,
+/// their angles' sines and cosines formed together: each is a long chain
+/// of dependent operations, which the other's overlaps (alone, the pose
+/// products beside it do not cover it). In order, one body after another.
 #[inline(always)]
 fn world_columns_along<
     S: Scalar,
@@ -412,19 +417,42 @@ fn world_columns_along<
     *jacobian = [zero_motion::<S, G>(); NV];
     let t = model.topology();
     let mut o_m_i = <G::Transform<S> as RigidTransform<S>>::IDENTITY;
-    for (k, i) in path.iter().enumerate() {
-        let li_m_i = super::common::body_transform(model, i, q);
+    let mut step = |k: usize, i: usize, li_m_i: &G::Transform<S>, o_m_i: &mut G::Transform<S>| {
         // The path's first body hangs on the world.
-        o_m_i = if k == 0 {
-            li_m_i
+        *o_m_i = if k == 0 {
+            *li_m_i
         } else {
-            G::then_joint(&o_m_i, &li_m_i, model.joint(i))
+            G::then_joint(o_m_i, li_m_i, model.joint(i))
         };
         let joint = model.joint(i);
         let (iv, nv) = t.velocity_range(i);
         for (c, column) in jacobian[iv..iv + nv].iter_mut().enumerate() {
-            *column = G::act_subspace_column(&o_m_i, joint, c);
+            *column = G::act_subspace_column(o_m_i, joint, c);
         }
+    };
+    if ANGLES_FIRST {
+        let angle = |b: Option<usize>| {
+            b.and_then(|i| model.joint(i).angle(joint_configuration(model, i, q)))
+                .unwrap_or(S::ZERO)
+        };
+        for k in (0..path.len()).step_by(2) {
+            let pair = [path.get(k), path.get(k + 1)];
+            let (sin, cos) = S::sin_cos_array(&pair.map(angle));
+            for (c, body) in pair.into_iter().enumerate() {
+                let Some(i) = body else { break };
+                let li_m_i = model.joint(i).placed_transform_from_sin_cos(
+                    model.placement(i),
+                    joint_configuration(model, i, q),
+                    (sin[c], cos[c]),
+                );
+                step(k + c, i, &li_m_i, &mut o_m_i);
+            }
+        }
+        return o_m_i;
+    }
+    for (k, i) in path.iter().enumerate() {
+        let li_m_i = super::common::body_transform(model, i, q);
+        step(k, i, &li_m_i, &mut o_m_i);
     }
     o_m_i
 }
