@@ -87,7 +87,7 @@ fn placement<S: Scalar>(x: &Transform<S>) -> Vec<f64> {
 fn compare<S: Scalar, const NB: usize, const NQ: usize, const NV: usize>(
     name: &str,
     model: &Model<f64, NB, NQ, NV>,
-    states: &[([f64; NQ], [f64; NV])],
+    states: &[QV<NQ, NV>],
 ) -> f64 {
     let model = model.cast::<S>().unwrap();
     let mut rng = Rng::new(0xC4A1);
@@ -219,10 +219,13 @@ fn check_set<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, const
     }
 }
 
+/// A state's `(q, v)`.
+type QV<const NQ: usize, const NV: usize> = ([f64; NQ], [f64; NV]);
+
 /// A fixture's states as arrays.
 fn fixture_states<const NB: usize, const NQ: usize, const NV: usize>(
     name: &str,
-) -> (Model<f64, NB, NQ, NV>, Vec<([f64; NQ], [f64; NV])>) {
+) -> (Model<f64, NB, NQ, NV>, Vec<QV<NQ, NV>>) {
     let fixture = Fixture::load_named(name).unwrap();
     let model = fixture.model::<NB, NQ, NV>().unwrap();
     let states = fixture

@@ -185,7 +185,7 @@ fn solo12_constant_path(mode: &Mode) {
             let t = time(ms, states.len(), f);
             println!("solo12 frame_jacobian_from_q_const {t:.1}");
         }
-        Mode::Only(only, calls) if only == "frame_jacobian_from_q_const" => {
+        Mode::Only("frame_jacobian_from_q_const", calls) => {
             let mut f = f;
             for k in 0..calls {
                 f(k % states.len());
