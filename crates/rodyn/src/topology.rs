@@ -519,8 +519,12 @@ impl<const NB: usize> SupportPath<NB> {
     #[must_use]
     #[inline(always)]
     pub const fn bodies(&self) -> &[usize] {
-        // `len <= NB` (`support_path`, the only constructor).
-        self.bodies.split_at(self.len).0
+        // `len <= NB` (`support_path`, the only constructor): the split
+        // never fails.
+        match self.bodies.split_at_checked(self.len) {
+            Some((path, _)) => path,
+            None => &[],
+        }
     }
 
     /// The number of bodies on the path (at least 1: the body itself).
@@ -536,10 +540,13 @@ impl<const NB: usize> SupportPath<NB> {
         self.len == 0
     }
 
-    /// The body the path leads to (its last).
+    /// The body the path leads to (its last), known to the optimiser to
+    /// be below `NB`.
     #[must_use]
-    pub const fn body(&self) -> usize {
-        self.bodies[self.len - 1]
+    #[inline(always)]
+    pub fn body(&self) -> usize {
+        // A path is never empty (`support_path`); 0 is never returned.
+        self.get(self.len.wrapping_sub(1)).unwrap_or(0)
     }
 
     /// The `k`-th body from the root (`None` past the path's end), known
@@ -578,10 +585,15 @@ impl<const NB: usize, const NV: usize> Topology<NB, NV> {
         if body >= NB {
             return None;
         }
-        // Parents come before children: the walk ends within NB steps.
+        // Parents come before children: the walk ends within NB steps
+        // (the tests on `i` and `k`, always true, keep the walk free of
+        // bounds checks).
         let mut len = 0;
         let mut b = Some(body);
         while let Some(i) = b {
+            if i >= NB || len >= NB {
+                return None;
+            }
             len += 1;
             b = self.tables.parents[i];
         }
@@ -589,8 +601,13 @@ impl<const NB: usize, const NV: usize> Topology<NB, NV> {
         let mut k = len;
         let mut b = Some(body);
         while let Some(i) = b {
+            if i >= NB || k == 0 {
+                break;
+            }
             k -= 1;
-            bodies[k] = i;
+            if k < NB {
+                bodies[k] = i;
+            }
             b = self.tables.parents[i];
         }
         Some(SupportPath { bodies, len })

@@ -36,10 +36,12 @@
 //! `frame_jacobian_time_variation` times `v`) to rounding; the tests hold
 //! them to 1e-14 in `f64`. [`plain`] has the same functions in the book's
 //! form, one column at a time, for reading and for the tests; the
-//! functions here form each joint's transform from its angle's sine and
-//! cosine formed first (on hosts), carry the parent's pose in registers,
-//! read a revolute column off the pose's rotation and move the columns
-//! with one loop per reference frame.
+//! functions here form the path's angles' sines and cosines two at a time
+//! (on hosts, where their dependent chains then overlap), carry the
+//! parent's pose in registers, read a revolute column off the pose's
+//! rotation, and move the columns with one loop per reference frame (in
+//! LOCAL_WORLD_ALIGNED a shift without the identity rotation,
+//! [`FrameSpace::shift_motion`]).
 //!
 //! A [`FrameChain`] is a frame with its support path. Found once (it is
 //! `const`, so a frame known when compiling, like the frame constants of
