@@ -1,6 +1,7 @@
 //! Shared helpers for rodyn's host tests: random states and sample models.
 pub mod contact_fixture;
 pub mod fixture;
+pub mod frame_chain_fixture;
 pub mod random;
 pub mod subject_gait;
 

@@ -224,6 +224,18 @@ pub const ROWS: &[(&str, &str, &str, &str)] = &[
         "CCRBA",
         "probe_quadruped_kinematics::{closure_env#2}>",
     ),
+    (
+        "contact_cost_probe",
+        "quadruped-floating",
+        "foot-Jacobian",
+        "probe_quadruped_kinematics::{closure_env#3}>",
+    ),
+    (
+        "contact_cost_probe",
+        "quadruped-floating",
+        "four-feet-Jacobians",
+        "probe_quadruped_kinematics::{closure_env#4}>",
+    ),
 ];
 
 /// A call from one function to another.

@@ -10,7 +10,7 @@ use rodyn_cli::probe::{
 use std::path::Path;
 
 /// Each binary, its numeric arguments and its others.
-const BINARIES: [(&str, &str, &[&str], &[&str]); 5] = [
+const BINARIES: [(&str, &str, &[&str], &[&str]); 4] = [
     (
         "compare",
         env!("CARGO_BIN_EXE_compare"),
@@ -26,12 +26,6 @@ const BINARIES: [(&str, &str, &[&str], &[&str]); 5] = [
     (
         "derivatives_timing",
         env!("CARGO_BIN_EXE_derivatives_timing"),
-        &["--ms", "--only"],
-        &[],
-    ),
-    (
-        "kinematics_timing",
-        env!("CARGO_BIN_EXE_kinematics_timing"),
         &["--ms", "--only"],
         &[],
     ),
@@ -58,23 +52,33 @@ fn every_argument_is_probed() {
     }
 }
 
-/// The contact benchmark, an example of this crate (its robots come from
-/// the unpublished test fixtures, a dev-dependency).
+/// The contact and kinematics benchmarks, examples of this crate (their
+/// robots come from the unpublished test fixtures, a dev-dependency).
 #[test]
-fn the_contact_benchmark_example_refuses_hostile_values() {
-    let exe = example("rodyn-bench", "contacts_timing");
-    let help = run(&exe, &["--help"]);
-    assert!(help.status.success(), "{}", help.stderr);
-    assert_listed(&help.stdout, &["--ms"], &[]);
-    assert_refuses_hostile_values(
-        &exe,
-        &NumericOption {
-            option: "--ms",
-            before: &[],
-            after: &[],
-            accepts: &[],
-        },
-    );
+fn the_benchmark_examples_refuse_hostile_values() {
+    for (name, numeric) in [
+        ("contacts_timing", &["--ms"][..]),
+        ("kinematics_timing", &["--ms", "--only"][..]),
+    ] {
+        let exe = example("rodyn-bench", name);
+        let help = run(&exe, &["--help"]);
+        assert!(help.status.success(), "{name}: {}", help.stderr);
+        assert_listed(&help.stdout, numeric, &[]);
+        assert_refuses_hostile_values(
+            &exe,
+            &NumericOption {
+                option: "--ms",
+                before: &[],
+                after: &[],
+                accepts: &[],
+            },
+        );
+        if name == "kinematics_timing" {
+            for value in HOSTILE {
+                assert_refused(&exe, &["--only", "ur5", "ccrba", value], "--only");
+            }
+        }
+    }
 }
 
 #[test]
@@ -143,8 +147,8 @@ fn numeric_arguments_refuse_hostile_values() {
 #[test]
 fn names_paths_and_choices_are_checked_before_any_timing() {
     let derivatives = Path::new(env!("CARGO_BIN_EXE_derivatives_timing"));
-    let kinematics = Path::new(env!("CARGO_BIN_EXE_kinematics_timing"));
-    for exe in [derivatives, kinematics] {
+    let kinematics = example("rodyn-bench", "kinematics_timing");
+    for exe in [derivatives, kinematics.as_path()] {
         let outcome = assert_refused(exe, &["--only", "hexapod", "aba", "1"], "--only");
         assert!(
             outcome.stderr.contains("unknown model `hexapod`"),

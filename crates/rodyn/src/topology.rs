@@ -501,6 +501,119 @@ impl<const NB: usize, const NV: usize> Topology<NB, NV> {
     }
 }
 
+/// The bodies that support a body, root first and the body itself last
+/// (Featherstone's κ⁻¹ path, the bodies whose joints move it): from
+/// [`Topology::support_path`]. Held in a fixed array of `NB` (a path has
+/// at most `NB` bodies), so that finding it allocates nothing and a
+/// `const` evaluation can store it for a frame known when compiling.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SupportPath<const NB: usize> {
+    /// `bodies[..len]`: increasing, each the parent of the next.
+    bodies: [usize; NB],
+    len: usize,
+}
+
+impl<const NB: usize> SupportPath<NB> {
+    /// The path's bodies, root first; each below `NB` and the parent of the
+    /// next.
+    #[must_use]
+    #[inline(always)]
+    pub const fn bodies(&self) -> &[usize] {
+        // `len <= NB` (`support_path`, the only constructor): the split
+        // never fails.
+        match self.bodies.split_at_checked(self.len) {
+            Some((path, _)) => path,
+            None => &[],
+        }
+    }
+
+    /// The number of bodies on the path (at least 1: the body itself).
+    #[must_use]
+    #[inline(always)]
+    pub const fn len(&self) -> usize {
+        self.len
+    }
+
+    /// Always `false`: a path holds at least its own body.
+    #[must_use]
+    pub const fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
+    /// The body the path leads to (its last), known to the optimiser to
+    /// be below `NB`.
+    #[must_use]
+    #[inline(always)]
+    pub fn body(&self) -> usize {
+        // A path is never empty (`support_path`); 0 is never returned.
+        self.get(self.len.wrapping_sub(1)).unwrap_or(0)
+    }
+
+    /// The `k`-th body from the root (`None` past the path's end), known
+    /// to the optimiser to be below `NB`.
+    #[must_use]
+    #[inline(always)]
+    pub fn get(&self, k: usize) -> Option<usize> {
+        let b = *self.bodies().get(k)?;
+        // SAFETY: `support_path`, the only constructor, stores body indices
+        // below `NB` only (it starts at a body below `NB` and follows
+        // parents, which come before their children); the fields cannot
+        // be changed afterwards.
+        unsafe { core::hint::assert_unchecked(b < NB) };
+        Some(b)
+    }
+
+    /// The path's bodies, root first, each known to the optimiser to be
+    /// below `NB` (so that indexing `NB`-long arrays by them needs no
+    /// check).
+    #[inline(always)]
+    pub fn iter(&self) -> impl Iterator<Item = usize> + '_ {
+        self.bodies().iter().map(|&b| {
+            // SAFETY: as in `get`.
+            unsafe { core::hint::assert_unchecked(b < NB) };
+            b
+        })
+    }
+}
+
+impl<const NB: usize, const NV: usize> Topology<NB, NV> {
+    /// The bodies that support `body`, root first, `body` last (see
+    /// [`SupportPath`]); `None` when `body` is not below `NB`. `const`, so
+    /// that a frame known when compiling can keep its path in a constant.
+    #[must_use]
+    pub const fn support_path(&self, body: usize) -> Option<SupportPath<NB>> {
+        if body >= NB {
+            return None;
+        }
+        // Parents come before children: the walk ends within NB steps
+        // (the tests on `i` and `k`, always true, keep the walk free of
+        // bounds checks).
+        let mut len = 0;
+        let mut b = Some(body);
+        while let Some(i) = b {
+            if i >= NB || len >= NB {
+                return None;
+            }
+            len += 1;
+            b = self.tables.parents[i];
+        }
+        let mut bodies = [0; NB];
+        let mut k = len;
+        let mut b = Some(body);
+        while let Some(i) = b {
+            if i >= NB || k == 0 {
+                break;
+            }
+            k -= 1;
+            if k < NB {
+                bodies[k] = i;
+            }
+            b = self.tables.parents[i];
+        }
+        Some(SupportPath { bodies, len })
+    }
+}
+
 /// The sum of the joints' configuration coordinates, for error reports
 /// (saturating: a count near `usize::MAX` must not wrap).
 const fn configuration_count<const NB: usize>(nq: &[usize; NB]) -> usize {
@@ -524,7 +637,7 @@ const fn velocity_count<const NB: usize>(nv: &[usize; NB]) -> usize {
 
 #[cfg(test)]
 mod tests {
-    use super::{Topology, TopologyError};
+    use super::{SupportPath, Topology, TopologyError};
     use crate::joint::MAX_JOINT_NV;
 
     /// What the algorithms rely on to reach every index without a panic
@@ -647,6 +760,47 @@ mod tests {
         assert!(sweep::<2>() > 0);
         assert!(sweep::<7>() > 0);
         assert!(sweep::<13>() > 0);
+    }
+
+    /// The support path of every body of a branched tree is its chain of
+    /// parents, root first; a body past the end has none.
+    #[test]
+    fn support_paths_follow_the_parents() {
+        let parents = [
+            None,
+            Some(0),
+            Some(1),
+            Some(0),
+            Some(3),
+            Some(4),
+            None,
+            Some(6),
+        ];
+        let t = Topology::<8, 8>::new(parents, [1; 8], [1; 8], 8);
+        let expected: [&[usize]; 8] = [
+            &[0],
+            &[0, 1],
+            &[0, 1, 2],
+            &[0, 3],
+            &[0, 3, 4],
+            &[0, 3, 4, 5],
+            &[6],
+            &[6, 7],
+        ];
+        for (body, path) in expected.iter().enumerate() {
+            let p = t.support_path(body).unwrap();
+            assert_eq!(p.bodies(), *path, "body {body}");
+            assert_eq!((p.len(), p.body(), p.is_empty()), (path.len(), body, false));
+            assert_eq!(p.get(p.len()), None);
+            for b in p.bodies() {
+                assert!(t.supports(*b, body));
+            }
+        }
+        assert_eq!(t.support_path(8), None);
+        // Known when compiling.
+        const PATH: Option<SupportPath<3>> =
+            Topology::<3, 3>::new([None, Some(0), Some(0)], [1; 3], [1; 3], 3).support_path(2);
+        assert_eq!(PATH.unwrap().bodies(), &[0, 2]);
     }
 
     #[test]

@@ -3,8 +3,9 @@
 //! rigid-contact time step of the plant, and one tick of
 //! `quadruped_rigid`'s trunk controller (inverse dynamics with contacts);
 //! and the legged robot's kinematics they build on: all the quadruped's
-//! joint Jacobians and its centroidal map with the centroidal inertia
-//! (CCRBA).
+//! joint Jacobians, its centroidal map with the centroidal inertia
+//! (CCRBA), one foot's Jacobian from q along its leg and the four feet's
+//! together.
 //!
 //! Measured as `cost_probe` measures (seeded random inputs, instructions
 //! by QEMU `-icount` and SysTick, stack bytes from a painted window), in an
@@ -19,12 +20,13 @@ use rodyn::algorithm::constrained_dynamics::{
     constrained_forward_dynamics, constrained_forward_dynamics_with, impulse_dynamics,
     ConstraintData, ConstraintMethod, ConstraintSettings, Contact,
 };
-use rodyn::algorithm::frames::frame_placement;
+use rodyn::algorithm::frame_chain::{chain_jacobian, chains_jacobians, FrameChain};
+use rodyn::algorithm::frames::{frame_placement, ReferenceFrame};
 use rodyn::algorithm::jacobian::{joint_jacobians, JacobianData};
 use rodyn::algorithm::kinematics::forward_kinematics;
 use rodyn::sim::time_stepping::time_step;
 use rodyn::sim::State;
-use rodyn::spatial::Vec3;
+use rodyn::spatial::{Motion, Vec3};
 use rodyn::{Data, Scalar};
 use rodyn_firmware::exit::{exit, exit_with, CHECK_FAILED};
 use rodyn_firmware::measure::{probe_scene, InstructionCounter, STATES};
@@ -206,7 +208,29 @@ fn probe_quadruped_kinematics(counter: &InstructionCounter) -> bool {
     let ccrba = probe_scene("quadruped-floating", "CCRBA", counter, draw, |q| {
         centroidal_map(&MODEL_F32, &mut data, &mut cd, q).is_ok()
     });
-    jacobians & ccrba
+    // One foot's Jacobian from q along its leg, and the four feet's as a
+    // set (the free flyer's columns formed once); world axes at the foot.
+    // (No closure here: `xtask/src/stack_bound.rs` names the rows'
+    // closures by their order.)
+    let [f0, f1, f2, f3] = quadruped::foot_frames::<f32>();
+    let (Some(a), Some(b), Some(c), Some(d)) = (
+        FrameChain::new(&MODEL_F32, f0),
+        FrameChain::new(&MODEL_F32, f1),
+        FrameChain::new(&MODEL_F32, f2),
+        FrameChain::new(&MODEL_F32, f3),
+    ) else {
+        return false;
+    };
+    let chains = [a, b, c, d];
+    let aligned = ReferenceFrame::LocalWorldAligned;
+    let mut columns = [[Motion::new(Vec3::ZERO, Vec3::ZERO); NV]; LEGS];
+    let foot = probe_scene("quadruped-floating", "foot-Jacobian", counter, draw, |q| {
+        chain_jacobian(&MODEL_F32, q, &chains[0], aligned, &mut columns[0]).is_ok()
+    });
+    let feet = probe_scene("quadruped-floating", "four-feet-Jacobians", counter, draw, |q| {
+        chains_jacobians(&MODEL_F32, &mut data, q, &chains, aligned, &mut columns).is_ok()
+    });
+    jacobians & ccrba & foot & feet
 }
 
 #[entry]

@@ -38,11 +38,9 @@ use crate::drivers::{AbsoluteEncoder, TorqueDrive};
 use embedded_hal::pwm::SetDutyCycle;
 use embedded_hal::spi::SpiDevice;
 use rodyn::algorithm::dense::{cholesky_in_place, cholesky_solve};
-use rodyn::algorithm::frames::{frame_placement, ReferenceFrame};
-use rodyn::algorithm::jacobian::{
-    frame_jacobian, frame_jacobian_time_variation, joint_jacobians_time_variation, mul_rates,
-    JacobianData,
-};
+use rodyn::algorithm::frame_chain::frame_kinematics_from_q;
+use rodyn::algorithm::frames::ReferenceFrame;
+use rodyn::algorithm::jacobian::mul_rates;
 use rodyn::algorithm::rnea::rnea;
 use rodyn::spatial::log3;
 use rodyn::spatial::{Motion, Spatial, Vec3};
@@ -100,10 +98,8 @@ pub struct TaskSpaceImpedance<'m, SPI, PWM, const N: usize> {
     model: &'m Model<f32, N, N, N>,
     frame: Frame<f32>,
     data: Data<f32, N, N>,
-    jac: JacobianData<f32, N>,
-    /// The frame's Jacobian and its time derivative (world axes, frame origin).
+    /// The frame's Jacobian (world axes, frame origin).
     j: [Motion<f32>; N],
-    dj: [Motion<f32>; N],
     encoders: [AbsoluteEncoder<SPI>; N],
     drives: [TorqueDrive<PWM>; N],
     gains: TaskGains,
@@ -128,9 +124,7 @@ impl<'m, SPI: SpiDevice, PWM: SetDutyCycle, const N: usize> TaskSpaceImpedance<'
             model,
             frame,
             data: Data::new(),
-            jac: JacobianData::new(),
             j: [Motion::new(Vec3::ZERO, Vec3::ZERO); N],
-            dj: [Motion::new(Vec3::ZERO, Vec3::ZERO); N],
             encoders,
             drives,
             gains,
@@ -155,30 +149,18 @@ impl<'m, SPI: SpiDevice, PWM: SetDutyCycle, const N: usize> TaskSpaceImpedance<'
         let v = *self.rate.update(&q);
         let g = self.gains;
 
-        joint_jacobians_time_variation(self.model, &mut self.data, &mut self.jac, &q, &v)
-            .map_err(ControlError::Dynamics)?;
-        let o_m_f = frame_placement(&self.data, &self.frame).map_err(ControlError::Dynamics)?;
-        let aligned = ReferenceFrame::LocalWorldAligned;
-        frame_jacobian(
+        // The frame's pose, Jacobian, velocity `J q̇` and `J̇ q̇`, along the
+        // joints that move it.
+        let motion = frame_kinematics_from_q(
             self.model,
-            &self.data,
-            &self.jac,
+            &q,
+            &v,
             &self.frame,
-            aligned,
+            ReferenceFrame::LocalWorldAligned,
             &mut self.j,
         )
         .map_err(ControlError::Dynamics)?;
-        frame_jacobian_time_variation(
-            self.model,
-            &self.data,
-            &self.jac,
-            &self.frame,
-            aligned,
-            &mut self.dj,
-        )
-        .map_err(ControlError::Dynamics)?;
-        let twist = mul_rates::<f32, N, Spatial>(&self.j, &v);
-        let dj_v = mul_rates::<f32, N, Spatial>(&self.dj, &v);
+        let (o_m_f, twist, dj_v) = (motion.placement, motion.velocity, motion.dj_v);
 
         // The task wrench (N m, N), angular first as the Jacobian's rows.
         let rate_error = reference.velocity - twist;

@@ -5,7 +5,8 @@
 #   tools/pinocchio/bench/compare_suite.sh SUITE [milliseconds per measurement]
 #
 # SUITE is `kinematics` (joint Jacobians, a frame Jacobian, the centroidal
-# map, CCRBA), `derivatives` (RNEA and ABA derivatives) or `contacts`
+# map, CCRBA; one frame's Jacobian from q and a quadruped's four feet, also
+# on ANYmal, the G1 and Talos from example-robot-data), `derivatives` (RNEA and ABA derivatives) or `contacts`
 # (constrained forward dynamics on Solo12 and Talos; Talos's URDF from
 # example-robot-data). Builds
 # tools/pinocchio/bench/bench_SUITE.cpp with compare.sh's flags (g++ -O3,
@@ -23,7 +24,15 @@ SUITE="${1:?usage: compare_suite.sh kinematics|derivatives|contacts [ms]}"
 MS="${2:-50}"
 EXTRA=()
 case "$SUITE" in
-    kinematics | derivatives) ;;
+    kinematics)
+        # The from-q frame Jacobians' branched robots (as in
+        # host-tests/fixtures/frame_chain/).
+        for robot in anymal_b_simple_description/robots/anymal.urdf \
+            g1_description/urdf/g1_29dof_rev_1_0.urdf talos_data/robots/talos_reduced.urdf; do
+            EXTRA+=("$(python3 "$ROOT/tools/pinocchio/make_models.py" --print-robot "$robot")")
+        done
+        ;;
+    derivatives) ;;
     contacts)
         TALOS="$(python3 "$ROOT/tools/pinocchio/make_models.py" --print-robot talos_data/robots/talos_reduced.urdf)"
         EXTRA=("$TALOS")
@@ -44,10 +53,10 @@ fi
 
 cd "$ROOT"
 RODYN="${CARGO_TARGET_DIR:-$ROOT/target}/release"
-if [[ "$SUITE" == contacts ]]; then
-    # An example: it reads the fixtures of the unpublished rodyn-host-tests.
-    cargo build --quiet -p rodyn-bench --release --example contacts_timing
-    RODYN="$RODYN/examples/contacts_timing"
+if [[ "$SUITE" == contacts || "$SUITE" == kinematics ]]; then
+    # Examples: they read the fixtures of the unpublished rodyn-host-tests.
+    cargo build --quiet -p rodyn-bench --release --example "${SUITE}_timing"
+    RODYN="$RODYN/examples/${SUITE}_timing"
 else
     cargo build --quiet -p rodyn-bench --release --bin "${SUITE}_timing"
     RODYN="$RODYN/${SUITE}_timing"

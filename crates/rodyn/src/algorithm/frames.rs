@@ -76,6 +76,13 @@ pub trait FrameSpace: Space {
     fn translation_only<S: Scalar>(x: &Self::Transform<S>) -> Self::Transform<S> {
         Self::from_translation(&x.translation())
     }
+    /// `m` (a motion at the world's origin) seen at `p` with the world's
+    /// axes: `X(p)⁻¹ m`, the move into LOCAL_WORLD_ALIGNED. A geometry may
+    /// override it with an equal form that skips the identity rotation.
+    #[inline(always)]
+    fn shift_motion<S: Scalar>(m: &Self::Motion<S>, p: &Self::Point<S>) -> Self::Motion<S> {
+        Self::from_translation(p).act_inv_motion(m)
+    }
     /// `x Sₖ`: column k of joint `j`'s motion subspace moved by `x` (into
     /// the world, for a body pose).
     #[inline(always)]
@@ -123,6 +130,12 @@ impl FrameSpace for Spatial {
     #[inline]
     fn from_translation<S: Scalar>(p: &Vec3<S>) -> Transform<S> {
         Transform::from_translation(*p)
+    }
+    #[inline(always)]
+    fn shift_motion<S: Scalar>(m: &Motion<S>, p: &Vec3<S>) -> Motion<S> {
+        // (ω, v − p × ω): the products with the identity's ones and zeros
+        // left out (the same values for finite entries).
+        Motion::new(m.ang, m.lin - p.cross(&m.ang))
     }
     #[inline(always)]
     fn world_inertia<S: Scalar>(i: &Inertia<S>, x: &Transform<S>) -> Inertia<S> {
@@ -469,7 +482,7 @@ mod tests {
     use super::FrameSpace;
     use crate::joint::{Axis, Joint, JointModel};
     use crate::space::{BodyInertia, RigidTransform, VectorOps};
-    use crate::spatial::{Force, Inertia, Mat3, Spatial, Sym3, Transform, Vec3};
+    use crate::spatial::{Force, Inertia, Mat3, Motion, Spatial, Sym3, Transform, Vec3};
 
     /// The 3-D shortcut for a body's world inertia gives `Inertia::act`'s
     /// result, to rounding, for inertias diagonal in the body's frame (the
@@ -493,6 +506,24 @@ mod tests {
             assert!(
                 largest_entry(&(fast.rot_inertia - book.rot_inertia)) <= 1e-15,
                 "{i:?}: {fast:?} against {book:?}"
+            );
+        }
+    }
+
+    /// The 3-D shift into LOCAL_WORLD_ALIGNED is the book's `X(p)⁻¹ m`,
+    /// bit for bit.
+    #[test]
+    fn shift_motion_is_the_inverse_translation() {
+        let m = Motion::new(Vec3::new(0.3, -1.2, 2.5), Vec3::new(-0.7, 0.4, 1.9));
+        for p in [
+            Vec3::new(0.4, -1.3, 0.7),
+            Vec3::ZERO,
+            Vec3::new(1e3, 2e-3, -5.0),
+        ] {
+            assert_eq!(
+                Spatial::shift_motion(&m, &p),
+                Transform::from_translation(p).act_inv_motion(&m),
+                "{p:?}"
             );
         }
     }

@@ -22,8 +22,8 @@
 //! what is left of the same budget, so the worst case stays one budget.
 
 use super::dense::{cholesky_in_place, cholesky_solve};
-use super::frames::{frame_placement, ReferenceFrame};
-use super::jacobian::{frame_jacobian, joint_jacobians, JacobianData};
+use super::frame_chain::{chain_jacobian, FrameChain};
+use super::frames::ReferenceFrame;
 use crate::data::Data;
 use crate::error::{Error, Result};
 use crate::frame::Frame;
@@ -144,12 +144,10 @@ pub fn pose_error<S: Scalar>(o_m_f: &Transform<S>, target: &Transform<S>) -> Mot
     Motion::new(log3(&rot), lin)
 }
 
-/// The workspace of [`solve`]: the Jacobians. Its own type so that models
-/// without inverse kinematics pay nothing for it.
+/// The workspace of [`solve`]: the frame's Jacobian. Its own type so that
+/// models without inverse kinematics pay nothing for it.
 #[derive(Clone, Debug)]
 pub struct IkData<S: Scalar, const NV: usize> {
-    /// Joint Jacobians of the last iteration.
-    pub jac: JacobianData<S, NV>,
     /// The frame's Jacobian in its own axes at the last iteration.
     pub frame_jacobian: [Motion<S>; NV],
 }
@@ -159,7 +157,6 @@ impl<S: Scalar, const NV: usize> IkData<S, NV> {
     #[must_use]
     pub const fn new() -> Self {
         Self {
-            jac: JacobianData::new(),
             frame_jacobian: [Motion::new(Vec3::ZERO, Vec3::ZERO); NV],
         }
     }
@@ -173,35 +170,35 @@ impl<S: Scalar, const NV: usize> Default for IkData<S, NV> {
 
 /// One damped least-squares step: the error at `q` (returned, as
 /// [`pose_error`]) and `q` moved by `Δq = Jᵀ (J Jᵀ + λ² I)⁻¹ e` on the
-/// configuration manifold ([`Model::integrate`]). Runs [`joint_jacobians`]; leaves valid `data.li_m_i`,
-/// `data.o_m_i` (at the `q` before the step), `ws.jac.j`,
-/// `ws.frame_jacobian`.
+/// configuration manifold ([`Model::integrate`]). The frame's pose and
+/// Jacobian come from [`chain_jacobian`], along the joints that move the
+/// frame only; leaves valid `ws.frame_jacobian` (at the `q` before the
+/// step). `data` is neither read nor written (the signature of the
+/// iterations that call it, which keep it for their callers).
 ///
 /// # Errors
-/// As [`joint_jacobians`];
+/// As [`chain_jacobian`];
 /// [`Error::FrameBodyOutOfRange`]; [`Error::NotConverged`] (with zero
 /// iterations) when the step is not finite; those of [`Model::integrate`]
 /// when the moved `q` is not (`q` is then left as it was).
 pub fn step<S: Scalar, const NB: usize, const NQ: usize, const NV: usize>(
     model: &Model<S, NB, NQ, NV, Spatial>,
-    data: &mut Data<S, NB, NV, Spatial>,
+    _data: &mut Data<S, NB, NV, Spatial>,
     ws: &mut IkData<S, NV>,
     frame: &Frame<S>,
     target: &Transform<S>,
     damping: S,
     q: &mut [S; NQ],
 ) -> Result<Motion<S>> {
-    joint_jacobians(model, data, &mut ws.jac, q)?;
-    let o_m_f = frame_placement(data, frame)?;
-    let e = pose_error(&o_m_f, target);
-    frame_jacobian(
+    let chain = FrameChain::try_new(model, frame)?;
+    let o_m_f = chain_jacobian(
         model,
-        data,
-        &ws.jac,
-        frame,
+        q,
+        &chain,
         ReferenceFrame::Local,
         &mut ws.frame_jacobian,
     )?;
+    let e = pose_error(&o_m_f, target);
     let j = &ws.frame_jacobian;
     // A = J Jᵀ + λ² I (6×6, symmetric positive definite for λ > 0).
     let mut a = [[S::ZERO; 6]; 6];

@@ -11,6 +11,7 @@
 //! | [`energy`]            | kinetic, potential energy, centre of mass       |               |
 //! | [`frames`]            | frame placements, velocities, accelerations     | §2.11         |
 //! | [`jacobian`]          | joint and frame Jacobians, their derivatives    | §4.4          |
+//! | [`frame_chain`]       | one frame's (or a few frames') Jacobian and `J̇ v` from q, along its path | §4.4 |
 //! | [`centroidal`]        | CoM Jacobian, centroidal momentum matrix, CCRBA | Orin 2013     |
 //! | [`inverse_kinematics`] | damped least-squares steps to a frame pose     |               |
 //! | [`dense`]             | small dense Cholesky factor and solve           |               |
@@ -51,6 +52,7 @@ pub mod dense;
 pub mod derivatives;
 pub mod energy;
 pub mod forward_dynamics;
+pub mod frame_chain;
 pub mod frames;
 pub mod inverse_kinematics;
 pub mod jacobian;
