@@ -3,9 +3,9 @@
 //! matrix ∂q̈/∂a along the trajectory.
 //!
 //! Run from anywhere in the workspace:
-//! `cargo run -p rodyn-drive-plots --release`
-//! It writes `docs/img/drives/muscle_robot_trajectory.svg` and
-//! `docs/img/drives/muscle_robot_sensitivity.svg`, and prints a summary.
+//! `cargo run -p rodyn-drive-plots --release [-- --out DIR]`
+//! It writes `muscle_robot_trajectory.svg` and `muscle_robot_sensitivity.svg`
+//! into `DIR` (by default `docs/img/drives/`), and prints a summary.
 
 use plotters::prelude::*;
 use rodyn::algorithm::forward_dynamics::Aba;
@@ -139,9 +139,21 @@ where
     Ok(())
 }
 
+/// `--out DIR`, or the docs' figure directory.
+fn output_dir() -> Result<PathBuf, String> {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    match args.as_slice() {
+        [] => Ok(PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../docs/img/drives")),
+        [flag, dir] if flag == "--out" => Ok(PathBuf::from(dir)),
+        _ => Err(format!(
+            "unexpected arguments {args:?}; usage: rodyn-drive-plots [--out DIR]"
+        )),
+    }
+}
+
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let samples = simulate()?;
-    let out = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../docs/img/drives");
+    let out = output_dir()?;
     std::fs::create_dir_all(&out)?;
 
     let trajectory = out.join("muscle_robot_trajectory.svg");
