@@ -10,4 +10,12 @@ fn main() {
     for model in ["pendulum", "panda", "two_link_muscles", "aibo"] {
         let _ = rodyn_model::build::compile(models.join(format!("{model}.toml")), model);
     }
+    // Continuous joints on a free flyer, for the configuration conversion.
+    let wheeled_arm = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../crates/rodyn-model/generated-tests/urdf/wheeled_arm.urdf");
+    let options = rodyn_model::LoadOptions {
+        floating_base: true,
+        ..rodyn_model::LoadOptions::default()
+    };
+    let _ = rodyn_model::build::compile_with(wheeled_arm, "wheeled_arm", options);
 }
