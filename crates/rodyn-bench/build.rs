@@ -16,17 +16,12 @@ fn main() {
     let urdf = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../models/urdf");
     for (file, module, floating_base) in MODELS {
         // Included by src/models/urdf_models.rs through OUT_DIR.
+        // The model compiler's default options, as a user gets them: the
+        // published comparison is measured on what a user runs.
         let _ = compile_with(
             urdf.join(file),
             module,
-            // The timed models take the UR5's quarter turns, written to 12
-            // digits, as exact (an explicit opt-in since the model compiler
-            // keeps files' rotations by default): the comparison's figures
-            // were measured so, and the torques still agree with
-            // Pinocchio's to 1e-9 (compare.sh checks).
-            LoadOptions::new()
-                .with_floating_base(*floating_base)
-                .with_round_quarter_turns(true),
+            LoadOptions::new().with_floating_base(*floating_base),
         );
     }
     println!("cargo:rerun-if-changed=build.rs");

@@ -3,12 +3,12 @@
 //! right transfemoral prosthesis.
 //!
 //! ```text
-//! cargo run -p rodyn-host-tests --example gait_prosthesis --release
+//! cargo run -p rodyn-host-tests --example gait_prosthesis --release [-- --out DIR]
 //! ```
 //!
 //! Reads `host-tests/data/gait/` (written by the `gait_data` example),
 //! prints peak values and the floating-base residual, and writes the
-//! figures of `docs/sections/gait.md` into `docs/img/gait/`.
+//! figures of `docs/sections/gait.md` into `DIR` (by default `docs/img/gait/`).
 
 #[path = "../tests/gait_support/mod.rs"]
 #[allow(dead_code)]
@@ -18,8 +18,8 @@ use gait_support::data::{data_dir, GaitCycle, GroundReaction};
 use gait_support::gait_planar::{v, MODEL_F32, MODEL_F64};
 use gait_support::inverse_dynamics::{gait_inverse_dynamics, GaitData, GaitFrame};
 use plotters::prelude::*;
-use rodyn_cli::no_arguments;
-use std::path::Path;
+use rodyn_cli::writable_dir;
+use std::path::{Path, PathBuf};
 
 /// One curve of a figure: label, colour, values over the cycle.
 type Curve = (&'static str, RGBColor, Vec<f64>);
@@ -83,11 +83,21 @@ fn peak(values: &[f64]) -> (usize, f64) {
         .unwrap_or((0, 0.0))
 }
 
+/// `--out DIR`, or the docs' figure directory.
+fn output_dir() -> Result<PathBuf, String> {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    match args.as_slice() {
+        [] => Ok(Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/img/gait")),
+        [flag, dir] if flag == "--out" => Ok(PathBuf::from(dir)),
+        _ => Err(format!(
+            "unexpected arguments {args:?}; usage: gait_prosthesis [--out DIR]"
+        )),
+    }
+}
+
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    no_arguments(
-        "gait_prosthesis",
-        "reads host-tests/data/gait and writes docs/img/gait",
-    )?;
+    let img = output_dir()?;
+    writable_dir(&img)?;
     let cycle = GaitCycle::read(&data_dir().join("joint_fourier.csv"))?;
     let reactions = GroundReaction::read_all(&data_dir().join("ground_reaction.csv"))?;
     let mass = MODEL_F64.total_mass();
@@ -180,8 +190,6 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         println!("| {name} | {value:.3} {unit} | {at} |");
     }
 
-    let img = Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/img/gait");
-    std::fs::create_dir_all(&img)?;
     plot(
         &img.join("joint_moments.svg"),
         "Joint moments over the gait cycle (synthetic data)",

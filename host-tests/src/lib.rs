@@ -1,5 +1,7 @@
 //! Shared helpers for rodyn's host tests: random states and sample models.
 pub mod contact_fixture;
+#[cfg(doctest)]
+pub mod doc_snippets;
 pub mod fixture;
 pub mod frame_chain_fixture;
 pub mod random;

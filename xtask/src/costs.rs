@@ -80,7 +80,7 @@ fn measure(example: &Example) -> Result<Size> {
 }
 
 fn sizes_path() -> PathBuf {
-    firmware::dir().join("expected").join("sizes.txt")
+    shell::root().join("firmware/expected/sizes.txt")
 }
 
 fn read_sizes() -> Result<BTreeMap<String, Size>> {
@@ -249,24 +249,78 @@ pub fn check_goals_of_last_run() -> Result<()> {
     Ok(())
 }
 
+/// Where the cost probes' output comes from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ProbeRuns {
+    /// Build the firmware and run each probe in QEMU now.
+    Fresh,
+    /// The logs `cargo xtask test` kept of its runs of the images it has
+    /// just built (`target/firmware-logs/`), so that checking the tables
+    /// costs no second emulation.
+    LastLogs,
+}
+
+/// The docs holding the tables, and which marked tables each holds.
+const TABLE_DOCS: [(&str, &[&str]); 2] = [
+    (
+        "docs/sections/firmware.md",
+        &["costs", "sizes", "goals", "stack"],
+    ),
+    ("README.md", &["goals"]),
+];
+
 /// Runs the probe and the size measurements and rewrites the tables.
 pub fn regenerate() -> Result<()> {
+    let root = shell::root();
+    for (path, text) in generated_files(ProbeRuns::Fresh)? {
+        let path = root.join(path);
+        std::fs::write(&path, text).with_context(|| format!("cannot write {}", path.display()))?;
+        println!("wrote {}", path.display());
+    }
+    Ok(())
+}
+
+/// Every file `cargo xtask costs` writes, as (path from the repository
+/// root, its new text), computed without writing any: the tables of
+/// [`TABLE_DOCS`] put into the committed docs, `firmware/expected/sizes.txt`
+/// and `firmware/expected/panic_sites.txt`.
+pub fn generated_files(runs: ProbeRuns) -> Result<Vec<(String, String)>> {
     setup::ensure_target()?;
-    setup::ensure_qemu()?;
-    firmware::build()?;
+    if runs == ProbeRuns::Fresh {
+        setup::ensure_qemu()?;
+        firmware::build()?;
+    }
     let mut costs = Vec::new();
     let mut goal_table = String::new();
     for name in PROBES {
         let probe = firmware::example(name)?;
-        let outcome = firmware::run(probe, |line| println!("{line}"))?;
-        if outcome.exit_code != 0 {
-            bail!("{name} exited with code {}", outcome.exit_code);
-        }
-        costs.extend(parse_costs(&outcome.lines)?);
+        let lines = match runs {
+            ProbeRuns::Fresh => {
+                let outcome = firmware::run(probe, |line| println!("{line}"))?;
+                if outcome.exit_code != 0 {
+                    bail!("{name} exited with code {}", outcome.exit_code);
+                }
+                outcome.lines
+            }
+            ProbeRuns::LastLogs => {
+                let path = firmware::last_log_path(probe);
+                std::fs::read_to_string(&path)
+                    .with_context(|| {
+                        format!(
+                            "cannot read {} (`cargo xtask test` writes it)",
+                            path.display()
+                        )
+                    })?
+                    .lines()
+                    .map(str::to_string)
+                    .collect()
+            }
+        };
+        costs.extend(parse_costs(&lines)?);
         if name == "cost_probe" {
             // A missed goal is printed and the tables still written, so
             // that the README shows it; `cargo xtask test` fails on it.
-            let (table, missed) = goals(&outcome.lines)?;
+            let (table, missed) = goals(&lines)?;
             for goal in missed {
                 println!("Cortex-M4 goal missed: {goal}");
             }
@@ -328,31 +382,30 @@ pub fn regenerate() -> Result<()> {
             example.name, s.text, s.data, s.bss
         )?;
     }
-    std::fs::write(sizes_path(), sizes_file)?;
+    let stack_tables = stack_bound::tables(&images, &stack_rows(&costs))?;
 
-    // The firmware page and the README show the same tables.
-    for doc in ["docs/sections/firmware.md", "README.md"] {
+    let mut files = Vec::new();
+    for (doc, markers) in TABLE_DOCS {
         let doc_path = shell::root().join(doc);
-        let text = std::fs::read_to_string(&doc_path)
+        let mut text = std::fs::read_to_string(&doc_path)
             .with_context(|| format!("cannot read {}", doc_path.display()))?;
-        let text = replace_between(&text, "costs", &cost_table)?;
-        let text = replace_between(&text, "sizes", &size_table)?;
-        let text = replace_between(&text, "goals", &goal_table)?;
-        let text = if doc.starts_with("docs/") {
-            replace_between(
-                &text,
-                "stack",
-                &stack_bound::tables(&images, &stack_rows(&costs))?,
-            )?
-        } else {
-            text
-        };
-        std::fs::write(&doc_path, text)?;
-        println!("wrote {}", doc_path.display());
+        for marker in markers {
+            let table = match *marker {
+                "costs" => &cost_table,
+                "sizes" => &size_table,
+                "goals" => &goal_table,
+                _ => &stack_tables,
+            };
+            text = replace_between(&text, marker, table).with_context(|| format!("in {doc}"))?;
+        }
+        files.push((doc.to_string(), text));
     }
-    println!("wrote {}", sizes_path().display());
-    crate::panic_sites::record()?;
-    Ok(())
+    files.push(("firmware/expected/sizes.txt".to_string(), sizes_file));
+    files.push((
+        "firmware/expected/panic_sites.txt".to_string(),
+        crate::panic_sites::expected_text()?,
+    ));
+    Ok(files)
 }
 
 /// (model, algorithm, painted stack) of each cost line, for
@@ -365,7 +418,7 @@ pub fn stack_rows(costs: &[Cost]) -> Vec<(String, String, String)> {
 }
 
 /// Replaces the text between `<!-- name:begin -->` and `<!-- name:end -->`.
-fn replace_between(doc: &str, name: &str, content: &str) -> Result<String> {
+pub fn replace_between(doc: &str, name: &str, content: &str) -> Result<String> {
     let (begin, end) = (
         format!("<!-- {name}:begin -->"),
         format!("<!-- {name}:end -->"),

@@ -7,6 +7,7 @@
 //! | `test`                   | host tests (the core's and `rodyn-host-tests`' also in the in-order tuning profile), the no_std core for thumbv7em, every firmware example in QEMU against its expected output, sizes, panic sites, stack bounds, the viewer's pages in Chromium, the firmware template run from a copy outside the repository, lint |
 //! | `lint`                   | rustfmt, clippy and rustdoc, warnings as errors, host and firmware; the core without float features stops at one error; `cargo package` of every crate, the published libraries built from their packages; their public API against `xtask/public-api/` |
 //! | `viewer`                 | the viewer's pages in headless Chromium (also a step of `test`): every model's page draws without an error, the Panda against its reference image, the trot moves when scrubbed |
+//! | `docs [--check]`         | regenerates every figure and table of the docs that a command draws the same on every run (`--check`: fails naming each committed file that differs) |
 //! | `costs`                  | runs the cost probe, measures sizes and bounds the stack, rewrites the tables in `docs/sections/firmware.md` and `firmware/expected/sizes.txt` |
 //! | `stack [image] [words]`  | worst-case stack per image and per cost-table row from a static call graph, checked against the painted figures (`--check-frames`: the frame reading against LLVM's `-Z emit-stack-sizes`) |
 //! | `panic-sites [image]`    | the panic call sites of one image (default: all) by source, function and line |
@@ -23,6 +24,7 @@
 
 mod costs;
 mod defmt_log;
+mod docs;
 mod expected;
 mod firmware;
 mod fp_ops;
@@ -41,7 +43,7 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 const USAGE: &str =
-    "usage: cargo xtask <run [example] | test | lint | costs | stack [image [words]] | stack --frames <image> | stack --check-frames | panic-sites [image] | viewer | public-api [--bless] | bless | profile [model] [algorithm] | host-profile <algorithm> <model> [--pinocchio]>";
+    "usage: cargo xtask <run [example] | test | lint | docs [--check] | costs | stack [image [words]] | stack --frames <image> | stack --check-frames | panic-sites [image] | viewer | public-api [--bless] | bless | profile [model] [algorithm] | host-profile <algorithm> <model> [--pinocchio]>";
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -49,6 +51,7 @@ fn main() -> ExitCode {
         Some("run") => run(args.get(1).map(String::as_str)),
         Some("test") => test(),
         Some("lint") => lint(),
+        Some("docs") => docs::run(&args[1..]),
         Some("costs") => costs::regenerate(),
         Some("viewer") => viewer::check(),
         Some("bless") => bless(),
@@ -138,6 +141,7 @@ fn test() -> Result<()> {
     firmware::check_panic_reentry()?;
     costs::check_sizes()?;
     costs::check_goals_of_last_run()?;
+    docs::check_after_test()?;
     panic_sites::check()?;
     stack_bound::check()?;
     viewer::check()?;

@@ -373,8 +373,9 @@ pub fn check() -> Result<()> {
     Ok(())
 }
 
-/// Rewrites the recorded counts.
-pub fn record() -> Result<()> {
+/// The recorded counts' text (`cargo xtask costs` writes it to
+/// `firmware/expected/panic_sites.txt`): each image's counts by source.
+pub fn expected_text() -> Result<String> {
     let mut text = String::from(
         "# Calls to core's panic entry points in each firmware image, by the source of the code that makes them\n\
          # (cargo xtask test fails on any of rodyn's, and when another grows; cargo xtask costs rewrites this file).\n",
@@ -384,9 +385,7 @@ pub fn record() -> Result<()> {
             text.push_str(&format!("{name} {source} {n}\n"));
         }
     }
-    std::fs::write(expected_path(), text)?;
-    println!("wrote {}", expected_path().display());
-    Ok(())
+    Ok(text)
 }
 
 /// `cargo xtask panic-sites [image]`: the sites of one image (or every

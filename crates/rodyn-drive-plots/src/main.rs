@@ -3,14 +3,14 @@
 //! matrix ∂q̈/∂a along the trajectory.
 //!
 //! Run from anywhere in the workspace:
-//! `cargo run -p rodyn-drive-plots --release`
-//! It writes `docs/img/drives/muscle_robot_trajectory.svg` and
-//! `docs/img/drives/muscle_robot_sensitivity.svg`, and prints a summary.
+//! `cargo run -p rodyn-drive-plots --release [-- --out DIR]`
+//! It writes `muscle_robot_trajectory.svg` and `muscle_robot_sensitivity.svg`
+//! into `DIR` (by default `docs/img/drives/`), and prints a summary.
 
 use plotters::prelude::*;
 use rodyn::algorithm::forward_dynamics::Aba;
 use rodyn::sim::{Integrator, Rk4};
-use rodyn_cli::{no_arguments, writable_dir};
+use rodyn_cli::writable_dir;
 use rodyn_scenarios::muscle_robot::{
     self as robot, example_excitation, RobotForces, RobotLoads, INITIAL_ACTIVATION, NU, NV,
 };
@@ -140,9 +140,20 @@ where
     Ok(())
 }
 
+/// `--out DIR`, or the docs' figure directory.
+fn output_dir() -> Result<PathBuf, String> {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    match args.as_slice() {
+        [] => Ok(PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../docs/img/drives")),
+        [flag, dir] if flag == "--out" => Ok(PathBuf::from(dir)),
+        _ => Err(format!(
+            "unexpected arguments {args:?}; usage: rodyn-drive-plots [--out DIR]"
+        )),
+    }
+}
+
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    no_arguments("rodyn-drive-plots", "writes docs/img/drives")?;
-    let out = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../docs/img/drives");
+    let out = output_dir()?;
     writable_dir(&out)?;
     let samples = simulate()?;
 
