@@ -124,8 +124,16 @@ fn the_sweep_refuses_missing_empty_or_unwritable_files() {
 
 #[test]
 fn examples_without_options_refuse_arguments() {
-    for name in ["gait_prosthesis", "gait_data", "f32_error_table"] {
+    for name in ["gait_data", "f32_error_table"] {
         let exe = example("rodyn-host-tests", name);
         assert_refused(&exe, &["--duration", "10"], "takes no arguments");
     }
+    // `gait_prosthesis` takes `--out DIR` only.
+    let exe = example("rodyn-host-tests", "gait_prosthesis");
+    assert_refused(
+        &exe,
+        &["--duration", "10"],
+        "usage: gait_prosthesis [--out DIR]",
+    );
+    assert_refused(&exe, &["--out"], "usage: gait_prosthesis [--out DIR]");
 }
