@@ -151,7 +151,9 @@ pub enum Error {
     MassMatrixNotPositiveDefinite {
         /// Velocity coordinate at which the factorisation broke down.
         dof: usize,
-        /// The pivot found, relative to the largest diagonal entry.
+        /// The pivot found, relative to its own diagonal entry of the mass
+        /// matrix (`D[k] / M[k][k]`: the share of the coordinate's inertia
+        /// that the others do not already account for).
         relative_pivot: f64,
     },
     /// A model parameter is physically impossible.
@@ -264,7 +266,7 @@ impl fmt::Display for Error {
             } => write!(
                 f,
                 "mass matrix is not positive definite at dof {dof} \
-                 (pivot / max diagonal = {relative_pivot:e})"
+                 (pivot / its diagonal entry = {relative_pivot:e})"
             ),
             Self::InvalidModel { body, problem } => {
                 write!(f, "body {body}: invalid model parameter: {problem:?}")

@@ -59,9 +59,11 @@ use crate::space::VectorOps;
 use crate::spatial::{Motion, Spatial};
 use crate::Scalar;
 
-/// Relative size (of the Delassus matrix's largest diagonal entry, in
-/// units of ε) below which a pivot counts as zero: the contacts are
-/// redundant.
+/// Relative size (of the pivot's own diagonal entry of the Delassus
+/// matrix, in units of ε) below which a pivot counts as zero: the contacts
+/// are redundant. Each row against its own entry, since a frame contact's
+/// force rows (1/kg) and moment rows (1/(kg m²)) have different units (see
+/// [`cholesky_in_place`]).
 const PIVOT_TOLERANCE: f64 = 1e3;
 
 /// How [`constrained_forward_dynamics_with`] solves the system (see the
