@@ -16,6 +16,7 @@ use rodyn::algorithm::frames::{
 };
 use rodyn::algorithm::kinematics::{forward_kinematics, forward_kinematics_acceleration};
 use rodyn::algorithm::rnea::rnea;
+use rodyn::error::Setting;
 use rodyn::prelude::*;
 use rodyn::space::RigidTransform;
 use rodyn::spatial::log6;
@@ -303,34 +304,34 @@ fn bad_input_and_redundant_contacts() {
         }
     );
     let mut cdata = ConstraintData::<f64, NV, NC>::new();
-    for (settings, index) in [
+    for (settings, setting) in [
         (
             ConstraintSettings {
                 kp: -1.0,
                 ..ConstraintSettings::default()
             },
-            0,
+            Setting::PositionGain,
         ),
         (
             ConstraintSettings {
                 kd: f64::NAN,
                 ..ConstraintSettings::default()
             },
-            1,
+            Setting::VelocityGain,
         ),
         (
             ConstraintSettings {
                 damping: f64::INFINITY,
                 ..ConstraintSettings::default()
             },
-            2,
+            Setting::ContactDamping,
         ),
     ] {
         let error = constrained_forward_dynamics(
             &model, &mut data, &mut cdata, &q, &v, &tau, &contacts, &settings,
         )
         .unwrap_err();
-        assert_eq!(error, Error::InvalidGain { index });
+        assert_eq!(error, Error::InvalidSetting { setting });
     }
     let foot = *contacts[0].held_frame();
     let missing = Contact::point(Frame::new(NB, foot.placement), Vec3::ZERO);
@@ -520,7 +521,12 @@ fn impacts_match_pinocchio_and_never_gain_energy() {
         0.0,
     )
     .unwrap_err();
-    assert_eq!(error, Error::InvalidGain { index: 0 });
+    assert_eq!(
+        error,
+        Error::InvalidSetting {
+            setting: Setting::Restitution
+        }
+    );
 }
 
 /// The f32 solves (both methods) against Pinocchio's f64 results on every

@@ -10,6 +10,7 @@ use rodyn::algorithm::constrained_dynamics::{
 use rodyn::algorithm::contact_inverse_dynamics::{
     contact_inverse_dynamics, ContactInverseDynamicsData, ContactInverseDynamicsSettings,
 };
+use rodyn::error::Setting;
 use rodyn::prelude::*;
 use rodyn::Error;
 use rodyn_host_tests::contact_fixture::{
@@ -234,30 +235,33 @@ fn bad_input_is_an_error() {
     };
     let zero = [0.0; SOLO_NV];
     assert!(call(&zero, &good).is_ok());
-    for (settings, index) in [
+    for (settings, setting) in [
         (
             ContactInverseDynamicsSettings {
                 unactuated: 19,
                 ..good
             },
-            3,
+            Setting::Unactuated,
         ),
         (
             ContactInverseDynamicsSettings {
                 regularisation: 0.0,
                 ..good
             },
-            4,
+            Setting::Regularisation,
         ),
         (
             ContactInverseDynamicsSettings {
                 friction: f64::NAN,
                 ..good
             },
-            5,
+            Setting::Friction,
         ),
     ] {
-        assert_eq!(call(&zero, &settings), Err(Error::InvalidGain { index }));
+        assert_eq!(
+            call(&zero, &settings),
+            Err(Error::InvalidSetting { setting })
+        );
     }
     let mut nan = zero;
     nan[4] = f64::NAN;

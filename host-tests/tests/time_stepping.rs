@@ -5,6 +5,7 @@
 //! angle, and bad settings.
 
 use rodyn::algorithm::energy::{kinetic_energy, potential_energy};
+use rodyn::error::Setting;
 use rodyn::joint::{FreeFlyer, Joint};
 use rodyn::prelude::*;
 use rodyn::sim::time_stepping::{time_step, TimeSteppingData, TimeSteppingSettings};
@@ -228,28 +229,28 @@ fn bad_settings_are_errors() {
     let points = corners::<f64>();
     let mut state = resting_box::<f64>([0.0; 6]);
     let before = state;
-    for (settings, index) in [
+    for (settings, setting) in [
         (
             TimeSteppingSettings {
                 friction: -1.0,
                 ..good
             },
-            0,
+            Setting::Friction,
         ),
-        (TimeSteppingSettings { sweeps: 0, ..good }, 1),
+        (TimeSteppingSettings { sweeps: 0, ..good }, Setting::Sweeps),
         (
             TimeSteppingSettings {
                 depth_recovery: 1.5,
                 ..good
             },
-            2,
+            Setting::DepthRecovery,
         ),
         (
             TimeSteppingSettings {
                 margin: f64::NAN,
                 ..good
             },
-            3,
+            Setting::Margin,
         ),
     ] {
         let error = time_step(
@@ -257,7 +258,7 @@ fn bad_settings_are_errors() {
             1e-3,
         )
         .unwrap_err();
-        assert_eq!(error, Error::InvalidGain { index });
+        assert_eq!(error, Error::InvalidSetting { setting });
     }
     let mut small = TimeSteppingData::<f64, 6, 9, 4>::new();
     let error = time_step(
@@ -314,7 +315,12 @@ fn bad_settings_are_errors() {
         &model, &mut data, &mut sdata, &mut state, &[0.0; 6], &negative, &points, &good, 1e-3,
     )
     .unwrap_err();
-    assert_eq!(error, Error::InvalidGain { index: 4 });
+    assert_eq!(
+        error,
+        Error::InvalidSetting {
+            setting: Setting::JointDamping { dof: 1 }
+        }
+    );
     let mut tau = [0.0; 6];
     tau[3] = f64::NAN;
     assert!(time_step(

@@ -8,7 +8,7 @@
 use crate::data::Data;
 use crate::error::{Quantity, Result};
 use crate::joint::JointModel;
-use crate::model::{check_finite, Model};
+use crate::model::{check_finite, check_vectors_result, Model};
 use crate::space::{RigidTransform, Space, VectorOps};
 use crate::Scalar;
 
@@ -93,7 +93,11 @@ pub fn forward_kinematics_velocity<
 /// `v`, `c`, `a` (body frames).
 ///
 /// # Errors
-/// As [`forward_kinematics_velocity`], and for a non-finite `a`.
+/// As [`forward_kinematics_velocity`], [`Error::NonFinite`](crate::Error::NonFinite)
+/// for a non-finite `a`, and
+/// [`Error::NonFiniteResult`](crate::Error::NonFiniteResult)
+/// (`Quantity::BodyAcceleration`, naming the body) when the products of
+/// the velocities overflow (a velocity of 1e154 in f64).
 pub fn forward_kinematics_acceleration<
     S: Scalar,
     const NB: usize,
@@ -120,5 +124,5 @@ pub fn forward_kinematics_acceleration<
             .joint(i)
             .add_motion(&(a_parent + data.c[i]), joint_rates(model, i, a));
     }
-    Ok(())
+    check_vectors_result(&data.a, Quantity::BodyAcceleration)
 }
