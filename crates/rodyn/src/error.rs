@@ -391,6 +391,19 @@ pub enum Error {
         /// The contact that row belongs to (its index in the slice given).
         contact: usize,
     },
+    /// A pose given to an algorithm (an inverse-kinematics target, a
+    /// frame's placement) that is not a rigid motion.
+    InvalidPose {
+        /// Which pose: `Quantity::Target`, or `Quantity::FramePlacement`
+        /// with `index` the frame's body.
+        quantity: Quantity,
+        /// The frame's body, or 0.
+        index: usize,
+        /// What is wrong with it (a non-finite entry, a rotation that is
+        /// not orthonormal or is a reflection, a translation that
+        /// overflows).
+        problem: ModelProblem,
+    },
     /// A finite input outside the range the model describes, such as a
     /// path that stretches a muscle fibre past
     /// [`MAX_NORMALIZED_FIBER_LENGTH`](crate::drive::muscle::MAX_NORMALIZED_FIBER_LENGTH)
@@ -488,6 +501,24 @@ impl fmt::Display for Error {
                 f,
                 "the contacts are redundant at constrained row {row} (contact {contact}); \
                  give a damping or drop a contact"
+            ),
+            Self::InvalidPose {
+                quantity,
+                index,
+                problem,
+            } => write!(
+                f,
+                "{} ({} {index}) is not a rigid motion: {}",
+                quantity.describe(),
+                quantity.index_name(),
+                match problem {
+                    ModelProblem::NonFiniteParameter => "a NaN or infinite entry",
+                    ModelProblem::RotationNotOrthonormal =>
+                        "its rotation is not orthonormal (RᵀR ≠ I)",
+                    ModelProblem::Reflection => "its rotation is a reflection (det R = −1)",
+                    ModelProblem::Overflow => "its translation overflows the scalar type",
+                    _ => "invalid",
+                }
             ),
             Self::OutOfRange { quantity, index } => write!(
                 f,
@@ -601,6 +632,11 @@ impl defmt::Format for Error {
             Self::RedundantConstraints { row, contact } => {
                 defmt::write!(f, "redundant contacts at row {} (contact {})", row, contact)
             }
+            Self::InvalidPose {
+                quantity,
+                index,
+                problem,
+            } => defmt::write!(f, "invalid pose {} {}: {}", quantity, index, problem),
             Self::OutOfRange { quantity, index } => {
                 defmt::write!(f, "{} at index {} out of range", quantity, index)
             }
