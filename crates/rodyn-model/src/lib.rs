@@ -28,6 +28,7 @@ pub mod description;
 pub mod diagnostic;
 pub mod geometry;
 pub mod names;
+pub mod neutral;
 pub mod physics;
 pub mod render;
 pub mod rodyn_file;
@@ -110,6 +111,8 @@ pub fn read_model_file(path: &Path) -> std::io::Result<String> {
 pub fn load(path: &Path, options: LoadOptions) -> diagnostic::Result<ModelDescription> {
     let mut model = load_file(path, options)?;
     model.round_quarter_turns |= options.round_quarter_turns;
+    let found = neutral::warnings(&model);
+    model.warnings.extend(found);
     Ok(model)
 }
 
