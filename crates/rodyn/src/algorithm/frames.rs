@@ -488,8 +488,9 @@ fn frame_motion<S: Scalar, const NB: usize, const NV: usize, G: FrameSpace>(
             G::translation_only(&o_m_f).act_inv_motion(&o_m_i.act_motion(m))
         }
     };
-    // In the world the placement does not enter the result: test it too.
-    if motion.is_finite() && frame.placement.is_finite() {
+    // One test of the result: a non-finite placement shows in it (in the
+    // world frame it does not enter, and the body's motion is the answer).
+    if motion.is_finite() {
         Ok(motion)
     } else {
         Err(frame_error(frame))

@@ -115,6 +115,8 @@ pub fn forward_kinematics_acceleration<
     check_finite(a, Quantity::Acceleration)?;
     velocity_pass(model, data, q, v);
     pose_pass(model, data);
+    // Summed as they are formed, for one finiteness test of them all.
+    let mut sum = G::Motion::<S>::ZERO;
     for i in 0..NB {
         let a_parent = match model.parent(i) {
             Some(p) => data.li_m_i[i].act_inv_motion(&data.a[p]),
@@ -123,6 +125,10 @@ pub fn forward_kinematics_acceleration<
         data.a[i] = model
             .joint(i)
             .add_motion(&(a_parent + data.c[i]), joint_rates(model, i, a));
+        sum += data.a[i];
+    }
+    if sum.is_finite() {
+        return Ok(());
     }
     check_vectors_result(&data.a, Quantity::BodyAcceleration)
 }
