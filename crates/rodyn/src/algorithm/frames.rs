@@ -344,7 +344,7 @@ pub fn express_world_motion<S: Scalar, G: FrameSpace>(
 /// [`Error::FrameBodyOutOfRange`] when `frame.body` is not below `NB`;
 /// [`Error::NonFinite`] (`Quantity::FramePlacement`, the frame's body) for
 /// a frame whose placement is not finite, [`Error::NonFiniteResult`] for a
-/// result that overflows.
+/// pose that overflows.
 ///
 /// # Example
 ///
@@ -410,8 +410,9 @@ fn frame_error<S: Scalar, G: Space>(frame: &Frame<S, G>) -> Error {
 /// # Errors
 /// [`Error::FrameBodyOutOfRange`] when `frame.body` is not below `NB`;
 /// [`Error::NonFinite`] (`Quantity::FramePlacement`, the frame's body) for
-/// a frame whose placement is not finite, [`Error::NonFiniteResult`] for a
-/// result that overflows.
+/// a frame whose placement is not finite where it enters the result (in
+/// [`ReferenceFrame::World`] a motion is the body's, whatever the
+/// placement), [`Error::NonFiniteResult`] for a result that overflows.
 pub fn frame_velocity<S: Scalar, const NB: usize, const NV: usize, G: FrameSpace>(
     data: &Data<S, NB, NV, G>,
     frame: &Frame<S, G>,
@@ -429,8 +430,9 @@ pub fn frame_velocity<S: Scalar, const NB: usize, const NV: usize, G: FrameSpace
 /// # Errors
 /// [`Error::FrameBodyOutOfRange`] when `frame.body` is not below `NB`;
 /// [`Error::NonFinite`] (`Quantity::FramePlacement`, the frame's body) for
-/// a frame whose placement is not finite, [`Error::NonFiniteResult`] for a
-/// result that overflows.
+/// a frame whose placement is not finite where it enters the result (in
+/// [`ReferenceFrame::World`] a motion is the body's, whatever the
+/// placement), [`Error::NonFiniteResult`] for a result that overflows.
 pub fn frame_acceleration<S: Scalar, const NB: usize, const NV: usize, G: FrameSpace>(
     data: &Data<S, NB, NV, G>,
     frame: &Frame<S, G>,
@@ -456,8 +458,9 @@ pub fn frame_acceleration<S: Scalar, const NB: usize, const NV: usize, G: FrameS
 /// # Errors
 /// [`Error::FrameBodyOutOfRange`] when `frame.body` is not below `NB`;
 /// [`Error::NonFinite`] (`Quantity::FramePlacement`, the frame's body) for
-/// a frame whose placement is not finite, [`Error::NonFiniteResult`] for a
-/// result that overflows.
+/// a frame whose placement is not finite where it enters the result (in
+/// [`ReferenceFrame::World`] a motion is the body's, whatever the
+/// placement), [`Error::NonFiniteResult`] for a result that overflows.
 pub fn frame_classical_acceleration<S: Scalar, const NB: usize, const NV: usize, G: FrameSpace>(
     data: &Data<S, NB, NV, G>,
     frame: &Frame<S, G>,

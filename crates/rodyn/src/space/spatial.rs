@@ -119,7 +119,7 @@ impl<S: Scalar> VectorOps<S> for Motion<S> {
         // can overflow it.
         let (a, l) = (&self.ang, &self.lin);
         ((a.x + a.y) + (a.z + l.x) + (l.y + l.z)).is_finite()
-            || (self.ang.is_finite() && self.lin.is_finite())
+            || crate::scalar::entries_finite(&[a.x, a.y, a.z, l.x, l.y, l.z])
     }
     #[inline]
     fn component(&self, k: usize) -> S {
@@ -162,7 +162,7 @@ impl<S: Scalar> VectorOps<S> for Force<S> {
         // can overflow it.
         let (a, l) = (&self.ang, &self.lin);
         ((a.x + a.y) + (a.z + l.x) + (l.y + l.z)).is_finite()
-            || (self.ang.is_finite() && self.lin.is_finite())
+            || crate::scalar::entries_finite(&[a.x, a.y, a.z, l.x, l.y, l.z])
     }
     #[inline]
     fn component(&self, k: usize) -> S {

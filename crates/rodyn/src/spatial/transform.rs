@@ -38,7 +38,10 @@ impl<S: Scalar> Transform<S> {
             + (m[1][0] + m[1][1] + m[1][2])
             + (m[2][0] + m[2][1] + m[2][2]);
         (rows + (t.x + t.y + t.z)).is_finite()
-            || (self.trans.is_finite() && self.rot.m.iter().flatten().all(|v| v.is_finite()))
+            || crate::scalar::entries_finite(&[
+                m[0][0], m[0][1], m[0][2], m[1][0], m[1][1], m[1][2], m[2][0], m[2][1], m[2][2],
+                t.x, t.y, t.z,
+            ])
     }
     /// The identity transform.
     pub const IDENTITY: Self = Self::new(Mat3::IDENTITY, Vec3::ZERO);
