@@ -115,7 +115,9 @@ pub fn forward_kinematics_acceleration<
     check_finite(a, Quantity::Acceleration)?;
     velocity_pass(model, data, q, v);
     pose_pass(model, data);
-    // Summed as they are formed, for one finiteness test of them all.
+    // Summed as they are formed, for one finiteness test of them all: the
+    // leaves' only (and any body whose next one is not its child), since a
+    // NaN or infinity in a body's acceleration reaches every descendant's.
     let mut sum = G::Motion::<S>::ZERO;
     for i in 0..NB {
         let a_parent = match model.parent(i) {
@@ -125,7 +127,9 @@ pub fn forward_kinematics_acceleration<
         data.a[i] = model
             .joint(i)
             .add_motion(&(a_parent + data.c[i]), joint_rates(model, i, a));
-        sum += data.a[i];
+        if i + 1 == NB || model.parent(i + 1) != Some(i) {
+            sum += data.a[i];
+        }
     }
     if sum.is_finite() {
         return Ok(());
