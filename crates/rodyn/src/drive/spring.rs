@@ -16,11 +16,21 @@ use crate::Scalar;
 /// (`Quantity::Drive`, its index in `parameters`), or finite numbers whose
 /// result overflows (`Quantity::Drive`). One test on the way out, the
 /// search only on failure.
+#[inline]
 fn checked<S: Scalar>(value: S, length: S, parameters: &[S]) -> Result<S> {
     if value.is_finite() {
-        return Ok(value);
+        Ok(value)
+    } else {
+        Err(why_not_finite(length, parameters))
     }
-    Err(if !length.is_finite() {
+}
+
+/// [`checked`]'s error, out of line: it runs only on failure, and a
+/// firmware's image should not carry a copy at every call.
+#[cold]
+#[inline(never)]
+fn why_not_finite<S: Scalar>(length: S, parameters: &[S]) -> Error {
+    if !length.is_finite() {
         Error::NonFinite {
             quantity: Quantity::PathLength,
             index: 0,
@@ -35,7 +45,7 @@ fn checked<S: Scalar>(value: S, length: S, parameters: &[S]) -> Result<S> {
             quantity: Quantity::Drive,
             index: 0,
         }
-    })
+    }
 }
 
 /// A linear spring along a path: `T = k (L - L₀)`, energy `½ k (L - L₀)²`.
