@@ -466,43 +466,14 @@ pub fn frame_classical_acceleration<S: Scalar, const NB: usize, const NV: usize,
     frame: &Frame<S, G>,
     reference: ReferenceFrame,
 ) -> Result<G::Motion<S>> {
-    let v = frame_motion_unchecked(data, frame, &data.v, reference)?;
-    let a = frame_motion_unchecked(data, frame, &data.a, reference)?;
-    // (ω, v) × (0, v) = (0, ω × v); one test of the result, which a
-    // non-finite velocity or acceleration reaches.
-    checked_frame_motion(frame, a + v.cross_motion(&G::linear_part(&v)))
+    let v = frame_velocity(data, frame, reference)?;
+    let a = frame_acceleration(data, frame, reference)?;
+    // (ω, v) × (0, v) = (0, ω × v).
+    Ok(a + v.cross_motion(&G::linear_part(&v)))
 }
 
-/// `motions[frame.body]` (a body-frame quantity) seen at frame f in
-/// `reference`, tested.
+/// `motions[frame.body]` (a body-frame quantity) seen at frame f in `reference`.
 fn frame_motion<S: Scalar, const NB: usize, const NV: usize, G: FrameSpace>(
-    data: &Data<S, NB, NV, G>,
-    frame: &Frame<S, G>,
-    motions: &[G::Motion<S>; NB],
-    reference: ReferenceFrame,
-) -> Result<G::Motion<S>> {
-    let motion = frame_motion_unchecked(data, frame, motions, reference)?;
-    checked_frame_motion(frame, motion)
-}
-
-/// `motion` when finite; otherwise the error naming the frame. One test
-/// of the result: a non-finite placement shows in it (in the world frame
-/// it does not enter, and the body's motion is the answer).
-#[inline]
-fn checked_frame_motion<S: Scalar, G: FrameSpace>(
-    frame: &Frame<S, G>,
-    motion: G::Motion<S>,
-) -> Result<G::Motion<S>> {
-    if motion.is_finite() {
-        Ok(motion)
-    } else {
-        Err(frame_error(frame))
-    }
-}
-
-/// [`frame_motion`] without the test of its result, for callers that
-/// test what they form from it.
-fn frame_motion_unchecked<S: Scalar, const NB: usize, const NV: usize, G: FrameSpace>(
     data: &Data<S, NB, NV, G>,
     frame: &Frame<S, G>,
     motions: &[G::Motion<S>; NB],
@@ -512,14 +483,21 @@ fn frame_motion_unchecked<S: Scalar, const NB: usize, const NV: usize, G: FrameS
     let (Some(o_m_i), Some(m)) = (data.o_m_i.get(body), motions.get(body)) else {
         return Err(Error::FrameBodyOutOfRange { body });
     };
-    Ok(match reference {
+    let motion = match reference {
         ReferenceFrame::Local => frame.placement.act_inv_motion(m),
         ReferenceFrame::World => o_m_i.act_motion(m),
         ReferenceFrame::LocalWorldAligned => {
             let o_m_f = o_m_i.compose(&frame.placement);
             G::translation_only(&o_m_f).act_inv_motion(&o_m_i.act_motion(m))
         }
-    })
+    };
+    // One test of the result: a non-finite placement shows in it (in the
+    // world frame it does not enter, and the body's motion is the answer).
+    if motion.is_finite() {
+        Ok(motion)
+    } else {
+        Err(frame_error(frame))
+    }
 }
 
 /// A zero motion, for callers that fill arrays of them.
