@@ -260,7 +260,7 @@ fn for_each_supporting_coordinate<
 /// # Errors
 /// [`Error::FrameBodyOutOfRange`](crate::Error::FrameBodyOutOfRange) when
 /// `frame.body` is not below `NB`; those of
-/// [`frame_placement`](super::frames::frame_placement) for a frame whose
+/// [`frame_placement`] for a frame whose
 /// placement is not finite.
 pub fn frame_jacobian<
     S: Scalar,
@@ -302,7 +302,7 @@ pub fn frame_jacobian<
 /// # Errors
 /// [`Error::FrameBodyOutOfRange`](crate::Error::FrameBodyOutOfRange) when
 /// `frame.body` is not below `NB`; those of
-/// [`frame_placement`](super::frames::frame_placement) for a frame whose
+/// [`frame_placement`] for a frame whose
 /// placement is not finite.
 pub fn frame_jacobian_time_variation<
     S: Scalar,
