@@ -16,6 +16,7 @@ use rodyn::algorithm::frames::{
 };
 use rodyn::algorithm::kinematics::{forward_kinematics, forward_kinematics_acceleration};
 use rodyn::algorithm::rnea::rnea;
+use rodyn::error::Setting;
 use rodyn::prelude::*;
 use rodyn::space::RigidTransform;
 use rodyn::spatial::log6;
@@ -294,16 +295,25 @@ fn bad_input_and_redundant_contacts() {
         }
     );
     let mut cdata = ConstraintData::<f64, NV, NC>::new();
-    for (settings, index) in [
-        (ConstraintSettings::new().with_kp(-1.0), 0),
-        (ConstraintSettings::new().with_kd(f64::NAN), 1),
-        (ConstraintSettings::new().with_damping(f64::INFINITY), 2),
+    for (settings, setting) in [
+        (
+            ConstraintSettings::new().with_kp(-1.0),
+            Setting::PositionGain,
+        ),
+        (
+            ConstraintSettings::new().with_kd(f64::NAN),
+            Setting::VelocityGain,
+        ),
+        (
+            ConstraintSettings::new().with_damping(f64::INFINITY),
+            Setting::ContactDamping,
+        ),
     ] {
         let error = constrained_forward_dynamics(
             &model, &mut data, &mut cdata, &q, &v, &tau, &contacts, &settings,
         )
         .unwrap_err();
-        assert_eq!(error, Error::InvalidGain { index });
+        assert_eq!(error, Error::InvalidSetting { setting });
     }
     let foot = *contacts[0].held_frame();
     let missing = Contact::point(Frame::new(NB, foot.placement), Vec3::ZERO);
@@ -490,7 +500,12 @@ fn impacts_match_pinocchio_and_never_gain_energy() {
         0.0,
     )
     .unwrap_err();
-    assert_eq!(error, Error::InvalidGain { index: 0 });
+    assert_eq!(
+        error,
+        Error::InvalidSetting {
+            setting: Setting::Restitution
+        }
+    );
 }
 
 /// The f32 solves (both methods) against Pinocchio's f64 results on every

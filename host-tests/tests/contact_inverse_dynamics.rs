@@ -10,6 +10,7 @@ use rodyn::algorithm::constrained_dynamics::{
 use rodyn::algorithm::contact_inverse_dynamics::{
     contact_inverse_dynamics, ContactInverseDynamicsData, ContactInverseDynamicsSettings,
 };
+use rodyn::error::Setting;
 use rodyn::prelude::*;
 use rodyn::Error;
 use rodyn_host_tests::contact_fixture::{
@@ -230,12 +231,15 @@ fn bad_input_is_an_error() {
     };
     let zero = [0.0; SOLO_NV];
     assert!(call(&zero, &good).is_ok());
-    for (settings, index) in [
-        (good.with_unactuated(19), 3),
-        (good.with_regularisation(0.0), 4),
-        (good.with_friction(f64::NAN), 5),
+    for (settings, setting) in [
+        (good.with_unactuated(19), Setting::Unactuated),
+        (good.with_regularisation(0.0), Setting::Regularisation),
+        (good.with_friction(f64::NAN), Setting::Friction),
     ] {
-        assert_eq!(call(&zero, &settings), Err(Error::InvalidGain { index }));
+        assert_eq!(
+            call(&zero, &settings),
+            Err(Error::InvalidSetting { setting })
+        );
     }
     let mut nan = zero;
     nan[4] = f64::NAN;

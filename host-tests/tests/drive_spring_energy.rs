@@ -107,7 +107,15 @@ fn pendulum_with_return_spring_conserves_energy() {
                 )
                 .unwrap()
             },
-            |q, v| total_energy(&model, &spring.path, |l| spring.potential_energy(l), q, v),
+            |q, v| {
+                total_energy(
+                    &model,
+                    &spring.path,
+                    |l| spring.potential_energy(l).unwrap(),
+                    q,
+                    v,
+                )
+            },
         )
     };
     let (coarse, e0) = run(2e-3);
@@ -178,7 +186,15 @@ fn double_pendulum_with_hardening_spring_over_a_via_point_conserves_energy() {
                 )
                 .unwrap()
             },
-            |q, v| total_energy(&model, &spring.path, |l| spring.potential_energy(l), q, v),
+            |q, v| {
+                total_energy(
+                    &model,
+                    &spring.path,
+                    |l| spring.potential_energy(l).unwrap(),
+                    q,
+                    v,
+                )
+            },
         )
     };
     let (coarse, e0) = run(2e-3);

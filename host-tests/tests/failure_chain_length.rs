@@ -1,6 +1,7 @@
 //! Failure map 1: f32 against f64 on long chains. ABA stays accurate in f32
-//! up to 120 links; CRBA's mass matrix loses its positive definiteness in
-//! f32 on long chains, and rodyn reports it instead of returning garbage.
+//! up to 120 links; CRBA's f32 mass matrix grows so ill-conditioned on long
+//! chains that its solution loses every digit but the first, while staying
+//! finite.
 
 use rodyn::algorithm::forward_dynamics::{Aba, Crba, ForwardDynamics};
 use rodyn::prelude::*;
@@ -77,21 +78,17 @@ fn aba_in_f32_stays_accurate_up_to_120_links() {
 }
 
 #[test]
-fn crba_in_f32_degrades_with_length_then_reports_the_failure() {
+fn crba_in_f32_degrades_with_length_and_stays_finite() {
     let short = f32_error::<Crba, 5>().unwrap();
     let medium = f32_error::<Crba, 20>().unwrap();
     assert!(short < 1e-5, "5 links: {short}");
     // Measured 2e-4 at 20 links: two orders of magnitude worse than ABA.
     assert!(medium > 1e-5 && medium < 1e-2, "20 links: {medium}");
-    // At 120 links the f32 mass matrix is no longer numerically positive
-    // definite: an error naming the coordinate, never NaN.
-    match f32_error::<Crba, 120>() {
-        Err(Error::MassMatrixNotPositiveDefinite {
-            dof,
-            relative_pivot,
-        }) => {
-            assert!(dof < 120 && relative_pivot.is_finite());
-        }
-        other => panic!("expected MassMatrixNotPositiveDefinite, got {other:?}"),
-    }
+    // At 120 links the f32 mass matrix is still positive definite pivot by
+    // pivot (each against its own diagonal entry), but so ill-conditioned
+    // that κ(M) ε_f32 approaches 1: the result is finite (`f32_error`
+    // asserts it) and far off (measured 0.12), the accuracy section's
+    // reason to use ABA for long chains in f32.
+    let long = f32_error::<Crba, 120>().unwrap();
+    assert!(long > 1e-2 && long < 1.0, "120 links: {long}");
 }

@@ -7,9 +7,10 @@
 
 use rodyn::algorithm::frames::frame_placement;
 use rodyn::algorithm::inverse_kinematics::{
-    log3, pose_error, solve, solve_with_fallback, IkData, IkSettings,
+    log3, pose_error, solve, solve_with_fallback, step, IkData, IkSettings,
 };
 use rodyn::algorithm::kinematics::forward_kinematics;
+use rodyn::error::{ModelProblem, Quantity, Setting};
 use rodyn::prelude::*;
 use rodyn::Frame;
 use rodyn_host_tests::fixture::Fixture;
@@ -149,6 +150,157 @@ fn reports_unreachable_targets() {
             }
         }
     }
+}
+
+/// A target that is not a pose, a frame that is not one, a damping or a
+/// tolerance no solve can use: each is named before any step, by `solve`
+/// and `solve_with_fallback`, and `q` is left alone. Never a convergence
+/// claimed (the zero matrix as the target's rotation once "converged").
+#[test]
+fn bad_problems_are_named_before_any_step() {
+    let (model, flange) = panda();
+    let good = IkSettings::new();
+    let reachable = Transform::new(Mat3::IDENTITY, Vec3::new(0.4, 0.1, 0.5));
+    let zero_rotation = Transform::new(Mat3::from_rows([[0.0; 3]; 3]), reachable.trans);
+    let reflection = Transform::new(
+        Mat3::from_rows([[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, -1.0]]),
+        reachable.trans,
+    );
+    let scaled = Transform::new(
+        Mat3::from_rows([[1.01, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]),
+        reachable.trans,
+    );
+    let nan_target = Transform::new(Mat3::IDENTITY, Vec3::new(f64::NAN, 0.0, 0.5));
+    let nan_frame = Frame::new(
+        flange.body,
+        Transform::new(Mat3::IDENTITY, Vec3::new(0.0, f64::NAN, 0.0)),
+    );
+    let target_error = |problem| Error::InvalidPose {
+        quantity: Quantity::Target,
+        index: 0,
+        problem,
+    };
+    let setting = |setting| Error::InvalidSetting { setting };
+    let cases = [
+        (
+            flange,
+            zero_rotation,
+            good,
+            target_error(ModelProblem::RotationNotOrthonormal),
+        ),
+        (
+            flange,
+            scaled,
+            good,
+            target_error(ModelProblem::RotationNotOrthonormal),
+        ),
+        (
+            flange,
+            reflection,
+            good,
+            target_error(ModelProblem::Reflection),
+        ),
+        (
+            flange,
+            nan_target,
+            good,
+            target_error(ModelProblem::NonFiniteParameter),
+        ),
+        (
+            nan_frame,
+            reachable,
+            good,
+            Error::InvalidPose {
+                quantity: Quantity::FramePlacement,
+                index: flange.body,
+                problem: ModelProblem::NonFiniteParameter,
+            },
+        ),
+        (
+            Frame::new(9, Transform::IDENTITY),
+            reachable,
+            good,
+            Error::FrameBodyOutOfRange { body: 9 },
+        ),
+        (
+            flange,
+            reachable,
+            good.with_damping(f64::NAN),
+            setting(Setting::IkDamping),
+        ),
+        (
+            flange,
+            reachable,
+            good.with_damping(-1e-3),
+            setting(Setting::IkDamping),
+        ),
+        (
+            flange,
+            reachable,
+            good.with_damping(0.0),
+            setting(Setting::IkDamping),
+        ),
+        (
+            flange,
+            reachable,
+            good.with_tolerance(f64::NAN),
+            setting(Setting::IkTolerance),
+        ),
+        (
+            flange,
+            reachable,
+            good.with_tolerance(-1.0),
+            setting(Setting::IkTolerance),
+        ),
+    ];
+    let mut data = Data::new();
+    let mut ws = IkData::new();
+    for (frame, target, settings, want) in cases {
+        for with_fallback in [false, true] {
+            let start = [0.1; 7];
+            let mut q = start;
+            let result = if with_fallback {
+                solve_with_fallback(
+                    &model, &mut data, &mut ws, &frame, &target, &settings, &[0.0; 7], &mut q,
+                )
+            } else {
+                solve(
+                    &model, &mut data, &mut ws, &frame, &target, &settings, &mut q,
+                )
+            };
+            assert_eq!(result, Err(want), "{frame:?} {target:?} {settings:?}");
+            assert_eq!(q, start);
+            let message = want.to_string();
+            assert!(!message.contains("convergence"), "{message}");
+        }
+    }
+    // One step alone: a NaN target or damping is named, not reported as a
+    // convergence failure.
+    let mut q = [0.1; 7];
+    assert_eq!(
+        step(
+            &model,
+            &mut data,
+            &mut ws,
+            &flange,
+            &nan_target,
+            1e-3,
+            &mut q
+        ),
+        Err(target_error(ModelProblem::NonFiniteParameter))
+    );
+    assert_eq!(
+        step(
+            &model,
+            &mut data,
+            &mut ws,
+            &flange,
+            &reachable,
+            f64::NAN,
+            &mut q
+        ),
+        Err(setting(Setting::IkDamping))
+    );
 }
 
 /// From each arm's zero configuration (stretched straight: singular) to

@@ -5,6 +5,7 @@
 //! angle, and bad settings.
 
 use rodyn::algorithm::energy::{kinetic_energy, potential_energy};
+use rodyn::error::Setting;
 use rodyn::joint::{FreeFlyer, Joint};
 use rodyn::prelude::*;
 use rodyn::sim::time_stepping::{time_step, TimeSteppingData, TimeSteppingSettings};
@@ -228,18 +229,18 @@ fn bad_settings_are_errors() {
     let points = corners::<f64>();
     let mut state = resting_box::<f64>([0.0; 6]);
     let before = state;
-    for (settings, index) in [
-        (TimeSteppingSettings::with_friction(-1.0), 0),
-        (good.with_sweeps(0), 1),
-        (good.with_depth_recovery(1.5), 2),
-        (good.with_margin(f64::NAN), 3),
+    for (settings, setting) in [
+        (TimeSteppingSettings::with_friction(-1.0), Setting::Friction),
+        (good.with_sweeps(0), Setting::Sweeps),
+        (good.with_depth_recovery(1.5), Setting::DepthRecovery),
+        (good.with_margin(f64::NAN), Setting::Margin),
     ] {
         let error = time_step(
             &model, &mut data, &mut sdata, &mut state, &[0.0; 6], &[0.0; 6], &points, &settings,
             1e-3,
         )
         .unwrap_err();
-        assert_eq!(error, Error::InvalidGain { index });
+        assert_eq!(error, Error::InvalidSetting { setting });
     }
     let mut small = TimeSteppingData::<f64, 6, 9, 4>::new();
     let error = time_step(
@@ -296,7 +297,12 @@ fn bad_settings_are_errors() {
         &model, &mut data, &mut sdata, &mut state, &[0.0; 6], &negative, &points, &good, 1e-3,
     )
     .unwrap_err();
-    assert_eq!(error, Error::InvalidGain { index: 4 });
+    assert_eq!(
+        error,
+        Error::InvalidSetting {
+            setting: Setting::JointDamping { dof: 1 }
+        }
+    );
     let mut tau = [0.0; 6];
     tau[3] = f64::NAN;
     assert!(time_step(

@@ -14,6 +14,14 @@ coordinates) at random states, with both soles held as 6-D frame
 contacts, one sole alone, and one sole as a frame with the other as a
 point, with and without gains.
 
+Two larger humanoids for the pivot tests in single precision, each at
+random states with both soles held as 6-D frame contacts (no gains) and
+one sole alone: Talos with its grippers (talos_full_v2.urdf, 50 velocity
+coordinates, gripper joints whose inertia is a millionth of the trunk's)
+and Unitree's G1 (g1_29dof_rev_1_0.urdf, 35 velocity coordinates; its
+ankle-roll links stand for the soles). They write talos_full.json and
+g1.json in the form of talos.json.
+
 Also `impulseDynamics` for the same contacts at the state's velocity,
 with restitution 0 and 0.5; and, for Solo12 under "redundant", a
 rank-deficient contact set per state (a foot held twice beside another)
@@ -63,6 +71,13 @@ TALOS_CASES = [
     ([("left_sole_link", FRAME), ("right_sole_link", POINT)], 40.0, 9.0, True),
 ]
 TALOS_STATES = 6
+
+#: (fixture name, URDF under example-robot-data's robots/, left and right
+#: sole frames, states)
+HUMANOIDS = [
+    ("talos_full", "talos_data/robots/talos_full_v2.urdf", "left_sole_link", "right_sole_link", 4),
+    ("g1", "g1_description/urdf/g1_29dof_rev_1_0.urdf", "left_ankle_roll_link", "right_ankle_roll_link", 4),
+]
 
 #: A redundant contact set (a rank-deficient J_c), solved by Pinocchio's
 #: proximal solver (mu, iterations): the same foot held twice beside
@@ -174,9 +189,34 @@ def talos():
     print(f"wrote {path} ({len(out)} states x {len(TALOS_CASES)} cases)")
 
 
+def humanoid(name, urdf_path, left, right, states):
+    """A humanoid's model and its states with both soles held, and one."""
+    urdf = example_robot_data_dir() / urdf_path
+    model = pin.buildModelFromUrdf(str(urdf), pin.JointModelFreeFlyer())
+    data = model.createData()
+    cases = [([(left, FRAME), (right, FRAME)], 0.0, 0.0, False), ([(right, FRAME)], 0.0, 0.0, False)]
+    rng = np.random.default_rng(2027)
+    out = []
+    for _ in range(states):
+        q = mf.random_configuration(model, rng)
+        v = rng.uniform(-1.0, 1.0, model.nv)
+        tau = pin.rnea(model, data, q, v, rng.uniform(-2.0, 2.0, model.nv)).copy()
+        solved = [solve_case(model, data, q, v, tau, *case) for case in cases]
+        out.append({"q": q.tolist(), "v": v.tolist(), "tau": tau.tolist(), "cases": solved})
+    description = mf.describe(mf.ModelSpec(name, floating=True), model)
+    description["urdf"] = f"example-robot-data: {urdf_path}"
+    fixture = {"generator": "tools/pinocchio/make_contact_fixtures.py", "pinocchio_version": pin.__version__,
+               "model": description, "states": [], "contact_states": out}
+    path = ROOT / "host-tests" / "fixtures" / "contacts" / f"{name}.json"
+    path.write_text(json.dumps(fixture) + "\n")
+    print(f"wrote {path} ({len(out)} states x {len(cases)} cases)")
+
+
 def main():
     solo12()
     talos()
+    for spec in HUMANOIDS:
+        humanoid(*spec)
 
 
 if __name__ == "__main__":

@@ -30,6 +30,7 @@ pub mod description;
 pub mod diagnostic;
 pub mod geometry;
 pub mod names;
+pub mod neutral;
 mod options;
 pub mod physics;
 pub mod render;
@@ -89,6 +90,8 @@ pub fn read_model_file(path: &Path) -> std::io::Result<String> {
 pub fn load(path: &Path, options: LoadOptions) -> diagnostic::Result<ModelDescription> {
     let mut model = load_file(path, options)?;
     model.round_quarter_turns |= options.round_quarter_turns;
+    let found = neutral::warnings(&model);
+    model.warnings.extend(found);
     Ok(model)
 }
 

@@ -169,7 +169,15 @@ fn run(args: &[String]) -> Result<(), String> {
             emit(&source)
         }
         "check" => {
+            // The same checks as code generation (distinct names, a planar
+            // model in its plane, values that fit f32), so that `check`
+            // never passes a file that `rust` or a build script refuses.
+            let stem = file
+                .file_stem()
+                .map_or("model".into(), |s| s.to_string_lossy().into_owned());
             let model = rodyn_model::load(&file, options).map_err(|d| d.to_string())?;
+            rodyn_model::codegen::generate(&model, &stem, &file.display().to_string())
+                .map_err(|d| d.to_string())?;
             for w in &model.warnings {
                 eprintln!("{w}");
             }

@@ -46,7 +46,7 @@ fn main() -> Result<(), rodyn::Error> {
             let kinetic = kinetic_energy(&PENDULUM, data, q, v)?;
             let gravity = potential_energy(&PENDULUM, data, q)?;
             let length = SPRING.path.kinematics(data)?.length;
-            Ok(kinetic + gravity + SPRING.potential_energy(length))
+            Ok(kinetic + gravity + SPRING.potential_energy(length)?)
         };
     let (mut q, mut v) = ([1.2], [0.0]);
     let dt = 1e-3;
@@ -64,7 +64,7 @@ fn main() -> Result<(), rodyn::Error> {
                 q[0],
                 v[0],
                 kin.length,
-                SPRING.tension(kin.length),
+                SPRING.tension(kin.length)?,
                 e
             );
         }

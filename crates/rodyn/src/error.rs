@@ -42,6 +42,65 @@ pub enum Quantity {
     /// [`GroundContact::force_at`](crate::sim::contact::GroundContact::force_at):
     /// its position (`index` 0–2) or velocity (3–5).
     ContactPoint,
+    /// A frame's placement in its body (`index` is the frame's body), or
+    /// the frame's pose, velocity or acceleration formed from it.
+    FramePlacement,
+    /// A body's spatial acceleration (a result; `index` is the body): it
+    /// overflows when the products of the joint velocities do.
+    BodyAcceleration,
+    /// The centroidal momentum map or its time variation (a result;
+    /// `index` counts its entries, row by row).
+    CentroidalMap,
+    /// An inverse-kinematics target pose.
+    Target,
+    /// A drive element's parameter or result (a spring's tension or
+    /// energy, a motor's reflected inertia; `index` as the element
+    /// documents).
+    Drive,
+}
+
+impl Quantity {
+    /// The quantity in words.
+    #[must_use]
+    pub const fn describe(&self) -> &'static str {
+        match self {
+            Self::Configuration => "joint configuration q",
+            Self::Velocity => "joint velocity v",
+            Self::Acceleration => "joint acceleration",
+            Self::Torque => "joint torque",
+            Self::ExternalForce => "external force",
+            Self::ModelParameter => "model parameter",
+            Self::AuxiliaryState => "auxiliary state",
+            Self::Energy => "energy",
+            Self::MassMatrix => "mass matrix",
+            Self::Time => "time or step",
+            Self::Contact => "contact",
+            Self::DriveInput => "drive input",
+            Self::Derivative => "derivative",
+            Self::PathLength => "muscle path length",
+            Self::PathVelocity => "muscle path velocity",
+            Self::ContactPoint => "contact point",
+            Self::FramePlacement => "frame placement",
+            Self::BodyAcceleration => {
+                "body acceleration (joint velocities too large: their products overflow)"
+            }
+            Self::CentroidalMap => "centroidal momentum map",
+            Self::Target => "target pose",
+            Self::Drive => "drive element",
+        }
+    }
+
+    /// What the index of an error about this quantity counts.
+    #[must_use]
+    pub const fn index_name(&self) -> &'static str {
+        match self {
+            Self::ExternalForce | Self::BodyAcceleration | Self::ModelParameter => "body",
+            Self::FramePlacement => "frame on body",
+            Self::Contact => "contact",
+            Self::PathLength | Self::PathVelocity => "muscle input",
+            _ => "entry",
+        }
+    }
 }
 
 /// What is wrong with a model parameter.
@@ -86,6 +145,116 @@ impl From<ParameterProblem> for ModelProblem {
             ParameterProblem::RotationNotOrthonormal => Self::RotationNotOrthonormal,
             ParameterProblem::Reflection => Self::Reflection,
         }
+    }
+}
+
+/// A setting of an algorithm that [`Error::InvalidSetting`] names: a field
+/// of its settings or one of its arguments.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+#[non_exhaustive]
+pub enum Setting {
+    /// Baumgarte's position gain `K_p` of the contacts.
+    PositionGain,
+    /// Baumgarte's velocity gain `K_d` of the contacts.
+    VelocityGain,
+    /// The damping `μ` of a contact solve (redundant contacts).
+    ContactDamping,
+    /// The coefficient of restitution `e` of an impact.
+    Restitution,
+    /// The number of unactuated leading velocity coordinates.
+    Unactuated,
+    /// The regularisation `ε` of the contact force distribution.
+    Regularisation,
+    /// Coulomb's friction coefficient `μ`.
+    Friction,
+    /// The number of projected Gauss–Seidel sweeps.
+    Sweeps,
+    /// The fraction `β` of a penetration removed per step.
+    DepthRecovery,
+    /// The height above the ground within which points become contacts.
+    Margin,
+    /// The implicit damping of one joint coordinate.
+    JointDamping {
+        /// The velocity coordinate.
+        dof: usize,
+    },
+    /// The damping `λ` of inverse kinematics' least-squares steps.
+    IkDamping,
+    /// The tolerance of inverse kinematics on the pose error.
+    IkTolerance,
+}
+
+impl Setting {
+    /// The setting in words.
+    #[must_use]
+    pub const fn name(&self) -> &'static str {
+        match self {
+            Self::PositionGain => "Baumgarte position gain Kp",
+            Self::VelocityGain => "Baumgarte velocity gain Kd",
+            Self::ContactDamping => "contact damping",
+            Self::Restitution => "restitution",
+            Self::Unactuated => "number of unactuated coordinates",
+            Self::Regularisation => "regularisation of the contact forces",
+            Self::Friction => "friction coefficient",
+            Self::Sweeps => "sweeps",
+            Self::DepthRecovery => "depth recovery",
+            Self::Margin => "contact margin",
+            Self::JointDamping { .. } => "joint damping",
+            Self::IkDamping => "inverse-kinematics damping",
+            Self::IkTolerance => "inverse-kinematics tolerance",
+        }
+    }
+
+    /// Where it is set: the field or argument.
+    #[must_use]
+    pub const fn field(&self) -> &'static str {
+        match self {
+            Self::PositionGain => "ConstraintSettings::kp",
+            Self::VelocityGain => "ConstraintSettings::kd",
+            Self::ContactDamping => "ConstraintSettings::damping, impulse_dynamics' damping",
+            Self::Restitution => "impulse_dynamics' restitution",
+            Self::Unactuated => "ContactInverseDynamicsSettings::unactuated",
+            Self::Regularisation => "ContactInverseDynamicsSettings::regularisation",
+            Self::Friction => {
+                "ContactInverseDynamicsSettings::friction, TimeSteppingSettings::friction"
+            }
+            Self::Sweeps => "TimeSteppingSettings::sweeps",
+            Self::DepthRecovery => "TimeSteppingSettings::depth_recovery",
+            Self::Margin => "TimeSteppingSettings::margin",
+            Self::JointDamping { .. } => "time_step's damping",
+            Self::IkDamping => "IkSettings::damping, step's damping",
+            Self::IkTolerance => "IkSettings::tolerance",
+        }
+    }
+
+    /// What it must be.
+    #[must_use]
+    pub const fn requirement(&self) -> &'static str {
+        match self {
+            Self::PositionGain
+            | Self::VelocityGain
+            | Self::ContactDamping
+            | Self::Friction
+            | Self::Margin
+            | Self::JointDamping { .. } => "must be finite and not negative",
+            Self::Restitution | Self::DepthRecovery => "must lie in [0, 1]",
+            Self::Unactuated => "must be at most 6 and at most the model's velocity coordinates",
+            Self::Regularisation | Self::IkDamping | Self::IkTolerance => {
+                "must be finite and positive"
+            }
+            Self::Sweeps => "must be at least 1",
+        }
+    }
+}
+
+impl fmt::Display for Setting {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())?;
+        if let Self::JointDamping { dof } = self {
+            write!(f, " of velocity coordinate {dof}")?;
+        }
+        Ok(())
     }
 }
 
@@ -151,7 +320,9 @@ pub enum Error {
     MassMatrixNotPositiveDefinite {
         /// Velocity coordinate at which the factorisation broke down.
         dof: usize,
-        /// The pivot found, relative to the largest diagonal entry.
+        /// The pivot found, relative to its own diagonal entry of the mass
+        /// matrix (`D[k] / M[k][k]`: the share of the coordinate's inertia
+        /// that the others do not already account for).
         relative_pivot: f64,
     },
     /// A model parameter is physically impossible.
@@ -205,10 +376,11 @@ pub enum Error {
         /// Rows the workspace holds.
         capacity: usize,
     },
-    /// A gain or damping that is negative or not finite.
-    InvalidGain {
-        /// Which (the function documents the order).
-        index: usize,
+    /// A setting (a gain, a coefficient, a count) outside its range;
+    /// [`Setting`] names it and says what it must be.
+    InvalidSetting {
+        /// Which setting.
+        setting: Setting,
     },
     /// Contacts that constrain the same motion twice (a rank-deficient
     /// contact Jacobian) with no damping to choose among the forces.
@@ -218,6 +390,19 @@ pub enum Error {
         row: usize,
         /// The contact that row belongs to (its index in the slice given).
         contact: usize,
+    },
+    /// A pose given to an algorithm (an inverse-kinematics target, a
+    /// frame's placement) that is not a rigid motion.
+    InvalidPose {
+        /// Which pose: `Quantity::Target`, or `Quantity::FramePlacement`
+        /// with `index` the frame's body.
+        quantity: Quantity,
+        /// The frame's body, or 0.
+        index: usize,
+        /// What is wrong with it (a non-finite entry, a rotation that is
+        /// not orthonormal or is a reflection, a translation that
+        /// overflows).
+        problem: ModelProblem,
     },
     /// A finite input outside the range the model describes, such as a
     /// path that stretches a muscle fibre past
@@ -235,7 +420,12 @@ impl fmt::Display for Error {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Self::NonFinite { quantity, index } => {
-                write!(f, "non-finite {quantity:?} at index {index}")
+                write!(
+                    f,
+                    "non-finite {} ({} {index})",
+                    quantity.describe(),
+                    quantity.index_name()
+                )
             }
             Self::InvalidConfiguration { joint, reason } => match reason {
                 ConfigurationError::NonFinite => {
@@ -264,7 +454,7 @@ impl fmt::Display for Error {
             } => write!(
                 f,
                 "mass matrix is not positive definite at dof {dof} \
-                 (pivot / max diagonal = {relative_pivot:e})"
+                 (pivot / its diagonal entry = {relative_pivot:e})"
             ),
             Self::InvalidModel { body, problem } => {
                 write!(f, "body {body}: invalid model parameter: {problem:?}")
@@ -286,8 +476,10 @@ impl fmt::Display for Error {
             ),
             Self::NonFiniteResult { quantity, index } => write!(
                 f,
-                "non-finite result {quantity:?} at index {index}: the inputs are finite \
-                 but too large for the scalar type"
+                "non-finite result: {} ({} {index}); the inputs are finite \
+                 but too large for the scalar type",
+                quantity.describe(),
+                quantity.index_name()
             ),
             Self::BodyOutOfRange { body } => {
                 write!(f, "body {body}, which the model does not have")
@@ -296,17 +488,43 @@ impl fmt::Display for Error {
                 f,
                 "{rows} constrained rows, more than the workspace's {capacity}"
             ),
-            Self::InvalidGain { index } => {
-                write!(f, "gain {index} is negative or not finite")
+            Self::InvalidSetting { setting } => {
+                write!(
+                    f,
+                    "invalid setting: {} ({}) {}",
+                    setting,
+                    setting.field(),
+                    setting.requirement()
+                )
             }
             Self::RedundantConstraints { row, contact } => write!(
                 f,
                 "the contacts are redundant at constrained row {row} (contact {contact}); \
                  give a damping or drop a contact"
             ),
+            Self::InvalidPose {
+                quantity,
+                index,
+                problem,
+            } => write!(
+                f,
+                "{} ({} {index}) is not a rigid motion: {}",
+                quantity.describe(),
+                quantity.index_name(),
+                match problem {
+                    ModelProblem::NonFiniteParameter => "a NaN or infinite entry",
+                    ModelProblem::RotationNotOrthonormal =>
+                        "its rotation is not orthonormal (RᵀR ≠ I)",
+                    ModelProblem::Reflection => "its rotation is a reflection (det R = −1)",
+                    ModelProblem::Overflow => "its translation overflows the scalar type",
+                    _ => "invalid",
+                }
+            ),
             Self::OutOfRange { quantity, index } => write!(
                 f,
-                "{quantity:?} at index {index} is outside the range the model describes"
+                "{} ({} {index}) is outside the range the model describes",
+                quantity.describe(),
+                quantity.index_name()
             ),
         }
     }
@@ -343,6 +561,11 @@ impl defmt::Format for Quantity {
             Self::PathLength => defmt::write!(f, "PathLength"),
             Self::PathVelocity => defmt::write!(f, "PathVelocity"),
             Self::ContactPoint => defmt::write!(f, "ContactPoint"),
+            Self::FramePlacement => defmt::write!(f, "FramePlacement"),
+            Self::BodyAcceleration => defmt::write!(f, "BodyAcceleration"),
+            Self::CentroidalMap => defmt::write!(f, "CentroidalMap"),
+            Self::Target => defmt::write!(f, "Target"),
+            Self::Drive => defmt::write!(f, "Drive"),
         }
     }
 }
@@ -403,10 +626,17 @@ impl defmt::Format for Error {
             Self::TooManyConstraints { rows, capacity } => {
                 defmt::write!(f, "{} constrained rows, capacity {}", rows, capacity)
             }
-            Self::InvalidGain { index } => defmt::write!(f, "invalid gain {}", index),
+            Self::InvalidSetting { setting } => {
+                defmt::write!(f, "invalid setting {}", setting)
+            }
             Self::RedundantConstraints { row, contact } => {
                 defmt::write!(f, "redundant contacts at row {} (contact {})", row, contact)
             }
+            Self::InvalidPose {
+                quantity,
+                index,
+                problem,
+            } => defmt::write!(f, "invalid pose {} {}: {}", quantity, index, problem),
             Self::OutOfRange { quantity, index } => {
                 defmt::write!(f, "{} at index {} out of range", quantity, index)
             }

@@ -313,7 +313,7 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
     /// let mut model = PENDULUM;
     /// // A 50:1 gearbox on a 2e-5 kg m² rotor adds N² J_r = 0.05 kg m² at the joint.
     /// let motor = JointMotor::new(0, 0, 50.0, 0.02, 2e-5);
-    /// model.set_armature(0, motor.reflected_inertia())?;
+    /// model.set_armature(0, motor.reflected_inertia()?)?;
     /// let mut data = Data::new();
     /// let tau = rnea(&model, &mut data, &[0.0], &[0.0], &[1.0], None)?;
     /// assert!((tau[0] - (1.0 + 0.05 + 9.81)).abs() < 1e-12);
@@ -666,6 +666,27 @@ pub(crate) fn check_finite<S: Scalar>(x: &[S], quantity: Quantity) -> Result<()>
 /// Returns an error naming the first non-finite entry of a result `x`
 /// computed from finite inputs: the inputs overflowed the scalar type.
 pub(crate) fn check_result<S: Scalar>(x: &[S], quantity: Quantity) -> Result<()> {
+    match x.iter().position(|v| !v.is_finite()) {
+        Some(index) => Err(Error::NonFiniteResult { quantity, index }),
+        None => Ok(()),
+    }
+}
+
+/// [`check_result`] for results that are spatial vectors (one per body):
+/// one finiteness test of their sum, the search for the vector to name
+/// (or for none, when the sum of finite vectors overflowed) only on
+/// failure.
+pub(crate) fn check_vectors_result<S: Scalar, V: VectorOps<S>>(
+    x: &[V],
+    quantity: Quantity,
+) -> Result<()> {
+    let mut sum = V::ZERO;
+    for v in x {
+        sum += *v;
+    }
+    if sum.is_finite() {
+        return Ok(());
+    }
     match x.iter().position(|v| !v.is_finite()) {
         Some(index) => Err(Error::NonFiniteResult { quantity, index }),
         None => Ok(()),

@@ -51,7 +51,7 @@ fn main() -> ! {
             kinetic_energy(&PENDULUM, data, q, v)? + potential_energy(&PENDULUM, data, q)?;
         // potential_energy leaves the body poses valid for the spring's path.
         let length = PENDULUM_SPRING.path.kinematics(data)?.length;
-        Ok(mechanical + PENDULUM_SPRING.potential_energy(length))
+        Ok(mechanical + PENDULUM_SPRING.potential_energy(length)?)
     };
     let (Ok(e0), Ok(e_bottom)) = (energy(&mut data, &q, &v), energy(&mut data, &[0.0], &[0.0]))
     else {

@@ -21,8 +21,8 @@ use super::derivatives::{SpatialVariation, VariationMap};
 use super::frames::FrameSpace;
 use super::kinematics::{forward_kinematics_acceleration, forward_kinematics_velocity};
 use crate::data::Data;
-use crate::error::Result;
-use crate::model::Model;
+use crate::error::{Error, Quantity, Result};
+use crate::model::{check_vectors_result, Model};
 use crate::space::{BodyInertia, MotionVector, RigidTransform, Space, VectorOps};
 use crate::spatial::{Force, Motion, Spatial, Transform, Vec3};
 use crate::Scalar;
@@ -90,7 +90,10 @@ impl<S: Scalar, const NB: usize, const NV: usize, G: Space> Default
 /// `cd.dhg` stale.
 ///
 /// # Errors
-/// As [`forward_kinematics`](super::kinematics::forward_kinematics).
+/// As [`forward_kinematics`](super::kinematics::forward_kinematics);
+/// [`Error::NonFiniteResult`] (`Quantity::CentroidalMap`) when the
+/// bodies' inertias about the world's origin overflow (bodies 1e150 m or
+/// more from it in f64).
 pub fn centroidal_map<
     S: Scalar,
     const NB: usize,
@@ -105,8 +108,7 @@ pub fn centroidal_map<
 ) -> Result<()> {
     model.check_configuration(q)?;
     poses(model, data, q);
-    map_pass(model, data, cd);
-    Ok(())
+    map_pass(model, data, cd)
 }
 
 /// [`centroidal_map`] and the momentum and its rate at `(q, v, a)` (NQ, NV,
@@ -116,7 +118,9 @@ pub fn centroidal_map<
 /// [`centroidal_map`] do, and `cd.hg`, `cd.dhg`.
 ///
 /// # Errors
-/// As [`forward_kinematics_acceleration`].
+/// As [`forward_kinematics_acceleration`] and [`centroidal_map`], and
+/// [`Error::NonFiniteResult`] (`Quantity::CentroidalMap`, index 0 for
+/// `h_G`, 1 for `ḣ_G`) when the momentum or its rate overflows.
 pub fn centroidal_momentum<
     S: Scalar,
     const NB: usize,
@@ -132,7 +136,7 @@ pub fn centroidal_momentum<
     a: &[S; NV],
 ) -> Result<()> {
     forward_kinematics_acceleration(model, data, q, v, a)?;
-    map_pass(model, data, cd);
+    map_pass(model, data, cd)?;
     let o_m_g = G::from_translation(&cd.com());
     let mut h = <G::Force<S> as VectorOps<S>>::ZERO;
     let mut dh = h;
@@ -144,7 +148,7 @@ pub fn centroidal_momentum<
     }
     cd.hg = o_m_g.act_inv_force(&h);
     cd.dhg = o_m_g.act_inv_force(&dh);
-    Ok(())
+    check_vectors_result(&[cd.hg, cd.dhg], Quantity::CentroidalMap)
 }
 
 /// [`centroidal_map`] and its time derivative `Ȧ_g` at `(q, v)` into
@@ -160,7 +164,9 @@ pub fn centroidal_momentum<
 /// [`centroidal_map`] do.
 ///
 /// # Errors
-/// As [`forward_kinematics_velocity`].
+/// As [`forward_kinematics_velocity`] and [`centroidal_map`], and
+/// [`Error::NonFiniteResult`] (`Quantity::CentroidalMap`, the column)
+/// when `Ȧ_g` overflows.
 pub fn centroidal_map_time_variation<
     S: Scalar,
     const NB: usize,
@@ -175,7 +181,7 @@ pub fn centroidal_map_time_variation<
     dag: &mut [Force<S>; NV],
 ) -> Result<()> {
     forward_kinematics_velocity(model, data, q, v)?;
-    map_pass(model, data, cd);
+    map_pass(model, data, cd)?;
     // World velocities, and each subtree's Ẏ and momentum.
     let o_v: [Motion<S>; NB] = core::array::from_fn(|i| data.o_m_i[i].act_motion(&data.v[i]));
     let mut variation = [SpatialVariation::<S>::ZERO; NB];
@@ -211,15 +217,22 @@ pub fn centroidal_map_time_variation<
             dag[c] = o_m_g.act_inv_force(&rate) - g_velocity.cross_force(&cd.ag[c]);
         }
     }
-    Ok(())
+    check_vectors_result(dag, Quantity::CentroidalMap)
 }
 
 /// Composite inertias in the world, `I_g` and `A_g`, from `data.o_m_i`.
+///
+/// # Errors
+/// [`Error::NonFiniteResult`] (`Quantity::CentroidalMap`) when `I_g` is not
+/// finite: one test for the whole map, since every composite inertia, and
+/// so every column of `A_g`, is bounded by the total whose `I_g` it is
+/// (positive semi-definite inertias), and it is the world-frame inertias
+/// (`m |c|²` of a body far from the origin) that overflow.
 fn map_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: FrameSpace>(
     model: &Model<S, NB, NQ, NV, G>,
     data: &Data<S, NB, NV, G>,
     cd: &mut CentroidalData<S, NB, NV, G>,
-) {
+) -> Result<()> {
     // One backward pass: each body's inertia is moved into the world where
     // its composite is summed, so that `o_ic` is written once a body (as
     // the composite) rather than written, read back and written again.
@@ -271,6 +284,14 @@ fn map_pass<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Fra
             continue;
         }
         G::centroidal_columns(x, joint, ic, &com, &mut cd.ag[iv..iv + nv]);
+    }
+    if cd.ig.is_finite() {
+        Ok(())
+    } else {
+        Err(Error::NonFiniteResult {
+            quantity: Quantity::CentroidalMap,
+            index: 0,
+        })
     }
 }
 

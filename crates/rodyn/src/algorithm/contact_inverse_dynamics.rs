@@ -44,7 +44,7 @@ use super::dense::{cholesky_in_place, cholesky_solve};
 use super::kinematics::forward_kinematics_acceleration;
 use super::rnea::rnea;
 use crate::data::Data;
-use crate::error::{Error, Quantity, Result};
+use crate::error::{Error, Quantity, Result, Setting};
 use crate::model::{check_finite, check_result, Model};
 use crate::spatial::Spatial;
 use crate::Scalar;
@@ -209,10 +209,10 @@ impl<S: Scalar, const NV: usize, const NC: usize> Default
 /// # Errors
 /// As [`constrained_forward_dynamics`](super::constrained_dynamics::constrained_forward_dynamics)
 /// for the contacts and `constraint` (use a damping for redundant
-/// contacts); [`Error::InvalidGain`] with index 3 for `unactuated` above 6
-/// or `NV`, 4 for a non-positive or non-finite
-/// `regularisation`, 5 for a bad `friction`; [`Error::NonFinite`] for a
-/// non-finite wanted acceleration.
+/// contacts); [`Error::InvalidSetting`] naming `unactuated` (above 6 or
+/// `NV`), `regularisation` (not positive or not finite) or `friction`
+/// (negative or not finite); [`Error::NonFinite`] for a non-finite wanted
+/// acceleration.
 #[allow(clippy::too_many_arguments)]
 pub fn contact_inverse_dynamics<
     'd,
@@ -235,14 +235,20 @@ pub fn contact_inverse_dynamics<
     check_input(contacts, constraint, NB, NC)?;
     let nu = settings.unactuated;
     if nu > NV.min(UNACTUATED_MAX) {
-        return Err(Error::InvalidGain { index: 3 });
+        return Err(Error::InvalidSetting {
+            setting: Setting::Unactuated,
+        });
     }
     let eps = settings.regularisation;
     if !(eps.is_finite() && eps.to_f64() > 0.0) {
-        return Err(Error::InvalidGain { index: 4 });
+        return Err(Error::InvalidSetting {
+            setting: Setting::Regularisation,
+        });
     }
     if !(settings.friction.is_finite() && settings.friction.to_f64() >= 0.0) {
-        return Err(Error::InvalidGain { index: 5 });
+        return Err(Error::InvalidSetting {
+            setting: Setting::Friction,
+        });
     }
     check_finite(ddq_wanted, Quantity::Acceleration)?;
 

@@ -17,8 +17,16 @@
 use crate::Scalar;
 
 /// The lower Cholesky factor `L` (`A = L Lᵀ`) of the leading `n × n` block
-/// of `a`, in place (lower triangle; the upper is left as it was). A pivot
-/// must exceed `tolerance · ε · max diag` (0 asks only for a positive one).
+/// of `a`, in place (lower triangle; the upper is left as it was). The
+/// pivot of row j (`L[j][j]²`) must exceed `tolerance · ε · A[j][j]`, its
+/// own row's diagonal entry (0 asks only for a positive one).
+///
+/// Each row against its own diagonal: the test is then the same for `A`
+/// and for `S A S` with any positive diagonal `S`, so rows in different
+/// units (a contact's forces in 1/kg, its moments in 1/(kg m²)) or of
+/// very different sizes do not make the small ones look dependent.
+/// `L[j][j]² / A[j][j]` is the share of row j that the rows before it do
+/// not already span; near zero only for a (nearly) dependent row.
 ///
 /// # Errors
 /// The row of the first pivot that does not (NaN included); the factor
@@ -29,18 +37,20 @@ pub fn cholesky_in_place<S: Scalar, const N: usize>(
     tolerance: f64,
 ) -> core::result::Result<(), usize> {
     let n = n.min(N);
-    let scale = (0..n).fold(0.0_f64, |m, k| m.max(a[k][k].to_f64().abs()));
-    let smallest = S::EPSILON * tolerance * scale;
+    let relative = S::from_f64(S::EPSILON * tolerance);
     // Plain indexing: on the Cortex-M4 it ran fewer instructions than rows
     // split at the pivot (docs/sections/performance_notebook.md,
     // "Derivatives and the small dense Cholesky").
     for j in 0..n {
-        let mut d = a[j][j];
+        let a_jj = a[j][j];
+        let mut d = a_jj;
         for k in 0..j {
             d -= a[j][k] * a[j][k];
         }
-        // A NaN pivot fails too: `d > smallest` is false for it.
-        if d.to_f64().partial_cmp(&smallest) != Some(core::cmp::Ordering::Greater) {
+        // A NaN pivot fails too (both comparisons are false for it); the
+        // second also refuses a non-positive pivot when `tolerance · ε`
+        // is 1 or more and `A[j][j]` negative.
+        if !(d > relative * a_jj && d > S::ZERO) {
             return Err(j);
         }
         let d = d.sqrt();

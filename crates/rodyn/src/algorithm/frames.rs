@@ -21,7 +21,7 @@
 //! that [`kinematics`](crate::algorithm::kinematics) leaves in [`Data`].
 
 use crate::data::Data;
-use crate::error::{Error, Result};
+use crate::error::{Error, Quantity, Result};
 use crate::frame::Frame;
 use crate::joint::{Joint, JointModel};
 use crate::planar::{Planar, PlanarForce, PlanarMotion, PlanarTransform, Vec2};
@@ -354,7 +354,10 @@ pub fn express_world_motion<S: Scalar, G: FrameSpace>(
 /// `data.o_m_i` (valid after any of the `forward_kinematics*` functions).
 ///
 /// # Errors
-/// [`Error::FrameBodyOutOfRange`] when `frame.body` is not below `NB`.
+/// [`Error::FrameBodyOutOfRange`] when `frame.body` is not below `NB`;
+/// [`Error::NonFinite`] (`Quantity::FramePlacement`, the frame's body) for
+/// a frame whose placement is not finite, [`Error::NonFiniteResult`] for a
+/// pose that overflows.
 ///
 /// # Example
 ///
@@ -386,9 +389,29 @@ pub fn frame_placement<S: Scalar, const NB: usize, const NV: usize, G: Space>(
     data: &Data<S, NB, NV, G>,
     frame: &Frame<S, G>,
 ) -> Result<G::Transform<S>> {
-    frame
+    let o_m_f = frame
         .world_placement(&data.o_m_i)
-        .ok_or(Error::FrameBodyOutOfRange { body: frame.body })
+        .ok_or(Error::FrameBodyOutOfRange { body: frame.body })?;
+    // One test of the result covers a NaN or infinite placement (a
+    // `Frame` is plain data, so nothing checked it when it was made) and
+    // the readers and Jacobians built on this pose.
+    if o_m_f.is_finite() {
+        Ok(o_m_f)
+    } else {
+        Err(frame_error(frame))
+    }
+}
+
+/// The error for a frame whose pose or motion came out non-finite: its
+/// placement's fault when that is not finite, otherwise an overflow.
+#[cold]
+fn frame_error<S: Scalar, G: Space>(frame: &Frame<S, G>) -> Error {
+    let (quantity, index) = (Quantity::FramePlacement, frame.body);
+    if frame.placement.is_finite() {
+        Error::NonFiniteResult { quantity, index }
+    } else {
+        Error::NonFinite { quantity, index }
+    }
 }
 
 /// The spatial velocity of frame f in `reference` (rad/s, m/s; rodyn's
@@ -398,7 +421,11 @@ pub fn frame_placement<S: Scalar, const NB: usize, const NV: usize, G: Space>(
 /// A body's own velocity is that of a frame with the identity placement.
 ///
 /// # Errors
-/// [`Error::FrameBodyOutOfRange`] when `frame.body` is not below `NB`.
+/// [`Error::FrameBodyOutOfRange`] when `frame.body` is not below `NB`;
+/// [`Error::NonFinite`] (`Quantity::FramePlacement`, the frame's body) for
+/// a frame whose placement is not finite where it enters the result (in
+/// [`ReferenceFrame::World`] a motion is the body's, whatever the
+/// placement), [`Error::NonFiniteResult`] for a result that overflows.
 pub fn frame_velocity<S: Scalar, const NB: usize, const NV: usize, G: FrameSpace>(
     data: &Data<S, NB, NV, G>,
     frame: &Frame<S, G>,
@@ -414,7 +441,11 @@ pub fn frame_velocity<S: Scalar, const NB: usize, const NV: usize, G: FrameSpace
 /// [`frame_classical_acceleration`].
 ///
 /// # Errors
-/// [`Error::FrameBodyOutOfRange`] when `frame.body` is not below `NB`.
+/// [`Error::FrameBodyOutOfRange`] when `frame.body` is not below `NB`;
+/// [`Error::NonFinite`] (`Quantity::FramePlacement`, the frame's body) for
+/// a frame whose placement is not finite where it enters the result (in
+/// [`ReferenceFrame::World`] a motion is the body's, whatever the
+/// placement), [`Error::NonFiniteResult`] for a result that overflows.
 pub fn frame_acceleration<S: Scalar, const NB: usize, const NV: usize, G: FrameSpace>(
     data: &Data<S, NB, NV, G>,
     frame: &Frame<S, G>,
@@ -438,7 +469,11 @@ pub fn frame_acceleration<S: Scalar, const NB: usize, const NV: usize, G: FrameS
 /// with zero joint accelerations it is `J̇ v` for f's classical Jacobian.
 ///
 /// # Errors
-/// [`Error::FrameBodyOutOfRange`] when `frame.body` is not below `NB`.
+/// [`Error::FrameBodyOutOfRange`] when `frame.body` is not below `NB`;
+/// [`Error::NonFinite`] (`Quantity::FramePlacement`, the frame's body) for
+/// a frame whose placement is not finite where it enters the result (in
+/// [`ReferenceFrame::World`] a motion is the body's, whatever the
+/// placement), [`Error::NonFiniteResult`] for a result that overflows.
 pub fn frame_classical_acceleration<S: Scalar, const NB: usize, const NV: usize, G: FrameSpace>(
     data: &Data<S, NB, NV, G>,
     frame: &Frame<S, G>,
@@ -461,14 +496,21 @@ fn frame_motion<S: Scalar, const NB: usize, const NV: usize, G: FrameSpace>(
     let (Some(o_m_i), Some(m)) = (data.o_m_i.get(body), motions.get(body)) else {
         return Err(Error::FrameBodyOutOfRange { body });
     };
-    Ok(match reference {
+    let motion = match reference {
         ReferenceFrame::Local => frame.placement.act_inv_motion(m),
         ReferenceFrame::World => o_m_i.act_motion(m),
         ReferenceFrame::LocalWorldAligned => {
             let o_m_f = o_m_i.compose(&frame.placement);
             G::translation_only(&o_m_f).act_inv_motion(&o_m_i.act_motion(m))
         }
-    })
+    };
+    // One test of the result: a non-finite placement shows in it (in the
+    // world frame it does not enter, and the body's motion is the answer).
+    if motion.is_finite() {
+        Ok(motion)
+    } else {
+        Err(frame_error(frame))
+    }
 }
 
 /// A zero motion, for callers that fill arrays of them.

@@ -25,7 +25,7 @@ use super::dense::{cholesky_in_place, cholesky_solve};
 use super::frame_chain::{chain_jacobian, FrameChain};
 use super::frames::ReferenceFrame;
 use crate::data::Data;
-use crate::error::{Error, Result};
+use crate::error::{Error, ModelProblem, Quantity, Result, Setting};
 use crate::frame::Frame;
 use crate::model::Model;
 /// The rotation vector of a rotation (moved to [`crate::spatial`], where
@@ -178,9 +178,11 @@ impl<S: Scalar, const NV: usize> Default for IkData<S, NV> {
 ///
 /// # Errors
 /// As [`chain_jacobian`];
-/// [`Error::FrameBodyOutOfRange`]; [`Error::NotConverged`] (with zero
-/// iterations) when the step is not finite; those of [`Model::integrate`]
-/// when the moved `q` is not (`q` is then left as it was).
+/// [`Error::FrameBodyOutOfRange`]; when the step is not finite, the
+/// error that names why ([`check_problem`]'s for the frame, the target
+/// and the damping, otherwise [`Error::NonFiniteResult`] for the
+/// configuration); those of [`Model::integrate`] when the moved `q` is
+/// not (`q` is then left as it was).
 pub fn step<S: Scalar, const NB: usize, const NQ: usize, const NV: usize>(
     model: &Model<S, NB, NQ, NV, Spatial>,
     _data: &mut Data<S, NB, NV, Spatial>,
@@ -219,10 +221,7 @@ pub fn step<S: Scalar, const NB: usize, const NQ: usize, const NV: usize>(
         (0..6).fold(S::ZERO, |acc, r| acc + c[r] * y[r])
     });
     if !dq.iter().all(|x| x.is_finite()) {
-        return Err(Error::NotConverged {
-            iterations: 0,
-            residual: f64::INFINITY,
-        });
+        return Err(bad_step(frame, target, damping, &dq));
     }
     *q = model.integrate(q, &dq, S::ONE)?;
     Ok(e)
@@ -235,9 +234,11 @@ pub fn step<S: Scalar, const NB: usize, const NQ: usize, const NV: usize>(
 /// [`step`] does.
 ///
 /// # Errors
-/// [`Error::NotConverged`] with the last error's largest component when
-/// the budget runs out (an unreachable target, or a start too far away),
-/// `q` then holding the last iterate; and those of [`step`].
+/// Those of [`check_problem`] before any step (a bad frame, target,
+/// damping or tolerance); [`Error::NotConverged`] with the last error's
+/// largest component when the budget runs out (an unreachable target, or
+/// a start too far away), `q` then holding the last iterate; and those of
+/// [`step`].
 pub fn solve<S: Scalar, const NB: usize, const NQ: usize, const NV: usize>(
     model: &Model<S, NB, NQ, NV, Spatial>,
     data: &mut Data<S, NB, NV, Spatial>,
@@ -247,6 +248,7 @@ pub fn solve<S: Scalar, const NB: usize, const NQ: usize, const NV: usize>(
     settings: &IkSettings<S>,
     q: &mut [S; NQ],
 ) -> Result<usize> {
+    check_problem::<S, NB>(frame, target, settings)?;
     let problem = Problem {
         model,
         frame,
@@ -272,6 +274,7 @@ pub fn solve<S: Scalar, const NB: usize, const NQ: usize, const NV: usize>(
 /// budget of [`step`]s, as for [`solve`].
 ///
 /// # Errors
+/// Those of [`check_problem`] before any step;
 /// [`Error::NotConverged`] when neither start converges within the budget,
 /// with the steps taken and the smaller of the two final residuals, `q`
 /// then holding that iterate; and those of [`step`].
@@ -286,6 +289,7 @@ pub fn solve_with_fallback<S: Scalar, const NB: usize, const NQ: usize, const NV
     fallback: &[S; NQ],
     q: &mut [S; NQ],
 ) -> Result<usize> {
+    check_problem::<S, NB>(frame, target, settings)?;
     let problem = Problem {
         model,
         frame,
@@ -395,9 +399,90 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Problem<'_, S
     }
 }
 
-/// The largest component of a pose error (rad or m).
+/// Checks what an inverse-kinematics solve is given, so that it never
+/// iterates on a target or frame that is not a pose, nor compares with a
+/// tolerance that no error can meet (or every error meets):
+///
+/// * `frame`: on a body below `NB`, its placement a rigid motion;
+/// * `target`: a rigid motion (finite, its rotation orthonormal within
+///   1e3 ε with determinant +1, as a model's placements);
+/// * `settings.damping` and `settings.tolerance`: finite and positive.
+///
+/// # Errors
+/// [`Error::FrameBodyOutOfRange`]; [`Error::InvalidPose`] naming the frame
+/// (`Quantity::FramePlacement`, its body) or the target
+/// (`Quantity::Target`) and what is wrong with it;
+/// [`Error::InvalidSetting`] naming the damping or the tolerance.
+pub fn check_problem<S: Scalar, const NB: usize>(
+    frame: &Frame<S>,
+    target: &Transform<S>,
+    settings: &IkSettings<S>,
+) -> Result<()> {
+    if frame.body >= NB {
+        return Err(Error::FrameBodyOutOfRange { body: frame.body });
+    }
+    frame
+        .placement
+        .validate()
+        .map_err(|problem| Error::InvalidPose {
+            quantity: Quantity::FramePlacement,
+            index: frame.body,
+            problem: ModelProblem::from(problem),
+        })?;
+    target.validate().map_err(|problem| Error::InvalidPose {
+        quantity: Quantity::Target,
+        index: 0,
+        problem: ModelProblem::from(problem),
+    })?;
+    let positive = |x: S| x.is_finite() && x.to_f64() > 0.0;
+    if !positive(settings.damping) {
+        return Err(Error::InvalidSetting {
+            setting: Setting::IkDamping,
+        });
+    }
+    if !positive(settings.tolerance) {
+        return Err(Error::InvalidSetting {
+            setting: Setting::IkTolerance,
+        });
+    }
+    Ok(())
+}
+
+/// Why a step came out non-finite: a bad input [`check_problem`] names,
+/// otherwise an overflow of the step (entry `k` of `Δq`).
+#[cold]
+fn bad_step<S: Scalar, const NV: usize>(
+    frame: &Frame<S>,
+    target: &Transform<S>,
+    damping: S,
+    dq: &[S; NV],
+) -> Error {
+    let settings = IkSettings {
+        damping,
+        tolerance: S::ONE,
+        ..IkSettings::new()
+    };
+    // The body was in range: `frame_jacobian` read it.
+    match check_problem::<S, { usize::MAX }>(frame, target, &settings) {
+        Err(error) => error,
+        Ok(()) => Error::NonFiniteResult {
+            quantity: Quantity::Velocity,
+            index: dq.iter().position(|x| !x.is_finite()).unwrap_or(0),
+        },
+    }
+}
+
+/// The largest component of a pose error (rad or m); NaN when a component
+/// is NaN (`max` would drop it), so that no comparison with the tolerance
+/// can pass.
 fn largest_component<S: Scalar>(e: &Motion<S>) -> S {
-    column(e).iter().fold(S::ZERO, |m, x| m.max(x.abs()))
+    column(e).iter().fold(S::ZERO, |m, x| {
+        if x.is_finite() && m.is_finite() {
+            m.max(x.abs())
+        } else {
+            S::from_f64(f64::NAN)
+        }
+    })
 }
 
 /// A motion's six components, angular first.

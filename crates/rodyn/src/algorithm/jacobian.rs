@@ -259,7 +259,9 @@ fn for_each_supporting_coordinate<
 ///
 /// # Errors
 /// [`Error::FrameBodyOutOfRange`](crate::Error::FrameBodyOutOfRange) when
-/// `frame.body` is not below `NB`.
+/// `frame.body` is not below `NB`; those of
+/// [`frame_placement`] for a frame whose
+/// placement is not finite.
 pub fn frame_jacobian<
     S: Scalar,
     const NB: usize,
@@ -299,7 +301,9 @@ pub fn frame_jacobian<
 ///
 /// # Errors
 /// [`Error::FrameBodyOutOfRange`](crate::Error::FrameBodyOutOfRange) when
-/// `frame.body` is not below `NB`.
+/// `frame.body` is not below `NB`; those of
+/// [`frame_placement`] for a frame whose
+/// placement is not finite.
 pub fn frame_jacobian_time_variation<
     S: Scalar,
     const NB: usize,

@@ -8,7 +8,7 @@
 use crate::data::Data;
 use crate::error::{Quantity, Result};
 use crate::joint::JointModel;
-use crate::model::{check_finite, Model};
+use crate::model::{check_finite, check_vectors_result, Model};
 use crate::space::{RigidTransform, Space, VectorOps};
 use crate::Scalar;
 
@@ -93,7 +93,11 @@ pub fn forward_kinematics_velocity<
 /// `v`, `c`, `a` (body frames).
 ///
 /// # Errors
-/// As [`forward_kinematics_velocity`], and for a non-finite `a`.
+/// As [`forward_kinematics_velocity`], [`Error::NonFinite`](crate::Error::NonFinite)
+/// for a non-finite `a`, and
+/// [`Error::NonFiniteResult`](crate::Error::NonFiniteResult)
+/// (`Quantity::BodyAcceleration`, naming the body) when the products of
+/// the velocities overflow (a velocity of 1e154 in f64).
 pub fn forward_kinematics_acceleration<
     S: Scalar,
     const NB: usize,
@@ -111,6 +115,10 @@ pub fn forward_kinematics_acceleration<
     check_finite(a, Quantity::Acceleration)?;
     velocity_pass(model, data, q, v);
     pose_pass(model, data);
+    // Summed as they are formed, for one finiteness test of them all (a
+    // test of the leaves' alone, with its branch per body, cost the
+    // Cortex-M4 more than the additions).
+    let mut sum = G::Motion::<S>::ZERO;
     for i in 0..NB {
         let a_parent = match model.parent(i) {
             Some(p) => data.li_m_i[i].act_inv_motion(&data.a[p]),
@@ -119,6 +127,10 @@ pub fn forward_kinematics_acceleration<
         data.a[i] = model
             .joint(i)
             .add_motion(&(a_parent + data.c[i]), joint_rates(model, i, a));
+        sum += data.a[i];
     }
-    Ok(())
+    if sum.is_finite() {
+        return Ok(());
+    }
+    check_vectors_result(&data.a, Quantity::BodyAcceleration)
 }

@@ -31,8 +31,18 @@ use crate::Scalar;
 // (issue 23, item 1).
 pub(crate) use super::common::supporting_ranges;
 
-/// A pivot below this fraction of the largest diagonal entry, in units of
-/// the scalar's epsilon, means `M` is not numerically positive definite.
+/// A pivot `D[k]` below this fraction of its own diagonal entry `M[k][k]`,
+/// in units of the scalar's epsilon, means `M` is not numerically positive
+/// definite.
+///
+/// Each pivot is compared with its own row's diagonal rather than with the
+/// largest one: the test is then that of `S M S` with `S` the diagonal that
+/// makes `M`'s diagonal all ones, so it does not depend on the units of the
+/// coordinates (metres against radians) nor on the spread of the inertias
+/// (a trunk's 10 kg m² against a finger's 1e-5 kg m²). `D[k] / M[k][k]` is
+/// the fraction of coordinate k's inertia that the coordinates below it do
+/// not already account for: near zero only when its column is (nearly) a
+/// combination of theirs, whatever its size.
 const PIVOT_TOLERANCE_EPS: f64 = 64.0;
 
 // Out of order, the value that each step of a recurrence has just formed
@@ -153,14 +163,9 @@ pub fn ltdl_factor<S: Scalar, const NB: usize, const NQ: usize, const NV: usize,
     data: &mut Data<S, NB, NV, G>,
 ) -> Result<()> {
     let topology = model.topology();
-    // Compared in S, like ABA's pivots: no f64 on the hot path.
-    let mut scale = S::ZERO;
-    for (k, row) in data.mass_matrix.iter().enumerate() {
-        scale = scale.max(row[k].abs());
-    }
     let pivots = Pivots {
-        scale,
-        tolerance: S::from_f64(PIVOT_TOLERANCE_EPS * S::EPSILON) * scale,
+        // Compared in S, like ABA's pivots: no f64 on the hot path.
+        tolerance: S::from_f64(PIVOT_TOLERANCE_EPS * S::EPSILON),
         d: [S::ZERO; NV],
     };
     if combination_pays(topology) {
@@ -172,9 +177,8 @@ pub fn ltdl_factor<S: Scalar, const NB: usize, const NQ: usize, const NV: usize,
 
 /// The pivots `D` as they are formed, and what they are tested against.
 struct Pivots<S, const NV: usize> {
-    /// The largest diagonal entry of `M`, in magnitude.
-    scale: S,
-    /// The smallest pivot accepted.
+    /// The smallest pivot accepted, as a fraction of its diagonal entry of
+    /// `M` ([`PIVOT_TOLERANCE_EPS`] ε).
     tolerance: S,
     /// `D[s]` for the coordinates s formed so far (those after k).
     d: [S; NV],
@@ -217,11 +221,13 @@ impl<S: Scalar, const NV: usize> Pivots<S, NV> {
                 d -= l_k[s] * dl;
             }
         }
-        if !(d.is_finite() && d > self.tolerance) {
-            let scale = self.scale.to_f64();
+        // A non-positive or NaN `M[k][k]` fails too: `D[k] ≤ M[k][k]`
+        // once the pivots below are positive.
+        if !(d.is_finite() && d > self.tolerance * m_kk) {
+            let m_kk = m_kk.to_f64();
             return Err(Error::MassMatrixNotPositiveDefinite {
                 dof: k,
-                relative_pivot: if scale > 0.0 { d.to_f64() / scale } else { 0.0 },
+                relative_pivot: if m_kk > 0.0 { d.to_f64() / m_kk } else { 0.0 },
             });
         }
         self.d[k] = d;
@@ -762,7 +768,6 @@ mod tests {
     fn assert_both_recover<const NB: usize, const NV: usize>(t: &Topology<NB, NV>, seed: u64) {
         let (d, l, m) = factors_and_mass_matrix(t, seed);
         let pivots = || Pivots {
-            scale: 2.0,
             tolerance: 1e-12,
             d: [0.0; NV],
         };

@@ -15,7 +15,7 @@
 use crate::drive::{
     read_input, DriveDerivativeState, DriveDerivatives, DriveForces, DriveState, ForceElement,
 };
-use crate::error::{DriveProblem, Error, Result};
+use crate::error::{DriveProblem, Error, Quantity, Result};
 use crate::space::Space;
 use crate::Scalar;
 
@@ -44,8 +44,9 @@ impl<S: Scalar> JointMotor<S> {
     /// use rodyn::drive::JointMotor;
     /// // 50:1 gearbox, 0.02 N m/A, rotor 2e-5 kg m², on coordinate 0, current in w[0].
     /// let motor = JointMotor::<f64>::new(0, 0, 50.0, 0.02, 2e-5);
-    /// assert!((motor.torque_per_current() - 1.0).abs() < 1e-12); // N k_t, N m/A
-    /// assert!((motor.reflected_inertia() - 0.05).abs() < 1e-12); // N² J_r, kg m²
+    /// assert!((motor.torque_per_current()? - 1.0).abs() < 1e-12); // N k_t, N m/A
+    /// assert!((motor.reflected_inertia()? - 0.05).abs() < 1e-12); // N² J_r, kg m²
+    /// # Ok::<(), rodyn::Error>(())
     /// ```
     #[must_use]
     pub const fn new(
@@ -64,14 +65,43 @@ impl<S: Scalar> JointMotor<S> {
         }
     }
     /// Joint torque per ampere, `N k_t` (N m/A).
-    #[must_use]
-    pub fn torque_per_current(&self) -> S {
-        self.gear_ratio * self.torque_constant
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`] (`Quantity::Drive`, 0: gear ratio, 1: torque
+    /// constant, 2: rotor inertia) for a non-finite parameter,
+    /// [`Error::NonFiniteResult`] when the product overflows.
+    pub fn torque_per_current(&self) -> Result<S> {
+        self.checked(self.gain())
     }
     /// The rotor inertia seen at the joint, `N² J_r` (kg m²).
-    #[must_use]
-    pub fn reflected_inertia(&self) -> S {
-        self.gear_ratio * self.gear_ratio * self.rotor_inertia
+    ///
+    /// # Errors
+    /// As [`torque_per_current`](Self::torque_per_current).
+    pub fn reflected_inertia(&self) -> Result<S> {
+        self.checked(self.gear_ratio * self.gear_ratio * self.rotor_inertia)
+    }
+    /// `N k_t`, unchecked: the drive's torques are checked where they are
+    /// summed.
+    fn gain(&self) -> S {
+        self.gear_ratio * self.torque_constant
+    }
+    /// `value` when finite, otherwise the error naming a non-finite
+    /// parameter or the overflow.
+    fn checked(&self, value: S) -> Result<S> {
+        if value.is_finite() {
+            return Ok(value);
+        }
+        let parameters = [self.gear_ratio, self.torque_constant, self.rotor_inertia];
+        Err(match parameters.iter().position(|p| !p.is_finite()) {
+            Some(index) => Error::NonFinite {
+                quantity: Quantity::Drive,
+                index,
+            },
+            None => Error::NonFiniteResult {
+                quantity: Quantity::Drive,
+                index: 0,
+            },
+        })
     }
     fn check_dof<const NV: usize>(&self) -> Result<()> {
         if self.dof < NV {
@@ -94,7 +124,7 @@ impl<S: Scalar, G: Space, const NB: usize, const NV: usize> ForceElement<S, G, N
         out: &mut DriveForces<S, G, NB, NV>,
     ) -> Result<()> {
         self.check_dof::<NV>()?;
-        out.tau[self.dof] += self.torque_per_current() * read_input(w, self.input)?;
+        out.tau[self.dof] += self.gain() * read_input(w, self.input)?;
         Ok(())
     }
     fn add_input_derivative(
@@ -106,7 +136,7 @@ impl<S: Scalar, G: Space, const NB: usize, const NV: usize> ForceElement<S, G, N
     ) -> Result<()> {
         self.check_dof::<NV>()?;
         if input == self.input {
-            out.tau[self.dof] += self.torque_per_current();
+            out.tau[self.dof] += self.gain();
         }
         Ok(())
     }
@@ -119,7 +149,7 @@ impl<S: Scalar, G: Space, const NB: usize, const NV: usize> ForceElement<S, G, N
         out: &mut DriveDerivatives<S, NV>,
     ) -> Result<()> {
         self.check_dof::<NV>()?;
-        out.tau[self.dof] += self.torque_per_current() * read_input(w, self.input)?;
+        out.tau[self.dof] += self.gain() * read_input(w, self.input)?;
         Ok(())
     }
 }

@@ -8,8 +8,45 @@
 use crate::drive::derivatives::{add_tension_derivatives, DriveDerivativeState, DriveDerivatives};
 use crate::drive::geometry::PointGeometry;
 use crate::drive::{DriveForces, DriveState, ForceElement, Path};
-use crate::error::Result;
+use crate::error::{Error, Quantity, Result};
 use crate::Scalar;
+
+/// `value` when it is finite; otherwise the error that names why: a
+/// non-finite `length` (`Quantity::PathLength`), a non-finite parameter
+/// (`Quantity::Drive`, its index in `parameters`), or finite numbers whose
+/// result overflows (`Quantity::Drive`). One test on the way out, the
+/// search only on failure.
+#[inline]
+fn checked<S: Scalar>(value: S, length: S, parameters: &[S]) -> Result<S> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(why_not_finite(length, parameters))
+    }
+}
+
+/// [`checked`]'s error, out of line: it runs only on failure, and a
+/// firmware's image should not carry a copy at every call.
+#[cold]
+#[inline(never)]
+fn why_not_finite<S: Scalar>(length: S, parameters: &[S]) -> Error {
+    if !length.is_finite() {
+        Error::NonFinite {
+            quantity: Quantity::PathLength,
+            index: 0,
+        }
+    } else if let Some(index) = parameters.iter().position(|p| !p.is_finite()) {
+        Error::NonFinite {
+            quantity: Quantity::Drive,
+            index,
+        }
+    } else {
+        Error::NonFiniteResult {
+            quantity: Quantity::Drive,
+            index: 0,
+        }
+    }
+}
 
 /// A linear spring along a path: `T = k (L - L₀)`, energy `½ k (L - L₀)²`.
 #[derive(Clone, Copy, Debug)]
@@ -33,14 +70,28 @@ impl<S: Scalar, G: PointGeometry, const K: usize> LinearSpring<S, G, K> {
         }
     }
     /// Tension (N) at path length `length` (m).
-    #[must_use]
-    pub fn tension(&self, length: S) -> S {
-        self.stiffness * (length - self.rest_length)
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`] for a non-finite length (`Quantity::PathLength`)
+    /// or parameter (`Quantity::Drive`, 0: stiffness, 1: rest length),
+    /// [`Error::NonFiniteResult`] when the tension overflows.
+    pub fn tension(&self, length: S) -> Result<S> {
+        checked(
+            self.stiffness * (length - self.rest_length),
+            length,
+            &[self.stiffness, self.rest_length],
+        )
     }
     /// Stored energy (J) at path length `length` (m).
-    #[must_use]
-    pub fn potential_energy(&self, length: S) -> S {
-        S::from_f64(0.5) * self.stiffness * (length - self.rest_length).squared()
+    ///
+    /// # Errors
+    /// As [`tension`](Self::tension).
+    pub fn potential_energy(&self, length: S) -> Result<S> {
+        checked(
+            S::from_f64(0.5) * self.stiffness * (length - self.rest_length).squared(),
+            length,
+            &[self.stiffness, self.rest_length],
+        )
     }
 }
 
@@ -55,7 +106,7 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
     ) -> Result<()> {
         let kin = self.path.kinematics(state.data)?;
         self.path
-            .add_tension(&kin, self.tension(kin.length), state.data, &mut out.f_ext)
+            .add_tension(&kin, self.tension(kin.length)?, state.data, &mut out.f_ext)
     }
     fn add_state_derivatives(
         &self,
@@ -64,7 +115,7 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
         out: &mut DriveDerivatives<S, NV>,
     ) -> Result<()> {
         let path = self.path.length_derivatives(state)?;
-        let tension = (self.tension(path.length), self.stiffness, S::ZERO);
+        let tension = (self.tension(path.length)?, self.stiffness, S::ZERO);
         add_tension_derivatives(&path, state.v, tension, out);
         Ok(())
     }
@@ -101,22 +152,47 @@ impl<S: Scalar, G: PointGeometry, const K: usize> NonlinearSpring<S, G, K> {
         }
     }
     /// Tension (N) at path length `length` (m).
-    #[must_use]
-    pub fn tension(&self, length: S) -> S {
+    ///
+    /// # Errors
+    /// [`Error::NonFinite`] for a non-finite length (`Quantity::PathLength`)
+    /// or parameter (`Quantity::Drive`, 0: stiffness, 1: cubic stiffness,
+    /// 2: rest length), [`Error::NonFiniteResult`] when the result
+    /// overflows.
+    pub fn tension(&self, length: S) -> Result<S> {
         let delta = length - self.rest_length;
-        delta * (self.stiffness + self.cubic_stiffness * delta * delta)
+        checked(
+            delta * (self.stiffness + self.cubic_stiffness * delta * delta),
+            length,
+            &self.parameters(),
+        )
     }
     /// The tangent stiffness `dT/dL = k + 3 k₃ (L − L₀)²` (N/m).
-    #[must_use]
-    pub fn stiffness_at(&self, length: S) -> S {
+    ///
+    /// # Errors
+    /// As [`tension`](Self::tension).
+    pub fn stiffness_at(&self, length: S) -> Result<S> {
         let delta = length - self.rest_length;
-        self.stiffness + S::from_f64(3.0) * self.cubic_stiffness * delta * delta
+        checked(
+            self.stiffness + S::from_f64(3.0) * self.cubic_stiffness * delta * delta,
+            length,
+            &self.parameters(),
+        )
     }
     /// Stored energy (J) at path length `length` (m).
-    #[must_use]
-    pub fn potential_energy(&self, length: S) -> S {
+    ///
+    /// # Errors
+    /// As [`tension`](Self::tension).
+    pub fn potential_energy(&self, length: S) -> Result<S> {
         let d2 = (length - self.rest_length).squared();
-        d2 * (S::from_f64(0.5) * self.stiffness + S::from_f64(0.25) * self.cubic_stiffness * d2)
+        checked(
+            d2 * (S::from_f64(0.5) * self.stiffness
+                + S::from_f64(0.25) * self.cubic_stiffness * d2),
+            length,
+            &self.parameters(),
+        )
+    }
+    fn parameters(&self) -> [S; 3] {
+        [self.stiffness, self.cubic_stiffness, self.rest_length]
     }
 }
 
@@ -131,7 +207,7 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
     ) -> Result<()> {
         let kin = self.path.kinematics(state.data)?;
         self.path
-            .add_tension(&kin, self.tension(kin.length), state.data, &mut out.f_ext)
+            .add_tension(&kin, self.tension(kin.length)?, state.data, &mut out.f_ext)
     }
     fn add_state_derivatives(
         &self,
@@ -141,8 +217,8 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
     ) -> Result<()> {
         let path = self.path.length_derivatives(state)?;
         let tension = (
-            self.tension(path.length),
-            self.stiffness_at(path.length),
+            self.tension(path.length)?,
+            self.stiffness_at(path.length)?,
             S::ZERO,
         );
         add_tension_derivatives(&path, state.v, tension, out);

@@ -141,3 +141,13 @@ pub trait Scalar:
         values.iter().all(|v| *v == Self::ZERO)
     }
 }
+
+/// `true` when every entry of `x` is finite, tested one by one: the
+/// fallback of the tests that sum a small vector's entries first (a
+/// spatial motion, a transform), out of line and shared, since it runs
+/// only when the sum is not finite.
+#[cold]
+#[inline(never)]
+pub(crate) fn entries_finite<S: Scalar>(x: &[S]) -> bool {
+    x.iter().all(|v| v.is_finite())
+}

@@ -58,7 +58,7 @@ use crate::algorithm::forward_dynamics::bias_and_mass;
 use crate::algorithm::frames::frame_placement;
 use crate::algorithm::ltdl::ltdl_solve;
 use crate::data::Data;
-use crate::error::{Error, Quantity, Result};
+use crate::error::{Error, Quantity, Result, Setting};
 use crate::frame::Frame;
 use crate::model::{check_finite, check_result, Model};
 use crate::sim::integrator::check_time;
@@ -148,22 +148,23 @@ impl<S: Scalar> TimeSteppingSettings<S> {
     }
 
     /// # Errors
-    /// [`Error::InvalidGain`]: index 0 for the friction, 1 for no sweeps,
-    /// 2 for `β` outside `[0, 1]`, 3 for a negative or non-finite margin.
+    /// [`Error::InvalidSetting`] naming the friction, the sweeps (none),
+    /// the depth recovery (`β` outside `[0, 1]`) or the margin (negative
+    /// or not finite).
     fn validate(&self) -> Result<()> {
         let fine = |x: S| x.is_finite() && x.to_f64() >= 0.0;
         let problem = if !fine(self.friction) {
-            Some(0)
+            Some(Setting::Friction)
         } else if self.sweeps == 0 {
-            Some(1)
+            Some(Setting::Sweeps)
         } else if !(fine(self.depth_recovery) && self.depth_recovery.to_f64() <= 1.0) {
-            Some(2)
+            Some(Setting::DepthRecovery)
         } else if !fine(self.margin) {
-            Some(3)
+            Some(Setting::Margin)
         } else {
             None
         };
-        problem.map_or(Ok(()), |index| Err(Error::InvalidGain { index }))
+        problem.map_or(Ok(()), |setting| Err(Error::InvalidSetting { setting }))
     }
 }
 
@@ -221,10 +222,12 @@ impl<S: Scalar, const NV: usize, const NC: usize, const NP: usize> Default
 ///
 /// # Errors
 /// [`Error::TooManyConstraints`] when `NC < 3 NP`,
-/// [`Error::InvalidGain`] for bad settings (see [`TimeSteppingSettings`];
-/// index 4 for a negative or non-finite damping entry),
+/// [`Error::InvalidSetting`] for bad settings (see [`TimeSteppingSettings`];
+/// [`Setting::JointDamping`] for a negative or non-finite damping entry),
 /// [`Error::FrameBodyOutOfRange`] for a point on a missing body,
-/// [`Error::NonFinite`] for a non-finite time, step, state or torque,
+/// [`Error::NonFinite`] for a non-finite time, step, state or torque, or
+/// a point whose placement is not finite (`Quantity::Contact`, the
+/// point's index),
 /// [`Error::OutOfRange`] (`Quantity::Time`, index 1) for a step that is
 /// not positive, and those of the algorithms it runs.
 #[allow(clippy::too_many_arguments)]
@@ -253,8 +256,13 @@ pub fn time_step<
         });
     }
     settings.validate()?;
-    if !damping.iter().all(|d| d.is_finite() && d.to_f64() >= 0.0) {
-        return Err(Error::InvalidGain { index: 4 });
+    if let Some(dof) = damping
+        .iter()
+        .position(|d| !(d.is_finite() && d.to_f64() >= 0.0))
+    {
+        return Err(Error::InvalidSetting {
+            setting: Setting::JointDamping { dof },
+        });
     }
     check_time(state.t, dt)?;
     if dt.to_f64() <= 0.0 {
@@ -279,7 +287,18 @@ pub fn time_step<
     let mut index = [0; NP];
     let mut active = 0;
     for (p, point) in points.iter().enumerate() {
-        let gap = frame_placement(data, point)?.trans.z;
+        // A point whose placement is not finite is refused, naming it,
+        // rather than read as a point above the ground.
+        let gap = frame_placement(data, point)
+            .map_err(|error| match error {
+                Error::NonFinite { .. } => Error::NonFinite {
+                    quantity: Quantity::Contact,
+                    index: p,
+                },
+                other => other,
+            })?
+            .trans
+            .z;
         sdata.gaps[p] = gap;
         sdata.in_contact[p] = gap.to_f64() <= settings.margin.to_f64();
         if sdata.in_contact[p] {

@@ -114,7 +114,12 @@ impl<S: Scalar> VectorOps<S> for Motion<S> {
     const ZERO: Self = Self::new(Vec3::ZERO, Vec3::ZERO);
     #[inline]
     fn is_finite(&self) -> bool {
-        self.ang.is_finite() && self.lin.is_finite()
+        // One test of the sum (a NaN or infinity makes it non-finite);
+        // the entries one by one only when it fails, since finite entries
+        // can overflow it.
+        let (a, l) = (&self.ang, &self.lin);
+        ((a.x + a.y) + (a.z + l.x) + (l.y + l.z)).is_finite()
+            || crate::scalar::entries_finite(&[a.x, a.y, a.z, l.x, l.y, l.z])
     }
     #[inline]
     fn component(&self, k: usize) -> S {
@@ -152,7 +157,12 @@ impl<S: Scalar> VectorOps<S> for Force<S> {
     const ZERO: Self = Self::new(Vec3::ZERO, Vec3::ZERO);
     #[inline]
     fn is_finite(&self) -> bool {
-        self.ang.is_finite() && self.lin.is_finite()
+        // One test of the sum (a NaN or infinity makes it non-finite);
+        // the entries one by one only when it fails, since finite entries
+        // can overflow it.
+        let (a, l) = (&self.ang, &self.lin);
+        ((a.x + a.y) + (a.z + l.x) + (l.y + l.z)).is_finite()
+            || crate::scalar::entries_finite(&[a.x, a.y, a.z, l.x, l.y, l.z])
     }
     #[inline]
     fn component(&self, k: usize) -> S {

@@ -30,7 +30,18 @@ impl<S: Scalar> Transform<S> {
     #[inline]
     #[must_use]
     pub fn is_finite(&self) -> bool {
-        self.trans.is_finite() && self.rot.m.iter().flatten().all(|v| v.is_finite())
+        // One test of the sum (a NaN or infinity makes it non-finite); the
+        // entries one by one only when it fails, since finite entries can
+        // overflow it.
+        let (m, t) = (&self.rot.m, &self.trans);
+        let rows = (m[0][0] + m[0][1] + m[0][2])
+            + (m[1][0] + m[1][1] + m[1][2])
+            + (m[2][0] + m[2][1] + m[2][2]);
+        (rows + (t.x + t.y + t.z)).is_finite()
+            || crate::scalar::entries_finite(&[
+                m[0][0], m[0][1], m[0][2], m[1][0], m[1][1], m[1][2], m[2][0], m[2][1], m[2][2],
+                t.x, t.y, t.z,
+            ])
     }
     /// The identity transform.
     pub const IDENTITY: Self = Self::new(Mat3::IDENTITY, Vec3::ZERO);

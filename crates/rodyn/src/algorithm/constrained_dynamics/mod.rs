@@ -53,15 +53,17 @@ pub(crate) use kkt::{add_response, form_delassus, prepare, Poses};
 use super::dense::{cholesky_in_place, cholesky_solve};
 use super::jacobian::JacobianData;
 use crate::data::Data;
-use crate::error::{Error, Quantity, Result};
+use crate::error::{Error, Quantity, Result, Setting};
 use crate::model::{check_finite, check_result, Model};
 use crate::space::VectorOps;
 use crate::spatial::{Motion, Spatial};
 use crate::Scalar;
 
-/// Relative size (of the Delassus matrix's largest diagonal entry, in
-/// units of ε) below which a pivot counts as zero: the contacts are
-/// redundant.
+/// Relative size (of the pivot's own diagonal entry of the Delassus
+/// matrix, in units of ε) below which a pivot counts as zero: the contacts
+/// are redundant. Each row against its own entry, since a frame contact's
+/// force rows (1/kg) and moment rows (1/(kg m²)) have different units (see
+/// [`cholesky_in_place`]).
 const PIVOT_TOLERANCE: f64 = 1e3;
 
 /// How [`constrained_forward_dynamics_with`] solves the system (see the
@@ -243,8 +245,8 @@ impl<S: Scalar, const NV: usize, const NC: usize> Default for ConstraintData<S, 
 ///
 /// # Errors
 /// [`Error::TooManyConstraints`] for more than `NC` rows,
-/// [`Error::InvalidGain`] for a negative or non-finite gain (index 0:
-/// `kp`, 1: `kd`, 2: `damping`), [`Error::FrameBodyOutOfRange`] for a
+/// [`Error::InvalidSetting`] for a negative or non-finite gain or damping
+/// (naming `kp`, `kd` or `damping`), [`Error::FrameBodyOutOfRange`] for a
 /// contact on a body the model does not have, [`Error::NonFinite`] for a
 /// non-finite anchor or contact frame (`Quantity::Contact`, the contact's
 /// index) or input, [`Error::RedundantConstraints`] when the contacts are
@@ -369,8 +371,8 @@ pub fn constrained_forward_dynamics_with<
 /// `lambda` holds `Λ`).
 ///
 /// # Errors
-/// As [`constrained_forward_dynamics`]; [`Error::InvalidGain`] with index
-/// 0 for a restitution outside `[0, 1]`, 2 for a bad damping.
+/// As [`constrained_forward_dynamics`]; [`Error::InvalidSetting`] for a
+/// restitution outside `[0, 1]` or a negative or non-finite damping.
 #[allow(clippy::too_many_arguments)]
 pub fn impulse_dynamics<
     'c,
@@ -391,7 +393,9 @@ pub fn impulse_dynamics<
 ) -> Result<(&'c [S; NV], &'c [S])> {
     let e = restitution.to_f64();
     if !(0.0..=1.0).contains(&e) {
-        return Err(Error::InvalidGain { index: 0 });
+        return Err(Error::InvalidSetting {
+            setting: Setting::Restitution,
+        });
     }
     let settings = ConstraintSettings::new().with_damping(damping);
     check_input(contacts, &settings, NB, NC)?;
@@ -420,12 +424,16 @@ pub(crate) fn check_input<S: Scalar>(
     if rows > capacity {
         return Err(Error::TooManyConstraints { rows, capacity });
     }
-    let gains = [settings.kp, settings.kd, settings.damping];
-    if let Some(index) = gains
+    let gains = [
+        (settings.kp, Setting::PositionGain),
+        (settings.kd, Setting::VelocityGain),
+        (settings.damping, Setting::ContactDamping),
+    ];
+    if let Some(&(_, setting)) = gains
         .iter()
-        .position(|g| !(g.is_finite() && g.to_f64() >= 0.0))
+        .find(|(g, _)| !(g.is_finite() && g.to_f64() >= 0.0))
     {
-        return Err(Error::InvalidGain { index });
+        return Err(Error::InvalidSetting { setting });
     }
     for (index, c) in contacts.iter().enumerate() {
         let frame = c.held_frame();
