@@ -256,8 +256,8 @@ pub fn plot(
 
 /// The series' points (already transformed to axis units) and their
 /// legend entries, onto `chart`.
-fn draw_marks<DB: DrawingBackend>(
-    chart: &mut ChartContext<'_, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>,
+fn draw_marks<'a, DB: DrawingBackend + 'a>(
+    chart: &mut ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>,
     series: &[Series],
     data: &[Vec<(f64, f64)>],
 ) -> Result<(), Box<dyn std::error::Error>>
@@ -268,7 +268,7 @@ where
         let c = color(s.color);
         let legend_color = c;
         match s.mark {
-            Mark::Line | Mark::ThinLine | Mark::LinePoints => {
+            Mark::Line | Mark::ThinLine => {
                 let width = if s.mark == Mark::ThinLine { 1 } else { 2 };
                 chart
                     .draw_series(LineSeries::new(
@@ -279,8 +279,58 @@ where
                     .legend(move |(x, y)| {
                         PathElement::new([(x, y), (x + 18, y)], legend_color.stroke_width(2))
                     });
-                if s.mark == Mark::LinePoints {
-                    chart.draw_series(points.iter().map(|&p| Circle::new(p, 3, c.filled())))?;
+            }
+            Mark::LinePoints => {
+                chart.draw_series(LineSeries::new(points.iter().copied(), c.stroke_width(2)))?;
+                // The marker's shape follows the palette index, so that
+                // lines stay apart where colours are hard to tell apart;
+                // the legend shows the line with its marker.
+                let pts = points.iter().copied();
+                let line = move |x: i32, y: i32| {
+                    EmptyElement::at((x, y))
+                        + PathElement::new([(0, 0), (18, 0)], legend_color.stroke_width(2))
+                };
+                let square = |c: RGBColor| Rectangle::new([(-3, -3), (3, 3)], c.filled());
+                let diamond =
+                    |c: RGBColor| Polygon::new(vec![(0, -5), (5, 0), (0, 5), (-5, 0)], c.filled());
+                match PointShape::of(s.color) {
+                    PointShape::Circle => {
+                        chart
+                            .draw_series(pts.map(|p| Circle::new(p, 4, c.filled())))?
+                            .label(&s.name)
+                            .legend(move |(x, y)| {
+                                line(x, y) + Circle::new((9, 0), 4, legend_color.filled())
+                            });
+                    }
+                    PointShape::Triangle => {
+                        chart
+                            .draw_series(pts.map(|p| TriangleMarker::new(p, 5, c.filled())))?
+                            .label(&s.name)
+                            .legend(move |(x, y)| {
+                                line(x, y) + TriangleMarker::new((9, 0), 5, legend_color.filled())
+                            });
+                    }
+                    PointShape::Square => {
+                        chart
+                            .draw_series(pts.map(|p| EmptyElement::at(p) + square(c)))?
+                            .label(&s.name)
+                            .legend(move |(x, y)| {
+                                line(x, y)
+                                    + Rectangle::new([(6, -3), (12, 3)], legend_color.filled())
+                            });
+                    }
+                    PointShape::Diamond => {
+                        chart
+                            .draw_series(pts.map(|p| EmptyElement::at(p) + diamond(c)))?
+                            .label(&s.name)
+                            .legend(move |(x, y)| {
+                                line(x, y)
+                                    + Polygon::new(
+                                        vec![(9, -5), (14, 0), (9, 5), (4, 0)],
+                                        legend_color.filled(),
+                                    )
+                            });
+                    }
                 }
             }
             Mark::Points => {
@@ -316,6 +366,23 @@ where
         }
     }
     Ok(())
+}
+
+/// Shape of a line's point markers.
+#[derive(Clone, Copy)]
+enum PointShape {
+    Circle,
+    Triangle,
+    Square,
+    Diamond,
+}
+
+impl PointShape {
+    /// The shape for palette index `index`: neighbouring colours get
+    /// different shapes.
+    fn of(index: usize) -> Self {
+        [Self::Circle, Self::Triangle, Self::Square, Self::Diamond][index % 4]
+    }
 }
 
 /// One panel of a multi-panel figure: its own title and series.
@@ -460,8 +527,23 @@ where
         let y = 60 + 22 * k as i32;
         let c = color(s.color);
         match s.mark {
-            Mark::Line | Mark::ThinLine | Mark::LinePoints => {
+            Mark::Line | Mark::ThinLine => {
                 panel.draw(&PathElement::new([(8, y), (26, y)], c.stroke_width(2)))?
+            }
+            Mark::LinePoints => {
+                panel.draw(&PathElement::new([(4, y), (30, y)], c.stroke_width(2)))?;
+                let at = (17, y);
+                match PointShape::of(s.color) {
+                    PointShape::Circle => panel.draw(&Circle::new(at, 4, c.filled()))?,
+                    PointShape::Triangle => panel.draw(&TriangleMarker::new(at, 5, c.filled()))?,
+                    PointShape::Square => panel.draw(
+                        &(EmptyElement::at(at) + Rectangle::new([(-3, -3), (3, 3)], c.filled())),
+                    )?,
+                    PointShape::Diamond => panel.draw(
+                        &(EmptyElement::at(at)
+                            + Polygon::new(vec![(0, -5), (5, 0), (0, 5), (-5, 0)], c.filled())),
+                    )?,
+                }
             }
             Mark::Points => panel.draw(&Circle::new((17, y), 3, c.filled()))?,
             Mark::Rings => panel.draw(&Circle::new((17, y), 5, c.stroke_width(2)))?,
