@@ -407,3 +407,79 @@ fn print_summary(name: &str, points: &[Point], front: &[usize]) {
         points.len()
     );
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `chart --replot` draws from what the sweep wrote: every field and
+    /// the front come back from the CSV, a failure's message included.
+    #[test]
+    fn the_csv_reads_back_what_the_sweep_wrote() {
+        let points = vec![
+            Point {
+                method: Method::Aba,
+                scalar: ScalarType::F32,
+                integrator: IntegratorKind::Rk4,
+                dt: 1e-3,
+                cost: 3.5e-3,
+                error: 4.2e-3,
+                failure: None,
+            },
+            Point {
+                method: Method::Crba,
+                scalar: ScalarType::F64,
+                integrator: IntegratorKind::RigidContact,
+                dt: 5e-3,
+                cost: 1.0e-3,
+                error: 2.7e-2,
+                failure: None,
+            },
+            Point {
+                method: Method::Crba,
+                scalar: ScalarType::F64,
+                integrator: IntegratorKind::ExplicitEuler,
+                dt: 5e-3,
+                cost: 2.0e-4,
+                error: f64::INFINITY,
+                failure: Some("step 12: state not finite, joint 3".into()),
+            },
+        ];
+        let path = std::env::temp_dir().join(format!("rodyn-chart-{}.csv", std::process::id()));
+        write_csv(&path, &points, &[0]).unwrap();
+        let (back, front) = read_csv(&path).unwrap();
+        std::fs::remove_file(&path).unwrap();
+        assert_eq!(front, vec![0]);
+        assert_eq!(back.len(), 3);
+        for (a, b) in points.iter().zip(&back) {
+            assert_eq!(
+                (a.method, a.scalar, a.integrator),
+                (b.method, b.scalar, b.integrator)
+            );
+            assert_eq!(a.dt, b.dt);
+            // Written to 5 significant digits.
+            assert!((a.cost - b.cost).abs() <= 1e-4 * a.cost);
+            assert!(a.error == b.error || (a.error - b.error).abs() <= 1e-4 * a.error);
+        }
+        assert_eq!(
+            back[2].failure.as_deref(),
+            Some("step 12: state not finite; joint 3")
+        );
+    }
+
+    /// A damaged file is refused with its name, line and field.
+    #[test]
+    fn a_bad_field_is_named_with_its_line() {
+        let path = std::env::temp_dir().join(format!("rodyn-chart-bad-{}.csv", std::process::id()));
+        std::fs::write(
+            &path,
+            "method,scalar,integrator,dt,cost_s_per_s,max_error,pareto,failure\n\
+             ABA,f32,rk4,1e-3,fast,1e-3,false,\n",
+        )
+        .unwrap();
+        let message = read_csv(&path).unwrap_err().to_string();
+        std::fs::remove_file(&path).unwrap();
+        assert!(message.contains("line 2"), "{message}");
+        assert!(message.contains("cost 'fast'"), "{message}");
+    }
+}
