@@ -24,7 +24,13 @@ use std::path::{Path, PathBuf};
 /// One curve of a figure: label, colour, values over the cycle.
 type Curve = (&'static str, RGBColor, Vec<f64>);
 
-/// Draws curves against percent of the gait cycle into an SVG.
+/// Width of the legend column right of the plot (px).
+const LEGEND_WIDTH: u32 = 250;
+
+/// Draws curves against percent of the gait cycle into an SVG, the legend
+/// in a column beside the plot so that it covers no curve. A curve whose
+/// label starts with "left" is dashed: colour tells the quantity, the line
+/// the side.
 fn plot(
     path: &Path,
     title: &str,
@@ -36,10 +42,11 @@ fn plot(
         .flat_map(|c| c.2.iter())
         .fold((0.0_f64, 0.0_f64), |(lo, hi), &y| (lo.min(y), hi.max(y)));
     let pad = 0.08 * (hi - lo).max(1e-9);
-    let root = SVGBackend::new(path, (720, 420)).into_drawing_area();
+    let root = SVGBackend::new(path, (720 + LEGEND_WIDTH, 420)).into_drawing_area();
     root.fill(&WHITE)?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption(title, ("sans-serif", 20))
+    let root = root.titled(title, ("sans-serif", 20))?;
+    let (plot_area, legend_area) = root.split_horizontally(720);
+    let mut chart = ChartBuilder::on(&plot_area)
         .margin(12)
         .x_label_area_size(40)
         .y_label_area_size(60)
@@ -49,26 +56,25 @@ fn plot(
         .x_desc("% of gait cycle (0 = right heel strike; right toe off at 60 %)")
         .y_desc(y_label)
         .draw()?;
-    for (label, colour, values) in curves {
+    let font = ("sans-serif", 14).into_font().color(&BLACK);
+    for (k, (label, colour, values)) in curves.iter().enumerate() {
         let n = values.len() - 1;
         let style = ShapeStyle::from(colour).stroke_width(2);
-        chart
-            .draw_series(LineSeries::new(
-                values
-                    .iter()
-                    .enumerate()
-                    .map(|(k, &y)| (100.0 * k as f64 / n as f64, y)),
-                style,
-            ))?
-            .label(*label)
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], style));
+        let points = values
+            .iter()
+            .enumerate()
+            .map(|(k, &y)| (100.0 * k as f64 / n as f64, y));
+        let y = 30 + 22 * k as i32;
+        if label.starts_with("left") {
+            chart.draw_series(DashedLineSeries::new(points, 6, 4, style))?;
+            legend_area.draw(&PathElement::new(vec![(4, y), (12, y)], style))?;
+            legend_area.draw(&PathElement::new(vec![(18, y), (26, y)], style))?;
+        } else {
+            chart.draw_series(LineSeries::new(points, style))?;
+            legend_area.draw(&PathElement::new(vec![(4, y), (26, y)], style))?;
+        }
+        legend_area.draw(&Text::new(*label, (32, y - 8), font.clone()))?;
     }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .position(SeriesLabelPosition::UpperRight)
-        .draw()?;
     root.present()?;
     Ok(())
 }
@@ -162,15 +168,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     ];
     println!("\n| joint moment | peak (N m/kg) | at % of cycle |\n|---|---|---|");
     let mut torque_curves = Vec::new();
-    let colours = [
-        RED,
-        BLUE,
-        GREEN,
-        RGBColor(255, 140, 0),
-        CYAN,
-        MAGENTA,
-        BLACK,
-    ];
+    // Left joints dashed in the right joints' colours.
+    let colours = [RED, BLUE, GREEN, RED, BLUE, GREEN, BLACK];
     for ((name, k, sign), colour) in joints.iter().zip(colours) {
         let values = per_kg(&|g| sign * g.tau[*k]);
         let (at, value) = peak(&values);
@@ -239,7 +238,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     plot(
         &img.join("ground_reaction.svg"),
         "Input: ground reaction forces (synthetic)",
-        "force / body weight",
+        "force (body weights)",
         &[
             ("right vertical", RED, bw(&|r| r.right.force[1])),
             (
@@ -247,8 +246,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 RGBColor(255, 140, 0),
                 bw(&|r| r.right.force[0]),
             ),
-            ("left vertical", BLUE, bw(&|r| r.left.force[1])),
-            ("left anterior", CYAN, bw(&|r| r.left.force[0])),
+            ("left vertical", RED, bw(&|r| r.left.force[1])),
+            (
+                "left anterior",
+                RGBColor(255, 140, 0),
+                bw(&|r| r.left.force[0]),
+            ),
         ],
     )?;
     println!("\nwrote {}", img.display());

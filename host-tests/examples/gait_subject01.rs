@@ -251,81 +251,110 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
             .map(|f| f.loads[k] * scale)
             .collect::<Vec<_>>()
     };
-    plot_time(
+    let shade_edges = Shading::Spans(vec![(time[0], edges.0), (edges.1, time[time.len() - 1])]);
+    let solid = |label, colour, values| Curve {
+        label,
+        colour,
+        dashed: false,
+        values,
+    };
+    plot_panels(
         &args.out.join("joint_moments.svg"),
         "Joint moments, subject01 (internal, data README signs)",
-        "moment / body mass (N m/kg)",
+        "time (s); grey: first and last 5 frames, distorted by the source filter",
         &time,
-        edges,
-        &[
-            ("hip flexion r (+ flexor)", RED, series(3, 1.0 / mass)),
-            ("knee r (+ extensor)", BLUE, series(4, 1.0 / mass)),
-            ("ankle r (+ dorsiflexor)", GREEN, series(5, 1.0 / mass)),
-            (
-                "hip flexion l",
-                RGBColor(255, 140, 0),
-                series(6, 1.0 / mass),
-            ),
-            ("knee l", CYAN, series(7, 1.0 / mass)),
-            ("ankle l", MAGENTA, series(8, 1.0 / mass)),
-            ("lumbar (+ extensor)", BLACK, series(9, 1.0 / mass)),
-        ],
+        &shade_edges,
+        &[Panel {
+            y_label: "moment / body mass (N m/kg)",
+            curves: vec![
+                solid("hip flexion r (+ flexor)", RED, series(3, 1.0 / mass)),
+                solid("knee r (+ extensor)", BLUE, series(4, 1.0 / mass)),
+                solid("ankle r (+ dorsiflexor)", GREEN, series(5, 1.0 / mass)),
+                Curve {
+                    dashed: true,
+                    ..solid("hip flexion l", RED, series(6, 1.0 / mass))
+                },
+                Curve {
+                    dashed: true,
+                    ..solid("knee l", BLUE, series(7, 1.0 / mass))
+                },
+                Curve {
+                    dashed: true,
+                    ..solid("ankle l", GREEN, series(8, 1.0 / mass))
+                },
+                solid("lumbar (+ extensor)", BLACK, series(9, 1.0 / mass)),
+            ],
+        }],
     )?;
-    plot_time(
+    plot_panels(
         &args.out.join("residuals.svg"),
         "Pelvis residuals (zero for consistent data)",
-        "force (% body weight) / moment (N m)",
+        "time (s); grey: first and last 5 frames, distorted by the source filter",
         &time,
-        edges,
+        &shade_edges,
         &[
-            ("residual force x (% BW)", RED, series(1, 100.0 / weight)),
-            ("residual force y (% BW)", BLUE, series(2, 100.0 / weight)),
-            ("residual moment (N m)", BLACK, series(0, 1.0)),
+            Panel {
+                y_label: "force (% body weight)",
+                curves: vec![
+                    solid("residual force x", RED, series(1, 100.0 / weight)),
+                    solid("residual force y", BLUE, series(2, 100.0 / weight)),
+                ],
+            },
+            Panel {
+                y_label: "moment (N m)",
+                curves: vec![solid("residual moment", BLACK, series(0, 1.0))],
+            },
         ],
     )?;
     let cycle_percent: Vec<f64> = cycle.iter().map(|&k| percent(frames[k].time)).collect();
     let socket = |set: &[Frame], pick: fn(&Frame) -> f64| set.iter().map(pick).collect::<Vec<_>>();
-    plot_cycle(
+    let toe_off = percent(RIGHT_TOE_OFF);
+    plot_panels(
         &args.out.join("socket_loads.svg"),
+        "Load on the residual thigh at the socket, right gait cycle (thigh frame)",
+        &format!(
+            "% of right gait cycle (heel strike 0.618 s; toe off at {toe_off:.0} %, grey line)"
+        ),
         &cycle_percent,
-        percent(RIGHT_TOE_OFF),
+        &Shading::Line(toe_off),
         &[
-            (
-                "τ_p, own limb (N m)",
-                RED,
-                false,
-                socket(&own, |f| f.socket.torque),
-            ),
-            (
-                "τ_p, prosthesis (N m)",
-                RED,
-                true,
-                socket(&lighter, |f| f.socket.torque),
-            ),
-            (
-                "F_p normal, own limb (N / 10)",
-                BLUE,
-                false,
-                socket(&own, |f| f.socket.normal / 10.0),
-            ),
-            (
-                "F_p normal, prosthesis (N / 10)",
-                BLUE,
-                true,
-                socket(&lighter, |f| f.socket.normal / 10.0),
-            ),
-            (
-                "shear, own limb (N / 10)",
-                GREEN,
-                false,
-                socket(&own, |f| f.socket.shear / 10.0),
-            ),
-            (
-                "shear, prosthesis (N / 10)",
-                GREEN,
-                true,
-                socket(&lighter, |f| f.socket.shear / 10.0),
-            ),
+            Panel {
+                y_label: "torque τ_p (N m)",
+                curves: vec![
+                    solid("own limb", RED, socket(&own, |f| f.socket.torque)),
+                    Curve {
+                        dashed: true,
+                        ..solid("prosthesis", RED, socket(&lighter, |f| f.socket.torque))
+                    },
+                ],
+            },
+            Panel {
+                y_label: "force (N)",
+                curves: vec![
+                    solid(
+                        "normal F_p, own limb",
+                        BLUE,
+                        socket(&own, |f| f.socket.normal),
+                    ),
+                    Curve {
+                        dashed: true,
+                        ..solid(
+                            "normal F_p, prosthesis",
+                            BLUE,
+                            socket(&lighter, |f| f.socket.normal),
+                        )
+                    },
+                    solid("shear, own limb", GREEN, socket(&own, |f| f.socket.shear)),
+                    Curve {
+                        dashed: true,
+                        ..solid(
+                            "shear, prosthesis",
+                            GREEN,
+                            socket(&lighter, |f| f.socket.shear),
+                        )
+                    },
+                ],
+            },
         ],
     )?;
     println!(
@@ -335,113 +364,96 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
     Ok(())
 }
 
-type Curve = (&'static str, RGBColor, Vec<f64>);
-
-/// Curves against time, with the filter-distorted edges shaded.
-fn plot_time(
-    path: &Path,
-    title: &str,
-    y_label: &str,
-    time: &[f64],
-    edges: (f64, f64),
-    curves: &[Curve],
-) -> Result<(), Box<dyn std::error::Error>> {
-    let (lo, hi) = range(curves.iter().flat_map(|c| c.2.iter()));
-    let root = SVGBackend::new(path, (900, 480)).into_drawing_area();
-    root.fill(&WHITE)?;
-    let (t0, t1) = (time[0], time[time.len() - 1]);
-    let mut chart = ChartBuilder::on(&root)
-        .caption(title, ("sans-serif", 20))
-        .margin(12)
-        .x_label_area_size(40)
-        .y_label_area_size(60)
-        .build_cartesian_2d(t0..t1, lo..hi)?;
-    chart
-        .configure_mesh()
-        .x_desc("time (s); grey: first and last 5 frames, distorted by the source filter")
-        .y_desc(y_label)
-        .draw()?;
-    let grey = RGBColor(215, 215, 215).filled();
-    chart.draw_series([
-        Rectangle::new([(t0, lo), (edges.0, hi)], grey),
-        Rectangle::new([(edges.1, lo), (t1, hi)], grey),
-    ])?;
-    for (label, colour, values) in curves {
-        let style = ShapeStyle::from(colour).stroke_width(2);
-        chart
-            .draw_series(LineSeries::new(
-                time.iter().copied().zip(values.iter().copied()),
-                style,
-            ))?
-            .label(*label)
-            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], style));
-    }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .position(SeriesLabelPosition::UpperRight)
-        .draw()?;
-    root.present()?;
-    Ok(())
+/// One curve: solid or dashed, its legend label, its values at the
+/// figure's x positions.
+struct Curve {
+    label: &'static str,
+    colour: RGBColor,
+    dashed: bool,
+    values: Vec<f64>,
 }
 
-/// Socket loads over the right gait cycle, solid for the own limb and
-/// dashed for the prosthesis, toe off marked.
-fn plot_cycle(
+/// One panel: its y axis (one unit) and its curves.
+struct Panel {
+    y_label: &'static str,
+    curves: Vec<Curve>,
+}
+
+/// What a figure marks on every panel behind the curves.
+enum Shading {
+    /// Grey bands over these x spans.
+    Spans(Vec<(f64, f64)>),
+    /// A grey vertical line at this x.
+    Line(f64),
+}
+
+/// Width of the legend column to the right of the panels (px).
+const LEGEND_WIDTH: u32 = 210;
+
+/// Panels stacked over a shared x axis, each with its own legend in a
+/// column to its right, so no legend covers a curve.
+fn plot_panels(
     path: &Path,
-    percent: &[f64],
-    toe_off: f64,
-    curves: &[(&'static str, RGBColor, bool, Vec<f64>)],
+    title: &str,
+    x_label: &str,
+    x: &[f64],
+    shading: &Shading,
+    panels: &[Panel],
 ) -> Result<(), Box<dyn std::error::Error>> {
-    let (lo, hi) = range(curves.iter().flat_map(|c| c.3.iter()));
-    let root = SVGBackend::new(path, (900, 520)).into_drawing_area();
+    let height = 60 + 400 * panels.len() as u32;
+    let root = SVGBackend::new(path, (900 + LEGEND_WIDTH, height)).into_drawing_area();
     root.fill(&WHITE)?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption(
-            "Load on the residual thigh at the socket, right gait cycle",
-            ("sans-serif", 20),
-        )
-        .margin(12)
-        .x_label_area_size(40)
-        .y_label_area_size(60)
-        .build_cartesian_2d(0.0..100.0, lo..hi)?;
-    chart
-        .configure_mesh()
-        .x_desc(format!(
-            "% of right gait cycle (heel strike 0.618 s; toe off at {toe_off:.0} %)"
-        ))
-        .y_desc("torque (N m) / force (N / 10), thigh frame")
-        .draw()?;
-    chart.draw_series(LineSeries::new(
-        [(toe_off, lo), (toe_off, hi)],
-        BLACK.mix(0.4),
-    ))?;
-    for (label, colour, dashed, values) in curves {
-        let style = ShapeStyle::from(colour).stroke_width(2);
-        let points: Vec<(f64, f64)> = percent
-            .iter()
-            .copied()
-            .zip(values.iter().copied())
-            .collect();
-        if *dashed {
-            chart
-                .draw_series(DashedLineSeries::new(points, 6, 4, style))?
-                .label(*label)
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 6, y)], style));
-        } else {
-            chart
-                .draw_series(LineSeries::new(points, style))?
-                .label(*label)
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], style));
+    let root = root.titled(title, ("sans-serif", 20))?;
+    let (x0, x1) = (x[0], x[x.len() - 1]);
+    for (panel, area) in panels.iter().zip(root.split_evenly((panels.len(), 1))) {
+        let (plot_area, legend_area) = area.split_horizontally(900);
+        let (lo, hi) = range(panel.curves.iter().flat_map(|c| c.values.iter()));
+        let mut chart = ChartBuilder::on(&plot_area)
+            .margin(12)
+            .x_label_area_size(40)
+            .y_label_area_size(60)
+            .build_cartesian_2d(x0..x1, lo..hi)?;
+        chart
+            .configure_mesh()
+            .x_desc(x_label)
+            .y_desc(panel.y_label)
+            .draw()?;
+        let grey = RGBColor(215, 215, 215);
+        match shading {
+            Shading::Spans(spans) => {
+                chart.draw_series(
+                    spans
+                        .iter()
+                        .map(|&(a, b)| Rectangle::new([(a, lo), (b, hi)], grey.filled())),
+                )?;
+            }
+            Shading::Line(at) => {
+                chart.draw_series(LineSeries::new(
+                    [(*at, lo), (*at, hi)],
+                    RGBColor(150, 150, 150).stroke_width(1),
+                ))?;
+            }
+        }
+        let font = ("sans-serif", 14).into_font().color(&BLACK);
+        for (k, curve) in panel.curves.iter().enumerate() {
+            let style = ShapeStyle::from(curve.colour).stroke_width(2);
+            let points: Vec<(f64, f64)> = x
+                .iter()
+                .copied()
+                .zip(curve.values.iter().copied())
+                .collect();
+            let y = 40 + 24 * k as i32;
+            if curve.dashed {
+                chart.draw_series(DashedLineSeries::new(points, 6, 4, style))?;
+                legend_area.draw(&PathElement::new(vec![(4, y), (12, y)], style))?;
+                legend_area.draw(&PathElement::new(vec![(18, y), (26, y)], style))?;
+            } else {
+                chart.draw_series(LineSeries::new(points, style))?;
+                legend_area.draw(&PathElement::new(vec![(4, y), (26, y)], style))?;
+            }
+            legend_area.draw(&Text::new(curve.label, (32, y - 8), font.clone()))?;
         }
     }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .position(SeriesLabelPosition::LowerRight)
-        .draw()?;
     root.present()?;
     Ok(())
 }

@@ -78,7 +78,11 @@ const MUSCLE_COLORS: [RGBColor; NU] = [
 /// One curve: legend label, colour, dashed or not, points (t, y).
 type Series = (String, RGBColor, bool, Vec<(f64, f64)>);
 
-/// Draws one panel of time series.
+/// Width of the legend column right of each panel (px).
+const LEGEND_WIDTH: i32 = 150;
+
+/// Draws one panel of time series, its legend in a column to its right
+/// so that the legend covers no curve.
 fn panel<DB: DrawingBackend>(
     area: &DrawingArea<DB, plotters::coord::Shift>,
     title: &str,
@@ -95,7 +99,9 @@ where
             (lo.min(y), hi.max(y))
         });
     let pad = 0.05 * (hi - lo).max(1e-9);
-    let mut chart = ChartBuilder::on(area)
+    let width = area.dim_in_pixel().0 as i32;
+    let (plot_area, legend_area) = area.split_horizontally(width - LEGEND_WIDTH);
+    let mut chart = ChartBuilder::on(&plot_area)
         .caption(title, ("sans-serif", 18))
         .margin(8)
         .x_label_area_size(32)
@@ -107,36 +113,20 @@ where
         .y_desc(y_label)
         .light_line_style(WHITE)
         .draw()?;
-    for (name, color, dashed, points) in series {
-        let color = *color;
+    let font = ("sans-serif", 14).into_font().color(&BLACK);
+    for (k, (name, color, dashed, points)) in series.iter().enumerate() {
+        let style = color.stroke_width(2);
+        let y = 50 + 22 * k as i32;
         if *dashed {
-            chart
-                .draw_series(DashedLineSeries::new(
-                    points.iter().copied(),
-                    6,
-                    4,
-                    color.stroke_width(2),
-                ))?
-                .label(name.as_str())
-                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], color));
+            chart.draw_series(DashedLineSeries::new(points.iter().copied(), 6, 4, style))?;
+            legend_area.draw(&PathElement::new(vec![(4, y), (12, y)], style))?;
+            legend_area.draw(&PathElement::new(vec![(18, y), (26, y)], style))?;
         } else {
-            chart
-                .draw_series(LineSeries::new(
-                    points.iter().copied(),
-                    color.stroke_width(2),
-                ))?
-                .label(name.as_str())
-                .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 18, y)], color.stroke_width(2))
-                });
+            chart.draw_series(LineSeries::new(points.iter().copied(), style))?;
+            legend_area.draw(&PathElement::new(vec![(4, y), (26, y)], style))?;
         }
+        legend_area.draw(&Text::new(name.clone(), (32, y - 8), font.clone()))?;
     }
-    chart
-        .configure_series_labels()
-        .background_style(WHITE.mix(0.8))
-        .border_style(BLACK)
-        .position(SeriesLabelPosition::UpperRight)
-        .draw()?;
     Ok(())
 }
 
@@ -175,13 +165,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let mut series = Vec::new();
         for (k, color) in MUSCLE_COLORS.into_iter().enumerate() {
             series.push((
-                format!("u{}", k + 1),
+                format!("u{} (excitation)", k + 1),
                 color,
                 true,
                 samples.iter().map(|s| (s.t, s.u[k])).collect(),
             ));
             series.push((
-                format!("a{}", k + 1),
+                format!("a{} (activation)", k + 1),
                 color,
                 false,
                 samples.iter().map(|s| (s.t, s.a[k])).collect(),
@@ -190,7 +180,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         panel(
             &bottom,
             "Excitations u (dashed) and activations a (Thelen 2003)",
-            "u, a",
+            "u, a (fraction of maximum, 0 to 1)",
             &series,
         )?;
         root.present()?;
@@ -208,7 +198,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             let series: Vec<_> = (0..NU)
                 .map(|k| {
                     (
-                        format!("∂q̈{}/∂a{}", i + 1, k + 1),
+                        // Plain text: the legend cannot lay out ∂ or q̈'s
+                        // combining accent; the title names the derivative.
+                        format!("muscle {} (a{})", k + 1, k + 1),
                         MUSCLE_COLORS[k],
                         false,
                         samples.iter().map(|s| (s.t, s.sensitivity[i][k])).collect(),
@@ -218,7 +210,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             panel(
                 &area,
                 &format!("Sensitivity of the {joint} acceleration to the activations"),
-                "rad/s² per unit a",
+                "rad/s² per unit activation",
                 &series,
             )?;
         }

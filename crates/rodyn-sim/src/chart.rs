@@ -1,7 +1,7 @@
 //! `rodyn-sim chart`: cost per simulated second against error, for every
 //! combination of method, scalar, integrator and step, with the Pareto front.
 
-use crate::plot::{plot, Figure, Mark, Scale, Series};
+use crate::plot::{plot_panels, Figure, Mark, Panel, Scale, Series};
 use crate::scenario::{run, IntegratorKind, Method, RunConfig, ScalarType, Scenario};
 use indicatif::ProgressBar;
 use std::io::Write;
@@ -165,127 +165,321 @@ fn label(p: &Point) -> String {
     )
 }
 
+/// The scenarios the chart covers.
+const CHART_SCENARIOS: [Scenario; 3] = [
+    Scenario::ArmSwing,
+    Scenario::QuadrupedStand,
+    Scenario::MuscleRobot,
+];
+
 /// Runs the sweep for the arm, the quadruped and the muscle robot, writes
 /// `chart-<scenario>.svg` and `.csv` into `out`, and prints the front and the
-/// 1 kHz candidates.
-pub fn chart_command(out: &Path) -> Result<(), Box<dyn std::error::Error>> {
+/// 1 kHz candidates. With `replot`, runs nothing: reads the points back
+/// from the `.csv` files already in `out` (the costs are host timings, which
+/// a new sweep would not reproduce) and redraws the `.svg` files.
+pub fn chart_command(out: &Path, replot: bool) -> Result<(), Box<dyn std::error::Error>> {
     std::fs::create_dir_all(out)?;
-    for scenario in [
-        Scenario::ArmSwing,
-        Scenario::QuadrupedStand,
-        Scenario::MuscleRobot,
-    ] {
-        let points = sweep(scenario);
-        let front = pareto_front(&points);
+    for scenario in CHART_SCENARIOS {
         let name = scenario.name();
-        let mut csv = std::fs::File::create(out.join(format!("chart-{name}.csv")))?;
+        let csv_path = out.join(format!("chart-{name}.csv"));
+        let (points, front) = if replot {
+            read_csv(&csv_path)?
+        } else {
+            let points = sweep(scenario);
+            let front = pareto_front(&points);
+            write_csv(&csv_path, &points, &front)?;
+            (points, front)
+        };
+        draw(
+            scenario,
+            &points,
+            &front,
+            &out.join(format!("chart-{name}.svg")),
+        )?;
+        print_summary(name, &points, &front);
+    }
+    Ok(())
+}
+
+/// The points and the front, as `chart-<scenario>.csv`.
+fn write_csv(path: &Path, points: &[Point], front: &[usize]) -> std::io::Result<()> {
+    let mut csv = std::fs::File::create(path)?;
+    writeln!(
+        csv,
+        "method,scalar,integrator,dt,cost_s_per_s,max_error,pareto,failure"
+    )?;
+    for (i, p) in points.iter().enumerate() {
         writeln!(
             csv,
-            "method,scalar,integrator,dt,cost_s_per_s,max_error,pareto,failure"
+            "{},{},{},{:e},{:.4e},{:.4e},{},{}",
+            method_name(p),
+            p.scalar.name(),
+            p.integrator.name(),
+            p.dt,
+            p.cost,
+            p.error,
+            front.contains(&i),
+            p.failure.as_deref().unwrap_or("").replace(',', ";")
         )?;
-        for (i, p) in points.iter().enumerate() {
-            writeln!(
-                csv,
-                "{},{},{},{:e},{:.4e},{:.4e},{},{}",
-                method_name(p),
-                p.scalar.name(),
-                p.integrator.name(),
-                p.dt,
-                p.cost,
-                p.error,
-                front.contains(&i),
-                p.failure.as_deref().unwrap_or("").replace(',', ";")
-            )?;
+    }
+    Ok(())
+}
+
+/// The points and the front back from a file [`write_csv`] wrote; an
+/// error names the file, the line and the field it cannot read.
+fn read_csv(path: &Path) -> Result<(Vec<Point>, Vec<usize>), Box<dyn std::error::Error>> {
+    let text = std::fs::read_to_string(path).map_err(|e| {
+        format!(
+            "{}: {e} (run `rodyn-sim chart` without --replot first to measure the points)",
+            path.display()
+        )
+    })?;
+    let mut points = Vec::new();
+    let mut front = Vec::new();
+    for (n, line) in text.lines().enumerate().skip(1) {
+        let at = |what: &str| format!("{} line {}: {what}", path.display(), n + 1);
+        let fields: Vec<&str> = line.splitn(8, ',').collect();
+        if fields.len() != 8 {
+            return Err(at("expected 8 comma-separated fields").into());
         }
-        let mut series = Vec::new();
-        for (ii, integrator) in IntegratorKind::ALL.into_iter().enumerate() {
-            for (si, scalar) in [ScalarType::F32, ScalarType::F64].into_iter().enumerate() {
+        let number = |k: usize, what: &str| -> Result<f64, String> {
+            fields[k]
+                .parse::<f64>()
+                .map_err(|_| at(&format!("{what} '{}' is not a number", fields[k])))
+        };
+        let integrator = IntegratorKind::ALL
+            .into_iter()
+            .chain([IntegratorKind::RigidContact])
+            .find(|i| i.name() == fields[2])
+            .ok_or_else(|| at(&format!("unknown integrator '{}'", fields[2])))?;
+        let method = match fields[0] {
+            "ABA" => Method::Aba,
+            "CRBA" | "KKT" => Method::Crba,
+            other => return Err(at(&format!("unknown method '{other}'")).into()),
+        };
+        let scalar = [ScalarType::F32, ScalarType::F64]
+            .into_iter()
+            .find(|s| s.name() == fields[1])
+            .ok_or_else(|| at(&format!("unknown scalar '{}'", fields[1])))?;
+        if fields[6] == "true" {
+            front.push(points.len());
+        }
+        points.push(Point {
+            method,
+            scalar,
+            integrator,
+            dt: number(3, "dt")?,
+            cost: number(4, "cost")?,
+            error: number(5, "error")?,
+            failure: (!fields[7].is_empty()).then(|| fields[7].to_owned()),
+        });
+    }
+    Ok((points, front))
+}
+
+/// Colour of a scalar type: the same in every panel.
+fn scalar_color(scalar: ScalarType) -> usize {
+    match scalar {
+        ScalarType::F32 => 1,
+        ScalarType::F64 => 0,
+    }
+}
+
+/// The chart: one panel per integrator (and one for rigid feet), each with
+/// at most four point series and the Pareto front of all the runs, on
+/// shared axes. Colour is the scalar, the marker the method.
+fn draw(
+    scenario: Scenario,
+    points: &[Point],
+    front: &[usize],
+    path: &Path,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let mut front_points: Vec<(f64, f64)> = front
+        .iter()
+        .map(|&i| (points[i].cost, points[i].error))
+        .collect();
+    front_points.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let front_line = Series::new(
+        "Pareto front of all compliant runs",
+        front_points,
+        Mark::ThinLine,
+        10,
+    );
+    let mut integrators = IntegratorKind::ALL.to_vec();
+    if scenario.has_feet() {
+        integrators.push(IntegratorKind::RigidContact);
+    }
+    let panels: Vec<Panel> = integrators
+        .into_iter()
+        .map(|integrator| {
+            let runs: Vec<&Point> = points
+                .iter()
+                .filter(|p| p.integrator == integrator)
+                .collect();
+            let failed = runs.iter().filter(|p| !p.error.is_finite()).count();
+            let mut series = Vec::new();
+            for scalar in [ScalarType::F32, ScalarType::F64] {
                 for method in [Method::Aba, Method::Crba] {
-                    let pts: Vec<(f64, f64)> = points
+                    let pts: Vec<(f64, f64)> = runs
                         .iter()
-                        .filter(|p| {
-                            p.integrator == integrator && p.scalar == scalar && p.method == method
-                        })
+                        .filter(|p| p.scalar == scalar && p.method == method)
                         .map(|p| (p.cost, p.error))
                         .collect();
-                    let mark = if method == Method::Aba {
-                        Mark::Points
-                    } else {
-                        Mark::Crosses
+                    if pts.is_empty() {
+                        continue;
+                    }
+                    let (mark, method_label) = match (integrator, method) {
+                        (IntegratorKind::RigidContact, _) => (Mark::Triangles, "KKT, rigid feet"),
+                        (_, Method::Aba) => (Mark::Rings, "ABA"),
+                        (_, Method::Crba) => (Mark::Crosses, "CRBA"),
                     };
                     series.push(Series::new(
-                        format!("{} {} {}", integrator.name(), scalar.name(), method.name()),
+                        format!("{method_label}, {}", scalar.name()),
                         pts,
                         mark,
-                        2 * ii + si,
+                        scalar_color(scalar),
                     ));
                 }
             }
-        }
-        if scenario.has_feet() {
-            for (si, scalar) in [ScalarType::F32, ScalarType::F64].into_iter().enumerate() {
-                let pts: Vec<(f64, f64)> = points
-                    .iter()
-                    .filter(|p| p.integrator == IntegratorKind::RigidContact && p.scalar == scalar)
-                    .map(|p| (p.cost, p.error))
-                    .collect();
-                series.push(Series::new(
-                    format!("rigid contact {} (vs rigid ref.)", scalar.name()),
-                    pts,
-                    Mark::Triangles,
-                    10 + si,
+            series.push(front_line.clone());
+            let mut title = integrator.name().to_owned();
+            if integrator == IntegratorKind::RigidContact {
+                title.push_str(" (error against a rigid reference)");
+            }
+            if failed > 0 {
+                title.push_str(&format!(
+                    " ({failed} of {} runs failed, not drawn)",
+                    runs.len()
                 ));
             }
-        }
-        let front_points = front
-            .iter()
-            .map(|&i| (points[i].cost, points[i].error))
-            .collect();
-        series.push(Series::new("Pareto front", front_points, Mark::ThinLine, 9));
-        let title = if scenario.has_feet() {
-            format!(
-                "{name}: cost against error ({DURATION} s simulated; circles ABA, crosses CRBA, triangles rigid feet)"
-            )
-        } else {
-            format!(
-                "{name}: cost against error ({DURATION} s simulated; circles ABA, crosses CRBA)"
-            )
-        };
-        plot(
-            &out.join(format!("chart-{name}.svg")),
-            &Figure {
-                title: &title,
-                x_label: "host seconds per simulated second (median of 3)",
-                y_label: "max |q - q_ref| over the run",
-                x_scale: Scale::Log,
-                y_scale: Scale::Log,
-            },
-            &series,
-        )?;
-        println!("{name}: Pareto front (cheapest first)");
-        for &i in &front {
-            let p = &points[i];
-            println!(
-                "  {:<45} cost {:.2e} s/s  error {:.2e}",
-                label(p),
-                p.cost,
-                p.error
-            );
-        }
-        println!("{name}: every combination at dt = 1 ms (a 1 kHz loop)");
-        for p in points.iter().filter(|p| p.dt == 1e-3) {
-            println!(
-                "  {:<45} cost {:.2e} s/s  error {:.2e}",
-                label(p),
-                p.cost,
-                p.error
-            );
-        }
-        let failed = points.iter().filter(|p| p.failure.is_some()).count();
+            Panel { title, series }
+        })
+        .collect();
+    let title = format!(
+        "{}: cost against error, {DURATION} s simulated, steps 0.1 to 5 ms",
+        scenario.name()
+    );
+    let y_label = if scenario.has_feet() {
+        // The floating base's position (m) and the joint angles (rad)
+        // share one maximum in the recorded error.
+        "max |q - q_ref| (m or rad, largest coordinate)"
+    } else {
+        "max |q - q_ref| (rad)"
+    };
+    plot_panels(
+        path,
+        &Figure {
+            title: &title,
+            x_label: "cost (host s per simulated s, median of 3)",
+            y_label,
+            x_scale: Scale::Log,
+            y_scale: Scale::Log,
+        },
+        &panels,
+        3,
+    )
+}
+
+/// Prints the front and every combination at 1 ms.
+fn print_summary(name: &str, points: &[Point], front: &[usize]) {
+    println!("{name}: Pareto front (cheapest first)");
+    for &i in front {
+        let p = &points[i];
         println!(
-            "{name}: {failed} of {} runs stopped with an error",
-            points.len()
+            "  {:<45} cost {:.2e} s/s  error {:.2e}",
+            label(p),
+            p.cost,
+            p.error
         );
     }
-    Ok(())
+    println!("{name}: every combination at dt = 1 ms (a 1 kHz loop)");
+    for p in points.iter().filter(|p| p.dt == 1e-3) {
+        println!(
+            "  {:<45} cost {:.2e} s/s  error {:.2e}",
+            label(p),
+            p.cost,
+            p.error
+        );
+    }
+    let failed = points.iter().filter(|p| p.failure.is_some()).count();
+    println!(
+        "{name}: {failed} of {} runs stopped with an error",
+        points.len()
+    );
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `chart --replot` draws from what the sweep wrote: every field and
+    /// the front come back from the CSV, a failure's message included.
+    #[test]
+    fn the_csv_reads_back_what_the_sweep_wrote() {
+        let points = vec![
+            Point {
+                method: Method::Aba,
+                scalar: ScalarType::F32,
+                integrator: IntegratorKind::Rk4,
+                dt: 1e-3,
+                cost: 3.5e-3,
+                error: 4.2e-3,
+                failure: None,
+            },
+            Point {
+                method: Method::Crba,
+                scalar: ScalarType::F64,
+                integrator: IntegratorKind::RigidContact,
+                dt: 5e-3,
+                cost: 1.0e-3,
+                error: 2.7e-2,
+                failure: None,
+            },
+            Point {
+                method: Method::Crba,
+                scalar: ScalarType::F64,
+                integrator: IntegratorKind::ExplicitEuler,
+                dt: 5e-3,
+                cost: 2.0e-4,
+                error: f64::INFINITY,
+                failure: Some("step 12: state not finite, joint 3".into()),
+            },
+        ];
+        let path = std::env::temp_dir().join(format!("rodyn-chart-{}.csv", std::process::id()));
+        write_csv(&path, &points, &[0]).unwrap();
+        let (back, front) = read_csv(&path).unwrap();
+        std::fs::remove_file(&path).unwrap();
+        assert_eq!(front, vec![0]);
+        assert_eq!(back.len(), 3);
+        for (a, b) in points.iter().zip(&back) {
+            assert_eq!(
+                (a.method, a.scalar, a.integrator),
+                (b.method, b.scalar, b.integrator)
+            );
+            assert_eq!(a.dt, b.dt);
+            // Written to 5 significant digits.
+            assert!((a.cost - b.cost).abs() <= 1e-4 * a.cost);
+            assert!(a.error == b.error || (a.error - b.error).abs() <= 1e-4 * a.error);
+        }
+        assert_eq!(
+            back[2].failure.as_deref(),
+            Some("step 12: state not finite; joint 3")
+        );
+    }
+
+    /// A damaged file is refused with its name, line and field.
+    #[test]
+    fn a_bad_field_is_named_with_its_line() {
+        let path = std::env::temp_dir().join(format!("rodyn-chart-bad-{}.csv", std::process::id()));
+        std::fs::write(
+            &path,
+            "method,scalar,integrator,dt,cost_s_per_s,max_error,pareto,failure\n\
+             ABA,f32,rk4,1e-3,fast,1e-3,false,\n",
+        )
+        .unwrap();
+        let message = read_csv(&path).unwrap_err().to_string();
+        std::fs::remove_file(&path).unwrap();
+        assert!(message.contains("line 2"), "{message}");
+        assert!(message.contains("cost 'fast'"), "{message}");
+    }
 }

@@ -5,6 +5,7 @@
 //! rodyn-sim run quadruped-trot --duration 5 --dt 1e-3 --method aba --integrator rk4 --scalar f64 -o out/
 //! rodyn-sim run quadruped-trot --html out/trot.html
 //! rodyn-sim chart -o docs/img/sim
+//! rodyn-sim chart --replot -o docs/img/sim
 //! rodyn-sim failures all -o docs/img/sim
 //! ```
 
@@ -73,6 +74,10 @@ enum Command {
         /// Output directory.
         #[arg(short, long, default_value = "docs/img/sim")]
         out: PathBuf,
+        /// Redraw the charts from the chart-*.csv already in the output
+        /// directory, without running (the costs are host timings).
+        #[arg(long)]
+        replot: bool,
     },
     /// The maps of where methods fail.
     Failures {
@@ -110,7 +115,9 @@ fn main() {
             check_run(&config, &out, html.as_deref())
                 .and_then(|()| run::run_command(&config, &out, html.as_deref()))
         }
-        Command::Chart { out } => check_output(&out).and_then(|()| chart::chart_command(&out)),
+        Command::Chart { out, replot } => {
+            check_output(&out).and_then(|()| chart::chart_command(&out, replot))
+        }
         Command::Failures { experiment, out } => {
             check_output(&out).and_then(|()| failures::failures_command(experiment, &out))
         }

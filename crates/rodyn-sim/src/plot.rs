@@ -3,6 +3,7 @@
 //! Logarithmic axes are drawn by plotting log10 of the data on a linear
 //! axis labelled in powers of ten: one code path for every combination.
 
+use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
 use plotters::style::{register_font, FontStyle};
 use std::path::Path;
@@ -20,6 +21,9 @@ pub enum Mark {
     ThinLine,
     /// Points only.
     Points,
+    /// Hollow circles, large enough to show a cross or point drawn at the
+    /// same place.
+    Rings,
     /// A line with points.
     LinePoints,
     /// Large crosses (failures, limits).
@@ -234,11 +238,37 @@ pub fn plot(
         .y_label_formatter(&|v| axis_label(*v, ys, y1 - y0))
         .light_line_style(RGBColor(235, 235, 235))
         .draw()?;
-    for (s, points) in series.iter().zip(&data) {
+    draw_marks(&mut chart, series, &data)?;
+    if side_legend {
+        draw_side_legend(&panel, series)?;
+    } else {
+        chart
+            .configure_series_labels()
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK.mix(0.3))
+            .position(corner.unwrap_or(SeriesLabelPosition::UpperRight))
+            .label_font(("sans-serif", 13))
+            .draw()?;
+    }
+    canvas.present()?;
+    Ok(())
+}
+
+/// The series' points (already transformed to axis units) and their
+/// legend entries, onto `chart`.
+fn draw_marks<'a, DB: DrawingBackend + 'a>(
+    chart: &mut ChartContext<'a, DB, Cartesian2d<RangedCoordf64, RangedCoordf64>>,
+    series: &[Series],
+    data: &[Vec<(f64, f64)>],
+) -> Result<(), Box<dyn std::error::Error>>
+where
+    DB::ErrorType: 'static,
+{
+    for (s, points) in series.iter().zip(data) {
         let c = color(s.color);
         let legend_color = c;
         match s.mark {
-            Mark::Line | Mark::ThinLine | Mark::LinePoints => {
+            Mark::Line | Mark::ThinLine => {
                 let width = if s.mark == Mark::ThinLine { 1 } else { 2 };
                 chart
                     .draw_series(LineSeries::new(
@@ -249,8 +279,58 @@ pub fn plot(
                     .legend(move |(x, y)| {
                         PathElement::new([(x, y), (x + 18, y)], legend_color.stroke_width(2))
                     });
-                if s.mark == Mark::LinePoints {
-                    chart.draw_series(points.iter().map(|&p| Circle::new(p, 3, c.filled())))?;
+            }
+            Mark::LinePoints => {
+                chart.draw_series(LineSeries::new(points.iter().copied(), c.stroke_width(2)))?;
+                // The marker's shape follows the palette index, so that
+                // lines stay apart where colours are hard to tell apart;
+                // the legend shows the line with its marker.
+                let pts = points.iter().copied();
+                let line = move |x: i32, y: i32| {
+                    EmptyElement::at((x, y))
+                        + PathElement::new([(0, 0), (18, 0)], legend_color.stroke_width(2))
+                };
+                let square = |c: RGBColor| Rectangle::new([(-3, -3), (3, 3)], c.filled());
+                let diamond =
+                    |c: RGBColor| Polygon::new(vec![(0, -5), (5, 0), (0, 5), (-5, 0)], c.filled());
+                match PointShape::of(s.color) {
+                    PointShape::Circle => {
+                        chart
+                            .draw_series(pts.map(|p| Circle::new(p, 4, c.filled())))?
+                            .label(&s.name)
+                            .legend(move |(x, y)| {
+                                line(x, y) + Circle::new((9, 0), 4, legend_color.filled())
+                            });
+                    }
+                    PointShape::Triangle => {
+                        chart
+                            .draw_series(pts.map(|p| TriangleMarker::new(p, 5, c.filled())))?
+                            .label(&s.name)
+                            .legend(move |(x, y)| {
+                                line(x, y) + TriangleMarker::new((9, 0), 5, legend_color.filled())
+                            });
+                    }
+                    PointShape::Square => {
+                        chart
+                            .draw_series(pts.map(|p| EmptyElement::at(p) + square(c)))?
+                            .label(&s.name)
+                            .legend(move |(x, y)| {
+                                line(x, y)
+                                    + Rectangle::new([(6, -3), (12, 3)], legend_color.filled())
+                            });
+                    }
+                    PointShape::Diamond => {
+                        chart
+                            .draw_series(pts.map(|p| EmptyElement::at(p) + diamond(c)))?
+                            .label(&s.name)
+                            .legend(move |(x, y)| {
+                                line(x, y)
+                                    + Polygon::new(
+                                        vec![(9, -5), (14, 0), (9, 5), (4, 0)],
+                                        legend_color.filled(),
+                                    )
+                            });
+                    }
                 }
             }
             Mark::Points => {
@@ -258,6 +338,12 @@ pub fn plot(
                     .draw_series(points.iter().map(|&p| Circle::new(p, 3, c.filled())))?
                     .label(&s.name)
                     .legend(move |(x, y)| Circle::new((x + 9, y), 3, legend_color.filled()));
+            }
+            Mark::Rings => {
+                chart
+                    .draw_series(points.iter().map(|&p| Circle::new(p, 6, c.stroke_width(2))))?
+                    .label(&s.name)
+                    .legend(move |(x, y)| Circle::new((x + 9, y), 5, legend_color.stroke_width(2)));
             }
             Mark::Crosses => {
                 chart
@@ -279,17 +365,105 @@ pub fn plot(
             }
         }
     }
-    if side_legend {
-        draw_side_legend(&panel, series)?;
-    } else {
-        chart
-            .configure_series_labels()
-            .background_style(WHITE.mix(0.85))
-            .border_style(BLACK.mix(0.3))
-            .position(corner.unwrap_or(SeriesLabelPosition::UpperRight))
-            .label_font(("sans-serif", 13))
-            .draw()?;
+    Ok(())
+}
+
+/// Shape of a line's point markers.
+#[derive(Clone, Copy)]
+enum PointShape {
+    Circle,
+    Triangle,
+    Square,
+    Diamond,
+}
+
+impl PointShape {
+    /// The shape for palette index `index`: neighbouring colours get
+    /// different shapes.
+    fn of(index: usize) -> Self {
+        [Self::Circle, Self::Triangle, Self::Square, Self::Diamond][index % 4]
     }
+}
+
+/// One panel of a multi-panel figure: its own title and series.
+#[derive(Clone, Debug)]
+pub struct Panel {
+    /// Title above the panel.
+    pub title: String,
+    /// Series drawn in it.
+    pub series: Vec<Series>,
+}
+
+/// Size of one panel (px).
+const PANEL_SIZE: (u32, u32) = (520, 380);
+
+/// Draws `panels` side by side, `columns` to a row, into an SVG at `path`,
+/// all on the same axes so that panels compare at a glance. `figure`'s
+/// title heads the figure and its labels go on every panel. The legend
+/// takes the grid cell after the last panel, outside every plot, and
+/// names each distinct series (by name) once: series drawn alike in
+/// several panels share one entry.
+pub fn plot_panels(
+    path: &Path,
+    figure: &Figure,
+    panels: &[Panel],
+    columns: usize,
+) -> Result<(), Box<dyn std::error::Error>> {
+    init_fonts();
+    let transformed = |s: &Series| -> Vec<(f64, f64)> {
+        s.points
+            .iter()
+            .filter_map(|&(x, y)| {
+                Some((transform(x, figure.x_scale)?, transform(y, figure.y_scale)?))
+            })
+            .collect()
+    };
+    let data: Vec<Vec<Vec<(f64, f64)>>> = panels
+        .iter()
+        .map(|p| p.series.iter().map(transformed).collect())
+        .collect();
+    let all = || data.iter().flatten().flatten();
+    let (x0, x1) = range(all().map(|p| p.0), figure.x_scale);
+    let (y0, y1) = range(all().map(|p| p.1), figure.y_scale);
+    let columns = columns.max(1);
+    let cells = panels.len() + 1;
+    let rows = cells.div_ceil(columns);
+    let canvas = SVGBackend::new(
+        path,
+        (
+            PANEL_SIZE.0 * columns as u32,
+            40 + PANEL_SIZE.1 * rows as u32,
+        ),
+    )
+    .into_drawing_area();
+    canvas.fill(&WHITE)?;
+    let grid = canvas.titled(figure.title, ("sans-serif", 20))?;
+    let areas = grid.split_evenly((rows, columns));
+    let (xs, ys) = (figure.x_scale, figure.y_scale);
+    for ((panel, points), area) in panels.iter().zip(&data).zip(&areas) {
+        let mut chart = ChartBuilder::on(area)
+            .caption(&panel.title, ("sans-serif", 16))
+            .margin(10)
+            .x_label_area_size(42)
+            .y_label_area_size(62)
+            .build_cartesian_2d(x0..x1, y0..y1)?;
+        chart
+            .configure_mesh()
+            .x_desc(figure.x_label)
+            .y_desc(figure.y_label)
+            .x_label_formatter(&|v| axis_label(*v, xs, x1 - x0))
+            .y_label_formatter(&|v| axis_label(*v, ys, y1 - y0))
+            .light_line_style(RGBColor(235, 235, 235))
+            .draw()?;
+        draw_marks(&mut chart, &panel.series, points)?;
+    }
+    let mut entries: Vec<Series> = Vec::new();
+    for s in panels.iter().flat_map(|p| &p.series) {
+        if !entries.iter().any(|e| e.name == s.name) {
+            entries.push(s.clone());
+        }
+    }
+    draw_side_legend(&areas[panels.len()], &entries)?;
     canvas.present()?;
     Ok(())
 }
@@ -353,10 +527,26 @@ where
         let y = 60 + 22 * k as i32;
         let c = color(s.color);
         match s.mark {
-            Mark::Line | Mark::ThinLine | Mark::LinePoints => {
+            Mark::Line | Mark::ThinLine => {
                 panel.draw(&PathElement::new([(8, y), (26, y)], c.stroke_width(2)))?
             }
+            Mark::LinePoints => {
+                panel.draw(&PathElement::new([(4, y), (30, y)], c.stroke_width(2)))?;
+                let at = (17, y);
+                match PointShape::of(s.color) {
+                    PointShape::Circle => panel.draw(&Circle::new(at, 4, c.filled()))?,
+                    PointShape::Triangle => panel.draw(&TriangleMarker::new(at, 5, c.filled()))?,
+                    PointShape::Square => panel.draw(
+                        &(EmptyElement::at(at) + Rectangle::new([(-3, -3), (3, 3)], c.filled())),
+                    )?,
+                    PointShape::Diamond => panel.draw(
+                        &(EmptyElement::at(at)
+                            + Polygon::new(vec![(0, -5), (5, 0), (0, 5), (-5, 0)], c.filled())),
+                    )?,
+                }
+            }
             Mark::Points => panel.draw(&Circle::new((17, y), 3, c.filled()))?,
+            Mark::Rings => panel.draw(&Circle::new((17, y), 5, c.stroke_width(2)))?,
             Mark::Crosses => panel.draw(&Cross::new((17, y), 5, c.stroke_width(2)))?,
             Mark::Triangles => panel.draw(&TriangleMarker::new((17, y), 5, c.filled()))?,
         }
