@@ -632,7 +632,7 @@ mod tests {
         };
         let mut reference = Data::new();
         let mut data = Data::new();
-        for _ in 0..20 {
+        for _ in 0..crate::test_points(20, 3) {
             let q: [f64; 7] = core::array::from_fn(|_| random());
             let v: [f64; 7] = core::array::from_fn(|_| random());
             let expected = *crba(&plain, &mut reference, &q).unwrap();
@@ -706,6 +706,9 @@ mod tests {
     }
 
     #[test]
+    // A minute and more under Miri, whose run the two long trees below
+    // (the same pass, with turned placements too) keep to minutes.
+    #[cfg_attr(miri, ignore)]
     fn the_root_frame_pass_gives_rneas_columns_with_and_without_turns() {
         let model = long_chain();
         assert!(CrbaPass::default_for::<f64, 52, 52>(model.topology()) == CrbaPass::RootFrame);
