@@ -5,7 +5,7 @@
 //! |--------------------------|-------------------------------------------------------------------|
 //! | `run [example]`          | builds the firmware, runs `example` (default: the arm controller) in QEMU, prints the decoded defmt log |
 //! | `test`                   | host tests (the core's and `rodyn-host-tests`' also in the in-order tuning profile), the no_std core for thumbv7em, every firmware example in QEMU against its expected output, sizes, panic sites, stack bounds, the viewer's pages in Chromium, the firmware template run from a copy outside the repository, lint |
-//! | `lint`                   | rustfmt, clippy and rustdoc, warnings as errors, host and firmware; the core without float features stops at one error; `cargo package` of every crate, the published libraries built from their packages; their public API against `xtask/public-api/` |
+//! | `lint`                   | rustfmt, clippy and rustdoc, warnings as errors, host and firmware; the core without float features stops at one error; `cargo package` of every crate, the published libraries built from their packages; their public API against `xtask/public-api/`; the core's unit tests under Miri (nightly), which stops at undefined behaviour |
 //! | `viewer`                 | the viewer's pages in headless Chromium (also a step of `test`): every model's page draws without an error, the Panda against its reference image, the trot moves when scrubbed |
 //! | `docs [--check]`         | regenerates every figure and table of the docs that a command draws the same on every run (`--check`: fails naming each committed file that differs) |
 //! | `costs`                  | runs the cost probe, measures sizes and bounds the stack, rewrites the tables in `docs/sections/firmware.md` and `firmware/expected/sizes.txt` |
@@ -20,7 +20,8 @@
 //! `thumbv7em-none-eabihf` target through rustup, QEMU and (for `test` and
 //! `lint`, which build `rodyn-optimal-control`) IPOPT's development files
 //! through apt-get when running as root (otherwise it stops with the
-//! command to run).
+//! command to run). `lint` adds Miri to an installed nightly toolchain
+//! through rustup; without a nightly toolchain it skips Miri and says so.
 
 mod costs;
 mod defmt_log;
@@ -29,6 +30,7 @@ mod expected;
 mod firmware;
 mod fp_ops;
 mod host_profile;
+mod miri;
 mod panic_sites;
 mod profile;
 mod public_api;
@@ -239,6 +241,7 @@ fn lint() -> Result<()> {
     no_float_features_is_one_error()?;
     packages()?;
     public_api::run(false)?;
+    miri::run()?;
     println!(
         "xtask lint: clean in {:.0} s",
         started.elapsed().as_secs_f64()

@@ -80,6 +80,19 @@ pub mod spatial;
 pub mod topology;
 mod tuning;
 
+/// How many points a test's sweep visits: `full`, or `miri` under Miri
+/// (`cargo xtask lint`), which interprets every operation and checks it
+/// for undefined behaviour, so that the whole suite stays a few minutes
+/// there.
+#[cfg(test)]
+pub(crate) const fn test_points(full: usize, miri: usize) -> usize {
+    if cfg!(miri) {
+        miri
+    } else {
+        full
+    }
+}
+
 pub use data::Data;
 pub use endpoint::Endpoint;
 pub use error::{Error, Result};

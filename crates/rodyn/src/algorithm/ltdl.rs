@@ -758,7 +758,8 @@ mod tests {
             })
         });
         let m = core::array::from_fn(|a| {
-            core::array::from_fn(|b| (0..NV).map(|k| l[k][a] * d[k] * l[k][b]).sum())
+            // `l[k][a]` is zero for `k < a`: the sum starts where both may not be.
+            core::array::from_fn(|b| (a.max(b)..NV).map(|k| l[k][a] * d[k] * l[k][b]).sum())
         });
         (d, l, m)
     }

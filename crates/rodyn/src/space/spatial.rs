@@ -469,7 +469,7 @@ mod tests {
         let mut state = 7;
         for rot in rotations {
             for joint in &joints {
-                for _ in 0..20 {
+                for _ in 0..crate::test_points(20, 1) {
                     let mut r = || next(&mut state);
                     let axis = Vec3::new(r(), r(), r() + 1.5);
                     let parent = Transform::new(

@@ -564,7 +564,7 @@ mod tests {
             Motion::new(Vec3::ZERO, Vec3::new(0.0, 0.0, -9.81)),
         );
         let mut state = 3u64;
-        for _ in 0..50 {
+        for _ in 0..crate::test_points(50, 2) {
             let mut q = [0.0; 14];
             for v in &mut q {
                 state = state
