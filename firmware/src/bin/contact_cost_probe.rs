@@ -227,9 +227,13 @@ fn probe_quadruped_kinematics(counter: &InstructionCounter) -> bool {
     let foot = probe_scene("quadruped-floating", "foot-Jacobian", counter, draw, |q| {
         chain_jacobian(&MODEL_F32, q, &chains[0], aligned, &mut columns[0]).is_ok()
     });
-    let feet = probe_scene("quadruped-floating", "four-feet-Jacobians", counter, draw, |q| {
-        chains_jacobians(&MODEL_F32, &mut data, q, &chains, aligned, &mut columns).is_ok()
-    });
+    let feet = probe_scene(
+        "quadruped-floating",
+        "four-feet-Jacobians",
+        counter,
+        draw,
+        |q| chains_jacobians(&MODEL_F32, &mut data, q, &chains, aligned, &mut columns).is_ok(),
+    );
     jacobians & ccrba & foot & feet
 }
 
