@@ -13,10 +13,8 @@
 //! * the example-robot-data sweep and the host arithmetic table
 //!   (`cargo xtask host-profile --table`): they need Pinocchio, which the
 //!   repository does not hold;
-//! * the optimal-control summary (`docs/img/optimal_control/`): its
-//!   example is being rewritten to write `DIR/summary.json`; once two runs
-//!   write the same bytes, a [`Generator`] running
-//!   `muscle_robot_optimal_control --out DIR` joins [`GENERATORS`].
+//! * the optimal-control example's `summary.json`: the same results as
+//!   its `results.json` (which is checked) plus the solve times.
 
 use crate::costs::{self, ProbeRuns};
 use crate::shell;
@@ -128,7 +126,39 @@ const GENERATORS: &[Generator] = &[
         run: quadruped_trot,
         files: &[
             ("quadruped-trot.svg", "docs/img/sim/quadruped-trot.svg"),
+            (
+                "quadruped-trot-forces.svg",
+                "docs/img/sim/quadruped-trot-forces.svg",
+            ),
             ("quadruped-trot.gif", "docs/img/sim/quadruped-trot.gif"),
+        ],
+    },
+    Generator {
+        name:
+            "speed-against-accuracy charts, redrawn from their timings (rodyn-sim chart --replot)",
+        run: charts_replotted,
+        files: &[
+            ("chart-arm-swing.svg", "docs/img/sim/chart-arm-swing.svg"),
+            (
+                "chart-quadruped-stand.svg",
+                "docs/img/sim/chart-quadruped-stand.svg",
+            ),
+            (
+                "chart-muscle-robot.svg",
+                "docs/img/sim/chart-muscle-robot.svg",
+            ),
+        ],
+    },
+    Generator {
+        name: "optimal control of the muscle robot (example muscle_robot_optimal_control)",
+        run: optimal_control,
+        files: &[
+            ("results.json", "docs/img/optimal_control/results.json"),
+            ("controls.csv", "docs/img/optimal_control/controls.csv"),
+            (
+                "optimal_controls.svg",
+                "docs/img/optimal_control/optimal_controls.svg",
+            ),
         ],
     },
     Generator {
@@ -409,6 +439,31 @@ fn quadruped_trot(out: &Path, _: Options) -> Result<()> {
         "rodyn-sim",
         &[],
         &["run", "quadruped-trot", "-o", text(out)?],
+    )
+    .map(drop)
+}
+
+/// The charts' timings are wall clock, so their CSV files are committed
+/// and only the drawing is regenerated from them.
+fn charts_replotted(out: &Path, _: Options) -> Result<()> {
+    for chart in ["arm-swing", "quadruped-stand", "muscle-robot"] {
+        let csv = format!("chart-{chart}.csv");
+        std::fs::copy(
+            shell::root().join("docs/img/sim").join(&csv),
+            out.join(&csv),
+        )
+        .with_context(|| format!("copying docs/img/sim/{csv}"))?;
+    }
+    cargo_run("rodyn-sim", &[], &["chart", "--replot", "-o", text(out)?]).map(drop)
+}
+
+/// The solve is deterministic; only `summary.json`'s seconds are not, and
+/// that file is left out.
+fn optimal_control(out: &Path, _: Options) -> Result<()> {
+    cargo_run(
+        "rodyn-optimal-control",
+        &["--example", "muscle_robot_optimal_control"],
+        &["--out", text(out)?],
     )
     .map(drop)
 }
