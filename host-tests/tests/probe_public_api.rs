@@ -26,6 +26,10 @@ use rodyn::algorithm::crba::crba;
 use rodyn::algorithm::derivatives::{aba_derivatives, rnea_derivatives, DerivativeData};
 use rodyn::algorithm::energy::{center_of_mass, kinetic_energy, potential_energy};
 use rodyn::algorithm::forward_dynamics::{Crba, ForwardDynamics};
+use rodyn::algorithm::frame_chain::{
+    chain_jacobian, chain_kinematics, chains_jacobians, frame_jacobian_from_q,
+    frame_kinematics_from_q, FrameChain, FrameMotion,
+};
 use rodyn::algorithm::frames::{
     frame_acceleration, frame_classical_acceleration, frame_placement, frame_velocity,
     ReferenceFrame,
@@ -156,9 +160,9 @@ fn panda_probes<S: Scalar>() -> Vec<Probe> {
                 $name,
                 Box::new(move |$x: f64, $slot: Slot| {
                     let $model = &model;
-                    let $data = &mut Box::new(Data::new());
+                    let $data = &mut Box::new(Data::<S, 7, 7>::new());
                     let ($q, $v, $a) = state::<S, 7, 7>(&q0, $x, $slot);
-                    let _ = (&$q, &$v, &$a, $x);
+                    let _ = (&$q, &$v, &$a, $x, &$data);
                     $body
                 }),
             ));
@@ -225,6 +229,63 @@ fn panda_probes<S: Scalar>() -> Vec<Probe> {
         let (c, mass) = center_of_mass(model, data, &q)?;
         let mut out = numbers(&c.to_array());
         out.push(mass.to_f64());
+        Ok(out)
+    });
+    // The frame chain: the frame's placement (a hostile value in its
+    // placement) and q, v from the state.
+    let lwa = ReferenceFrame::LocalWorldAligned;
+    let kinematics = |m: FrameMotion<S>| {
+        let mut out = pose(&m.placement);
+        out.extend(motion(&m.velocity));
+        out.extend(motion(&m.dj_v));
+        out
+    };
+    probe!("frame_jacobian_from_q", |model, data, q, v, a, x, slot| {
+        let mut j = [Motion::ZERO; 7];
+        let placement = frame_jacobian_from_q(model, &q, &frame_at(6, x, slot), lwa, &mut j)?;
+        let mut out = pose(&placement);
+        out.extend(j.iter().flat_map(motion));
+        Ok(out)
+    });
+    probe!("try_new", |model, data, q, v, a, x, slot| {
+        let chain = FrameChain::try_new(model, &frame_at(6, x, slot))?;
+        let mut j = [Motion::ZERO; 7];
+        let placement = chain_jacobian(model, &q, &chain, lwa, &mut j)?;
+        let mut out = pose(&placement);
+        out.extend(j.iter().flat_map(motion));
+        Ok(out)
+    });
+    probe!("chain_jacobian", |model, data, q, v, a, x, slot| {
+        let chain = FrameChain::try_new(model, &frame_at(6, x, slot))?;
+        let mut j = [Motion::ZERO; 7];
+        let placement = chain_jacobian(model, &q, &chain, ReferenceFrame::World, &mut j)?;
+        let mut out = pose(&placement);
+        out.extend(j.iter().flat_map(motion));
+        Ok(out)
+    });
+    probe!(
+        "frame_kinematics_from_q",
+        |model, data, q, v, a, x, slot| {
+            let mut j = [Motion::ZERO; 7];
+            let m = frame_kinematics_from_q(model, &q, &v, &frame_at(6, x, slot), lwa, &mut j)?;
+            Ok(kinematics(m))
+        }
+    );
+    probe!("chain_kinematics", |model, data, q, v, a, x, slot| {
+        let chain = FrameChain::try_new(model, &frame_at(6, x, slot))?;
+        let mut j = [Motion::ZERO; 7];
+        let m = chain_kinematics(model, &q, &v, &chain, ReferenceFrame::Local, &mut j)?;
+        Ok(kinematics(m))
+    });
+    probe!("chains_jacobians", |model, data, q, v, a, x, slot| {
+        let chains = [
+            FrameChain::try_new(model, &frame_at(6, x, slot))?,
+            FrameChain::try_new(model, &frame_at(3, 0.0, slot))?,
+        ];
+        let mut j = [[Motion::ZERO; 7]; 2];
+        let placements = chains_jacobians(model, data, &q, &chains, lwa, &mut j)?;
+        let mut out: Vec<f64> = placements.iter().flat_map(pose).collect();
+        out.extend(j.iter().flatten().flat_map(motion));
         Ok(out)
     });
     probe!("frame_placement", |model, data, q, v, a, x, slot| {
@@ -547,6 +608,7 @@ const NOT_PROBED: &[(&str, &str)] = &[
     ("default_for", "a settings constructor"),
     ("with_friction", "a settings constructor"),
     ("floating_base", "a settings constructor"),
+    ("fixed_base", "a settings constructor"),
     ("cast", "a contact's scalar conversion"),
     ("is_for", "a plan's bookkeeping (bool)"),
     ("constrained_rows", "a count of rows"),

@@ -405,7 +405,7 @@ pub fn frame_placement<S: Scalar, const NB: usize, const NV: usize, G: Space>(
 /// The error for a frame whose pose or motion came out non-finite: its
 /// placement's fault when that is not finite, otherwise an overflow.
 #[cold]
-fn frame_error<S: Scalar, G: Space>(frame: &Frame<S, G>) -> Error {
+pub(crate) fn frame_error<S: Scalar, G: Space>(frame: &Frame<S, G>) -> Error {
     let (quantity, index) = (Quantity::FramePlacement, frame.body);
     if frame.placement.is_finite() {
         Error::NonFiniteResult { quantity, index }

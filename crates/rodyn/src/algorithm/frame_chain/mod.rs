@@ -88,7 +88,7 @@ use crate::error::{Error, Result};
 use crate::frame::Frame;
 use crate::joint::JointModel;
 use crate::model::Model;
-use crate::space::{MotionVector, RigidTransform, Space};
+use crate::space::{MotionVector, RigidTransform, Space, VectorOps};
 use crate::spatial::Spatial;
 use crate::topology::SupportPath;
 use crate::Scalar;
@@ -208,9 +208,23 @@ pub fn chain_jacobian<
 ) -> Result<G::Transform<S>> {
     model.check_configuration(q)?;
     let o_m_b = world_columns_along(model, q, &chain.path, jacobian);
-    let o_m_f = o_m_b.compose(&chain.frame.placement);
+    let o_m_f = checked_placement(o_m_b.compose(&chain.frame.placement), &chain.frame)?;
     express_path_columns(model, &chain.path, &o_m_f, reference, jacobian);
     Ok(o_m_f)
+}
+
+/// `ᵒMf` when it is finite. One test of the pose covers a NaN or infinite
+/// frame placement (a [`Frame`] is plain data, checked by nothing when it
+/// was made), as [`frame_placement`](super::frames::frame_placement) does.
+fn checked_placement<S: Scalar, G: Space>(
+    o_m_f: G::Transform<S>,
+    frame: &Frame<S, G>,
+) -> Result<G::Transform<S>> {
+    if o_m_f.is_finite() {
+        Ok(o_m_f)
+    } else {
+        Err(super::frames::frame_error(frame))
+    }
 }
 
 /// The Jacobian of `frame` at `q` in `reference` (as
@@ -282,7 +296,7 @@ pub fn chain_kinematics<
         v_b = v_i;
     }
     let placement = &chain.frame.placement;
-    let o_m_f = o_m_b.compose(placement);
+    let o_m_f = checked_placement(o_m_b.compose(placement), &chain.frame)?;
     let (v_f, a_f) = (
         placement.act_inv_motion(&v_b),
         placement.act_inv_motion(&a_b),
@@ -301,6 +315,12 @@ pub fn chain_kinematics<
             )
         }
     };
+    // One test of the sum: a velocity near the square root of the largest
+    // float overflows `J̇ v` (the velocity's products) though q, v and the
+    // pose are finite.
+    if !(velocity + dj_v).is_finite() {
+        return Err(super::frames::frame_error(&chain.frame));
+    }
     express_path_columns(model, &chain.path, &o_m_f, reference, jacobian);
     Ok(FrameMotion {
         placement: o_m_f,
@@ -370,6 +390,9 @@ pub fn chains_jacobians<
         let chain = &chains[f];
         data.o_m_i[chain.path.body()].compose(&chain.frame.placement)
     });
+    for (o_m_f, chain) in placements.iter().zip(chains) {
+        checked_placement(*o_m_f, &chain.frame)?;
+    }
     // Each other frame's columns moved out of the shared world columns.
     for ((chain, out), o_m_f) in chains.iter().zip(others.iter_mut()).zip(&placements) {
         *out = [zero_motion::<S, G>(); NV];
