@@ -39,7 +39,7 @@ fn errors_print_with_names() {
     .unwrap_err();
     let text = two_link_muscles::Named(&error).to_string();
     assert!(text.starts_with("coordinate \"elbow\": "), "{text}");
-    assert!(text.contains("index 1"), "{text}");
+    assert!(text.contains("entry 1"), "{text}");
     // The same subject for logs without core::fmt (defmt).
     assert_eq!(
         two_link_muscles::Named(&error).subject(),
