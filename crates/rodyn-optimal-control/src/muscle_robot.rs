@@ -48,7 +48,7 @@ use rodyn::algorithm::jacobian::JacobianData;
 use rodyn::drive::{aba_derivatives_with_drives, DriveDerivatives};
 use rodyn::planar::Planar;
 use rodyn::sim::{AuxiliaryLoads, Integrator, Rk4};
-use rodyn::{Data, Dual};
+use rodyn::{Data, Dual, Scalar};
 use rodyn_scenarios::muscle_robot::{
     self as robot, activation_rates, RobotData, RobotForces, RobotLoads, RobotModel, RobotMuscles,
     NB, NU, NV,
@@ -255,20 +255,9 @@ impl MuscleRobot {
                     &mut self.forces,
                     &mut dq_ddot_da,
                 )?;
-                *a_out = [[0.0; NX]; NX];
                 *b_out = [[0.0; NU]; NX];
                 // q̈ along q and q̇: the muscles' paths move with them.
-                for (row, (dq, dv)) in a_out[NV..2 * NV]
-                    .iter_mut()
-                    .zip(self.derivatives.ddq_dq.iter().zip(&self.derivatives.ddq_dv))
-                {
-                    row[..NV].copy_from_slice(dq);
-                    row[NV..2 * NV].copy_from_slice(dv);
-                }
-                for (i, sensitivity) in dq_ddot_da.iter().enumerate() {
-                    a_out[i][NV + i] = 1.0;
-                    a_out[NV + i][2 * NV..].copy_from_slice(sensitivity);
-                }
+                rigid_body_rows(a_out, &self.derivatives, &dq_ddot_da);
                 let mut a_dot = [0.0; NU];
                 for k in 0..NU {
                     let (rate, d_du, d_da) =
@@ -280,6 +269,29 @@ impl MuscleRobot {
                 Ok(join(&v, &q_ddot, &a_dot))
             }
         }
+    }
+}
+
+/// The state Jacobian `A = ∂f/∂x`, `x = (q, q̇, a)`, zeroed and given its
+/// rigid-body rows: `∂q/∂q̇ = I`, `q̈` along `q` and `q̇` (`derivatives`)
+/// and along the activations (`dq_ddot_da`, the sensitivities). The
+/// activation rows are the muscle model's own.
+pub(crate) fn rigid_body_rows<S: Scalar>(
+    a_out: &mut [[S; NX]; NX],
+    derivatives: &DerivativeData<S, NB, NV, Planar>,
+    dq_ddot_da: &[[S; NU]; NV],
+) {
+    *a_out = [[S::ZERO; NX]; NX];
+    for (row, (dq, dv)) in a_out[NV..2 * NV]
+        .iter_mut()
+        .zip(derivatives.ddq_dq.iter().zip(&derivatives.ddq_dv))
+    {
+        row[..NV].copy_from_slice(dq);
+        row[NV..2 * NV].copy_from_slice(dv);
+    }
+    for (i, sensitivity) in dq_ddot_da.iter().enumerate() {
+        a_out[i][NV + i] = S::ONE;
+        a_out[NV + i][2 * NV..].copy_from_slice(sensitivity);
     }
 }
 

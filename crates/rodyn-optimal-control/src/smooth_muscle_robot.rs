@@ -22,7 +22,9 @@
 
 use crate::collocation::{Dynamics, Node, Trapezoidal};
 use crate::ipopt::{solve, Options, Solution};
-use crate::muscle_robot::{excitation_of, join, replay, split, Derivatives, Replay, Task, NX};
+use crate::muscle_robot::{
+    excitation_of, join, replay, rigid_body_rows, split, Derivatives, Replay, Task, NX,
+};
 use rodyn::algorithm::derivatives::DerivativeData;
 use rodyn::algorithm::forward_dynamics::Aba;
 use rodyn::algorithm::jacobian::JacobianData;
@@ -142,19 +144,8 @@ impl<S: Scalar> Workspace<S> {
             &mut self.forces,
             &mut dq_ddot_da,
         )?;
-        *a_out = [[S::ZERO; NX]; NX];
         *b_out = [[S::ZERO; NU]; NX];
-        for (row, (dq, dv)) in a_out[NV..2 * NV]
-            .iter_mut()
-            .zip(self.derivatives.ddq_dq.iter().zip(&self.derivatives.ddq_dv))
-        {
-            row[..NV].copy_from_slice(dq);
-            row[NV..2 * NV].copy_from_slice(dv);
-        }
-        for (i, sensitivity) in dq_ddot_da.iter().enumerate() {
-            a_out[i][NV + i] = S::ONE;
-            a_out[NV + i][2 * NV..].copy_from_slice(sensitivity);
-        }
+        rigid_body_rows(a_out, &self.derivatives, &dq_ddot_da);
         let mut a_dot = [S::ZERO; NU];
         for k in 0..NU {
             let (rate, d_du, d_da) = self.muscles[k]
