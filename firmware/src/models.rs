@@ -30,25 +30,38 @@ pub const PANDA_READY: [f32; panda::NV] = [0.0, -0.785, 0.0, -2.356, 0.0, 1.571,
 /// the last link's z axis, with its axes, where a tool is mounted.
 pub const PANDA_FLANGE: Frame<f32> = panda::FRAMES_F32[panda::frame::PANDA_LINK8];
 
+/// The pendulum of `model` (`models/pendulum.toml` in one precision) as a
+/// planar model, in a `const` of type `Model<$s, 1, 1, 1, Planar>`.
+macro_rules! planar_pendulum {
+    ($model:expr) => {{
+        let link = $model.inertia(pendulum::body::LINK);
+        let gravity = $model.gravity().lin;
+        Model::new_planar(
+            [None],
+            [PlanarJoint::Revolute],
+            [PlanarTransform::from_translation(Vec2::new(0.0, 0.0))],
+            [PlanarInertia::new(
+                link.mass,
+                Vec2::new(link.com.x, link.com.y),
+                link.rot_inertia.zz,
+            )],
+            PlanarMotion::new(0.0, Vec2::new(gravity.x, gravity.y)),
+        )
+    }};
+}
+
 /// The pendulum of `models/pendulum.toml` as a planar model: the same link
 /// (it turns about z and its centre of mass lies in the x-y plane) with the
 /// 3-component planar algebra, to measure what planarity saves.
-pub const PENDULUM_PLANAR: Model<f32, 1, 1, 1, Planar> = {
-    let link = pendulum::MODEL_F32.inertia(pendulum::body::LINK);
-    let gravity = pendulum::MODEL_F32.gravity().lin;
-    Model::new_planar(
-        [None],
-        [PlanarJoint::Revolute],
-        [PlanarTransform::from_translation(Vec2::new(0.0, 0.0))],
-        [PlanarInertia::new(
-            link.mass,
-            Vec2::new(link.com.x, link.com.y),
-            link.rot_inertia.zz,
-        )],
-        PlanarMotion::new(0.0, Vec2::new(gravity.x, gravity.y)),
-    )
-};
+pub const PENDULUM_PLANAR: Model<f32, 1, 1, 1, Planar> = planar_pendulum!(pendulum::MODEL_F32);
 
 /// CRBA's plan for [`PENDULUM_PLANAR`] (a plane has no frames to turn).
 pub const PENDULUM_PLANAR_CRBA_PLAN: CrbaPlan<f32, 1, Planar> =
     CrbaPlan::unturned(&PENDULUM_PLANAR);
+
+/// [`PENDULUM_PLANAR`] in f64, for the f64 cost probe.
+pub const PENDULUM_PLANAR_F64: Model<f64, 1, 1, 1, Planar> = planar_pendulum!(pendulum::MODEL_F64);
+
+/// CRBA's plan for [`PENDULUM_PLANAR_F64`].
+pub const PENDULUM_PLANAR_F64_CRBA_PLAN: CrbaPlan<f64, 1, Planar> =
+    CrbaPlan::unturned(&PENDULUM_PLANAR_F64);

@@ -11,7 +11,7 @@
 //! floating bases it does not use.
 
 use crate::firmware::{self, Example, EXAMPLES};
-use crate::{setup, shell, stack_bound};
+use crate::{family, setup, shell, stack_bound};
 use anyhow::{bail, Context, Result};
 use std::collections::BTreeMap;
 use std::fmt::Write;
@@ -155,8 +155,10 @@ pub fn check_sizes() -> Result<()> {
 pub struct Cost {
     pub model: String,
     pub algorithm: String,
-    min: u64,
-    max: u64,
+    /// Fewest instructions of a call.
+    pub min: u64,
+    /// Most instructions of a call.
+    pub max: u64,
     /// Painted stack bytes: a number, `>16384` (the window overflowed) or
     /// `-` (not measured).
     pub stack: String,
@@ -282,8 +284,9 @@ pub fn regenerate() -> Result<()> {
 
 /// Every file `cargo xtask costs` writes, as (path from the repository
 /// root, its new text), computed without writing any: the tables of
-/// [`TABLE_DOCS`] put into the committed docs, `firmware/expected/sizes.txt`
-/// and `firmware/expected/panic_sites.txt`.
+/// [`TABLE_DOCS`] put into the committed docs, `firmware/expected/sizes.txt`,
+/// `firmware/expected/panic_sites.txt` and the Cortex-M family's page
+/// ([`family::PAGE`]).
 pub fn generated_files(runs: ProbeRuns) -> Result<Vec<(String, String)>> {
     setup::ensure_target()?;
     if runs == ProbeRuns::Fresh {
@@ -405,6 +408,7 @@ pub fn generated_files(runs: ProbeRuns) -> Result<Vec<(String, String)>> {
         "firmware/expected/panic_sites.txt".to_string(),
         crate::panic_sites::expected_text()?,
     ));
+    files.push((family::PAGE.to_string(), family::page(runs, costs, images)?));
     Ok(files)
 }
 

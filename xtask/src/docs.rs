@@ -209,10 +209,14 @@ const GENERATORS: &[Generator] = &[
         files: &[("docs/sections/accuracy.md", "docs/sections/accuracy.md")],
     },
     Generator {
-        name: "Cortex-M4 cost, size and stack tables (cargo xtask costs)",
+        name: "Cortex-M cost, size and stack tables (cargo xtask costs)",
         run: cost_tables,
         files: &[
             ("docs/sections/firmware.md", "docs/sections/firmware.md"),
+            (
+                "docs/sections/cortex_m_family.md",
+                "docs/sections/cortex_m_family.md",
+            ),
             ("README.md", "README.md"),
             ("firmware/expected/sizes.txt", "firmware/expected/sizes.txt"),
             (

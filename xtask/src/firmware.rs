@@ -111,10 +111,17 @@ pub fn build() -> Result<()> {
 /// remapped (`--remap-path-scope=macro`): the debug information keeps the
 /// real paths, for debuggers and `cargo xtask profile`.
 pub fn cargo_command() -> Command {
+    cargo_command_for(TARGET, &[])
+}
+
+/// [`cargo_command`] for another `target`, with `extra_rustflags` after the
+/// path remaps (the Cortex-M family's builds, `crate::family`).
+pub fn cargo_command_for(target: &str, extra_rustflags: &[&str]) -> Command {
     let flags: Vec<String> = path_remaps()
         .into_iter()
         .map(|(from, to)| format!("--remap-path-prefix={}={to}", from.display()))
         .chain(["--remap-path-scope=macro".to_string()])
+        .chain(extra_rustflags.iter().map(|f| f.to_string()))
         .collect();
     // `--config` joins these to the rustflags of `firmware/.cargo/config.toml`
     // (a `RUSTFLAGS` variable would replace them).
@@ -122,7 +129,7 @@ pub fn cargo_command() -> Command {
     let mut command = shell::cargo_command(&dir());
     command
         .arg("--config")
-        .arg(format!("target.{TARGET}.rustflags = [{}]", list.join(", ")));
+        .arg(format!("target.{target}.rustflags = [{}]", list.join(", ")));
     command
 }
 
@@ -174,6 +181,17 @@ pub fn run(example: &Example, on_line: impl FnMut(&str)) -> Result<Outcome> {
 pub fn run_elf(
     elf_path: &std::path::Path,
     qemu_args: &[&str],
+    on_line: impl FnMut(&str),
+) -> Result<Outcome> {
+    run_on_machine(elf_path, ("mps2-an386", "cortex-m4"), qemu_args, on_line)
+}
+
+/// [`run_elf`] on another QEMU (machine, CPU), such as the Cortex-M
+/// family's (`crate::family`).
+pub fn run_on_machine(
+    elf_path: &std::path::Path,
+    (machine, cpu): (&str, &str),
+    qemu_args: &[&str],
     mut on_line: impl FnMut(&str),
 ) -> Result<Outcome> {
     let elf = std::fs::read(elf_path)
@@ -183,13 +201,7 @@ pub fn run_elf(
     let mut command = Command::new("timeout");
     command
         .arg(QEMU_TIMEOUT_S.to_string())
-        .args([
-            "qemu-system-arm",
-            "-machine",
-            "mps2-an386",
-            "-cpu",
-            "cortex-m4",
-        ])
+        .args(["qemu-system-arm", "-machine", machine, "-cpu", cpu])
         .args(["-nographic", "-monitor", "none", "-serial", "none"])
         .args(["-icount", "shift=6"])
         .args(qemu_args)

@@ -8,7 +8,8 @@
 //! | `lint`                   | rustfmt, clippy and rustdoc, warnings as errors, host and firmware; the core without float features stops at one error; `cargo package` of every crate, the published libraries built from their packages; their public API against `xtask/public-api/`; the core's unit tests under Miri (nightly), which stops at undefined behaviour |
 //! | `viewer`                 | the viewer's pages in headless Chromium (also a step of `test`): every model's page draws without an error, the Panda against its reference image, the trot moves when scrubbed |
 //! | `docs [--check]`         | regenerates every figure and table of the docs that a command draws the same on every run (`--check`: fails naming each committed file that differs) |
-//! | `costs`                  | runs the cost probe, measures sizes and bounds the stack, rewrites the tables in `docs/sections/firmware.md` and `firmware/expected/sizes.txt` |
+//! | `costs`                  | runs the cost probe, measures sizes and bounds the stack, rewrites the tables in `docs/sections/firmware.md` and `firmware/expected/sizes.txt`; builds and runs the probes on QEMU's Cortex-M3, M7 (f32 and f64) and M33 for `docs/sections/cortex_m_family.md` |
+//! | `family`                 | builds the cost probes for QEMU's Cortex-M3, M7 (f32 and f64) and M33 and runs them (the step of `test`; `costs` writes their tables) |
 //! | `stack [image] [words]`  | worst-case stack per image and per cost-table row from a static call graph, checked against the painted figures (`--check-frames`: the frame reading against LLVM's `-Z emit-stack-sizes`) |
 //! | `panic-sites [image]`    | the panic call sites of one image (default: all) by source, function and line |
 //! | `public-api [--bless]`   | the public items of `rodyn` and `rodyn-model` (rustdoc JSON, nightly) against `xtask/public-api/*.txt`: a removed item fails; `--bless` rewrites the lists |
@@ -27,6 +28,7 @@ mod costs;
 mod defmt_log;
 mod docs;
 mod expected;
+mod family;
 mod firmware;
 mod fp_ops;
 mod host_profile;
@@ -45,7 +47,7 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 const USAGE: &str =
-    "usage: cargo xtask <run [example] | test | lint | docs [--check] | costs | stack [image [words]] | stack --frames <image> | stack --check-frames | panic-sites [image] | viewer | public-api [--bless] | bless | profile [model] [algorithm] | host-profile <algorithm> <model> [--pinocchio]>";
+    "usage: cargo xtask <run [example] | test | lint | docs [--check] | costs | family | stack [image [words]] | stack --frames <image> | stack --check-frames | panic-sites [image] | viewer | public-api [--bless] | bless | profile [model] [algorithm] | host-profile <algorithm> <model> [--pinocchio]>";
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -55,6 +57,7 @@ fn main() -> ExitCode {
         Some("lint") => lint(),
         Some("docs") => docs::run(&args[1..]),
         Some("costs") => costs::regenerate(),
+        Some("family") => family::run_probes(),
         Some("viewer") => viewer::check(),
         Some("bless") => bless(),
         Some("public-api") => public_api::run(args.get(1).map(String::as_str) == Some("--bless")),
@@ -143,6 +146,13 @@ fn test() -> Result<()> {
     firmware::check_panic_reentry()?;
     costs::check_sizes()?;
     costs::check_goals_of_last_run()?;
+    // The Cortex-M family's probes, whose logs the docs check reads.
+    let family_started = Instant::now();
+    family::run_probes()?;
+    println!(
+        "xtask test: the Cortex-M family's probes built and ran in {:.0} s",
+        family_started.elapsed().as_secs_f64()
+    );
     docs::check_after_test()?;
     panic_sites::check()?;
     stack_bound::check()?;

@@ -21,6 +21,33 @@ pub fn ensure_target() -> Result<()> {
     shell::run(Command::new("rustup").args(["target", "add", TARGET]))
 }
 
+/// The targets of the Cortex-M family's cost tables beyond [`TARGET`]
+/// (`crate::family`): the Cortex-M3 and the Cortex-M33.
+pub const FAMILY_TARGETS: [&str; 2] = ["thumbv7m-none-eabi", "thumbv8m.main-none-eabihf"];
+
+/// Adds [`FAMILY_TARGETS`] through rustup unless they are installed.
+pub fn ensure_family_targets() -> Result<()> {
+    ensure_target()?;
+    let installed = output(Command::new("rustup").args(["target", "list", "--installed"]))
+        .context("rustup is needed to add the Cortex-M family's targets")?;
+    let missing: Vec<&str> = FAMILY_TARGETS
+        .into_iter()
+        .filter(|t| !installed.lines().any(|l| l.trim() == *t))
+        .collect();
+    if missing.is_empty() {
+        return Ok(());
+    }
+    println!(
+        "set-up: adding the Rust targets {} (rustup), which the Cortex-M family's cost probes are built for",
+        missing.join(", ")
+    );
+    shell::run(
+        Command::new("rustup")
+            .args(["target", "add"])
+            .args(&missing),
+    )
+}
+
 /// The QEMU machine every firmware example runs on.
 const QEMU_MACHINE: &str = "mps2-an386";
 

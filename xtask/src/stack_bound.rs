@@ -261,6 +261,8 @@ struct Function {
     /// Mangled symbol name.
     name: String,
     start: u64,
+    /// Bytes of code (the symbol's size, else up to its last instruction).
+    bytes: u64,
     /// Deepest point of its own frame (bytes).
     frame: u64,
     calls: Vec<Call>,
@@ -481,6 +483,10 @@ fn functions(text: &str, sizes: &HashMap<u64, u64>) -> Vec<Function> {
         functions.push(Function {
             name: listing.names.last().copied().unwrap_or("?").to_string(),
             start: listing.start,
+            bytes: sizes
+                .get(&listing.start)
+                .copied()
+                .unwrap_or(ends[k] + 2 - listing.start),
             frame: reading.frame,
             calls,
             indirect: reading.indirect,
@@ -690,6 +696,21 @@ impl Graph {
             debug_names,
             elf: elf.to_path_buf(),
         })
+    }
+
+    /// Code bytes of the functions reachable from `roots` (each counted once).
+    pub fn reachable_code_bytes(&self, roots: &[usize]) -> u64 {
+        let mut seen = vec![false; self.functions.len()];
+        let mut stack = roots.to_vec();
+        let mut bytes = 0;
+        while let Some(k) = stack.pop() {
+            if std::mem::replace(&mut seen[k], true) {
+                continue;
+            }
+            bytes += self.functions[k].bytes;
+            stack.extend(self.functions[k].calls.iter().map(|c| c.target));
+        }
+        bytes
     }
 
     /// Worst-case bounds of every function, with cycles found.
@@ -1262,13 +1283,13 @@ pub struct RowBound {
     pub without_panics: u64,
 }
 
-/// The bound of the cost-table row (`model`, `algorithm`): the deepest of
-/// the `call_opaque` instances that [`ROWS`] names for it.
-pub fn row_bound(
-    images: &BTreeMap<&'static str, Analysed>,
+/// The image and the `call_opaque` instances that measure the cost-table
+/// row (`model`, `algorithm`), as [`ROWS`] names them.
+fn row_roots<'a>(
+    images: &'a BTreeMap<&'static str, Analysed>,
     model: &str,
     algorithm: &str,
-) -> Result<RowBound> {
+) -> Result<(&'static str, &'static str, &'a Analysed, Vec<usize>)> {
     let (image, _, _, text) = ROWS
         .iter()
         .find(|(_, m, a, _)| *m == model && *a == algorithm)
@@ -1280,6 +1301,34 @@ pub fn row_bound(
         .get(image)
         .with_context(|| format!("no image {image}"))?;
     let roots = analysed.graph.by_debug_name(text);
+    Ok((image, text, analysed, roots))
+}
+
+/// The code bytes (flash) of every function the call of the cost-table row
+/// (`model`, `algorithm`) can reach through direct calls and tail calls,
+/// the measuring `call_opaque` instance included; rows measured through
+/// one closure share the figure. Read-only data (the model's constants,
+/// tables) is not counted.
+pub fn row_code_bytes(
+    images: &BTreeMap<&'static str, Analysed>,
+    model: &str,
+    algorithm: &str,
+) -> Result<u64> {
+    let (image, text, analysed, roots) = row_roots(images, model, algorithm)?;
+    if roots.is_empty() {
+        bail!("no call_opaque instance in {image} names `{text}` ({model} {algorithm})");
+    }
+    Ok(analysed.graph.reachable_code_bytes(&roots))
+}
+
+/// The bound of the cost-table row (`model`, `algorithm`): the deepest of
+/// the `call_opaque` instances that [`ROWS`] names for it.
+pub fn row_bound(
+    images: &BTreeMap<&'static str, Analysed>,
+    model: &str,
+    algorithm: &str,
+) -> Result<RowBound> {
+    let (image, text, analysed, roots) = row_roots(images, model, algorithm)?;
     let deepest = roots
         .iter()
         .max_by_key(|&&k| analysed.bounds[k].bytes)

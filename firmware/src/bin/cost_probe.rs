@@ -1,5 +1,9 @@
 //! What each rodyn algorithm costs on a Cortex-M4F, per model.
 //!
+//! The same source runs on the other cores of the Cortex-M family's cost
+//! tables (`docs/sections/cortex_m_family.md`), and with the `f64` feature
+//! computes in f64 (`measure::Real`) on the same states.
+//!
 //! For every model and algorithm, [`STATES`] random states (seeded
 //! xorshift) are fed to one call each; the log reports the minimum and
 //! maximum instructions per call (QEMU `-icount shift=6` and SysTick, see
@@ -21,14 +25,30 @@ use rodyn::space::Space;
 use rodyn::{Data, Model, Scalar};
 use rodyn_firmware::exit::{exit, exit_with, CHECK_FAILED};
 use rodyn_firmware::measure::{
-    branch_state, probe_scene, stack_bytes, Cost, InstructionCounter, StateIndex, SEED, STATES,
-    WOUND,
+    branch_state, fill_symmetric, probe_scene, stack_bytes, Cost, InstructionCounter, Real,
+    StateIndex, REAL_NAME, SEED, STATES, WOUND,
 };
-use rodyn_firmware::models::aibo::{CRBA_PLAN_F32 as QUADRUPED_PLAN, MODEL_F32 as QUADRUPED};
-use rodyn_firmware::models::panda::{CRBA_PLAN_F32 as PANDA_PLAN, MODEL_F32 as PANDA};
-use rodyn_firmware::models::pendulum::{CRBA_PLAN_F32 as PENDULUM_PLAN, MODEL_F32 as PENDULUM};
-use rodyn_firmware::models::quadruped::{self, QuadrupedLoads};
-use rodyn_firmware::models::{muscle_robot as robot, PENDULUM_PLANAR, PENDULUM_PLANAR_CRBA_PLAN};
+#[cfg(not(feature = "f64"))]
+use rodyn_firmware::models::{
+    aibo::{CRBA_PLAN_F32 as QUADRUPED_PLAN, MODEL_F32 as QUADRUPED},
+    muscle_robot::{MODEL_F32 as ROBOT, MUSCLES_F32 as ROBOT_MUSCLES},
+    panda::{CRBA_PLAN_F32 as PANDA_PLAN, MODEL_F32 as PANDA},
+    pendulum::{CRBA_PLAN_F32 as PENDULUM_PLAN, MODEL_F32 as PENDULUM},
+    PENDULUM_PLANAR, PENDULUM_PLANAR_CRBA_PLAN,
+};
+#[cfg(feature = "f64")]
+use rodyn_firmware::models::{
+    aibo::{CRBA_PLAN_F64 as QUADRUPED_PLAN, MODEL_F64 as QUADRUPED},
+    muscle_robot::{MODEL_F64 as ROBOT, MUSCLES_F64 as ROBOT_MUSCLES},
+    panda::{CRBA_PLAN_F64 as PANDA_PLAN, MODEL_F64 as PANDA},
+    pendulum::{CRBA_PLAN_F64 as PENDULUM_PLAN, MODEL_F64 as PENDULUM},
+    PENDULUM_PLANAR_F64 as PENDULUM_PLANAR,
+    PENDULUM_PLANAR_F64_CRBA_PLAN as PENDULUM_PLANAR_CRBA_PLAN,
+};
+use rodyn_firmware::models::{
+    muscle_robot as robot,
+    quadruped::{self, QuadrupedLoads},
+};
 use rodyn_firmware::rng::XorShift32;
 
 /// The algorithms probed, as they appear in the table.
@@ -59,11 +79,11 @@ impl Algorithm {
 /// of every joint. Returns false when an algorithm failed.
 fn probe<const NB: usize, const NQ: usize, const NV: usize, G: Space>(
     name: &str,
-    model: &Model<f32, NB, NQ, NV, G>,
-    plan: &CrbaPlan<f32, NB, G>,
+    model: &Model<Real, NB, NQ, NV, G>,
+    plan: &CrbaPlan<Real, NB, G>,
     counter: &InstructionCounter,
 ) -> bool {
-    let mut data = Data::<f32, NB, NV, G>::new();
+    let mut data = Data::<Real, NB, NV, G>::new();
     for algorithm in Algorithm::ALL {
         let mut rng = XorShift32::new(SEED);
         let mut cost = Cost::NONE;
@@ -72,25 +92,25 @@ fn probe<const NB: usize, const NQ: usize, const NV: usize, G: Space>(
         let mut fast = Cost::NONE;
         let mut refused = 0;
         for k in 0..STATES {
-            let mut q = [0.0f32; NQ];
-            rng.fill_symmetric(&mut q, core::f32::consts::PI);
+            let mut q = [0.0; NQ];
+            fill_symmetric(&mut rng, &mut q, core::f32::consts::PI);
             if branch_state(k) {
                 // The quadruped's free flyer (more coordinates than
                 // velocities) comes first with seven coordinates; the other
                 // models have revolute joints only.
                 let first = if NQ > NV { 7 } else { 0 };
                 for x in &mut q[first..] {
-                    *x += WOUND;
+                    *x += Real::from(WOUND);
                 }
             }
             if let Err(e) = model.normalize(&mut q) {
                 defmt::error!("{=str}: normalize: {}", name, e);
                 return false;
             }
-            let mut v = [0.0f32; NV];
-            rng.fill_symmetric(&mut v, 2.0);
-            let mut u = [0.0f32; NV];
-            rng.fill_symmetric(&mut u, 5.0);
+            let mut v = [0.0; NV];
+            fill_symmetric(&mut rng, &mut v, 2.0);
+            let mut u = [0.0; NV];
+            fill_symmetric(&mut rng, &mut u, 5.0);
             let mut call = || -> bool {
                 match algorithm {
                     Algorithm::Rnea => rnea(model, &mut data, &q, &v, &u, None).is_ok(),
@@ -155,15 +175,15 @@ fn probe_muscle_robot(counter: &InstructionCounter) -> bool {
     use robot::{NU, NV};
     let index = StateIndex::new();
     let draw = |rng: &mut XorShift32| {
-        let (mut q, mut v) = ([0.0f32; NV], [0.0f32; NV]);
-        rng.fill_symmetric(&mut q, 1.0);
-        rng.fill_symmetric(&mut v, 2.0);
+        let (mut q, mut v): ([Real; NV], [Real; NV]) = ([0.0; NV], [0.0; NV]);
+        fill_symmetric(rng, &mut q, 1.0);
+        fill_symmetric(rng, &mut v, 2.0);
         if index.next_is_branch() {
             for x in &mut v {
                 *x *= 30.0;
             }
         }
-        let a: [f32; NU] = core::array::from_fn(|_| rng.uniform(0.0, 1.0));
+        let a: [Real; NU] = core::array::from_fn(|_| Real::from(rng.uniform(0.0, 1.0)));
         (q, v, a)
     };
     let mut data = robot::RobotData::new();
@@ -174,23 +194,14 @@ fn probe_muscle_robot(counter: &InstructionCounter) -> bool {
         counter,
         draw,
         |(q, v, a)| {
-            robot::forward_dynamics(
-                &robot::MODEL_F32,
-                &robot::MUSCLES_F32,
-                &mut data,
-                q,
-                v,
-                a,
-                &mut forces,
-            )
-            .is_ok()
+            robot::forward_dynamics(&ROBOT, &ROBOT_MUSCLES, &mut data, q, v, a, &mut forces).is_ok()
         },
     );
-    let mut d_ddq_d_a = [[0.0f32; NU]; NV];
+    let mut d_ddq_d_a = [[0.0; NU]; NV];
     let sensitivity = probe_scene("muscle-robot", "FD+dqdd/da", counter, draw, |(q, v, a)| {
         robot::sensitivity(
-            &robot::MODEL_F32,
-            &robot::MUSCLES_F32,
+            &ROBOT,
+            &ROBOT_MUSCLES,
             &mut data,
             q,
             v,
@@ -212,14 +223,15 @@ fn probe_muscle_robot(counter: &InstructionCounter) -> bool {
 /// states, 42 have every foot in the air, 17 all four in the ground and
 /// the rest some of each (`host-tests/tests/probe_branches.rs` counts them).
 fn probe_quadruped_step(counter: &InstructionCounter) -> bool {
-    let trot = QuadrupedLoads::<f32>::trotting();
+    let trot = QuadrupedLoads::<Real>::trotting();
     let draw = |rng: &mut XorShift32| {
-        let mut state = trot.initial_state(trot.stance_height() + rng.uniform(-0.01, 0.01));
+        let mut state =
+            trot.initial_state(trot.stance_height() + Real::from(rng.uniform(-0.01, 0.01)));
         for x in &mut state.q[7..] {
-            *x += rng.uniform(-0.2, 0.2);
+            *x += Real::from(rng.uniform(-0.2, 0.2));
         }
-        rng.fill_symmetric(&mut state.v, 0.5);
-        state.t = rng.uniform(0.0, 1.0);
+        fill_symmetric(rng, &mut state.v, 0.5);
+        state.t = Real::from(rng.uniform(0.0, 1.0));
         (state, trot)
     };
     let mut data = Data::new();
@@ -235,10 +247,18 @@ fn probe_quadruped_step(counter: &InstructionCounter) -> bool {
     )
 }
 
-/// One f32 `sin_cos` as rodyn's scalar computes it without std (libm): every
+/// The scalar rows' names: within ±π, and beyond the f32 sine's fast range.
+#[cfg(not(feature = "f64"))]
+const SIN_COS_ROWS: [&str; 2] = ["f32-sin_cos", "f32-sin_cos(>8192)"];
+/// The scalar rows' names: within ±π, and beyond the f32 sine's fast range.
+#[cfg(feature = "f64")]
+const SIN_COS_ROWS: [&str; 2] = ["f64-sin_cos", "f64-sin_cos(>8192)"];
+
+/// One `sin_cos` as rodyn's scalar computes it without std (libm): every
 /// revolute joint pays it once per call of an algorithm. Angles within ±π,
-/// and every tenth beyond the fast range (|x| > 8192 rad: the exact
-/// Payne–Hanek reduction).
+/// and every tenth beyond the f32 fast range (|x| > 8192 rad: in f32 the
+/// exact Payne–Hanek reduction; f64's reduction takes that path only
+/// beyond 2²⁰·π/2).
 fn sin_cos_cost(counter: &InstructionCounter) {
     let mut rng = XorShift32::new(SEED);
     // (min, max) within ±π and beyond the fast range.
@@ -249,13 +269,13 @@ fn sin_cos_cost(counter: &InstructionCounter) {
         // Computed before the timed window: left to the optimiser, the
         // random generator's arithmetic lands between the two SysTick
         // reads and is counted with the call.
-        let angle = core::hint::black_box(if wound { angle + WOUND } else { angle });
+        let angle = core::hint::black_box(Real::from(if wound { angle + WOUND } else { angle }));
         let (_, instructions) = counter.count(|| core::hint::black_box(angle).sin_cos());
         let (min, max) = &mut costs[usize::from(wound)];
         *min = (*min).min(instructions);
         *max = (*max).max(instructions);
     }
-    for ((min, max), name) in costs.into_iter().zip(["f32-sin_cos", "f32-sin_cos(>8192)"]) {
+    for ((min, max), name) in costs.into_iter().zip(SIN_COS_ROWS) {
         defmt::println!(
             "cost model=scalar algorithm={=str} min={} max={} stack=-",
             name,
@@ -272,7 +292,8 @@ fn main() -> ! {
     };
     let counter = InstructionCounter::start(&mut peripherals.SYST);
     defmt::println!(
-        "cost_probe: f32, {} random states per model and algorithm",
+        "cost_probe: {=str}, {} random states per model and algorithm",
+        REAL_NAME,
         STATES
     );
     sin_cos_cost(&counter);

@@ -3,7 +3,9 @@
 //! With `-icount shift=6` QEMU advances virtual time by 2⁶ = 64 ns per
 //! executed instruction, and the mps2-an386 SysTick counts its 25 MHz clock
 //! (40 ns per tick) in that virtual time, so `instructions = ticks · 40 / 64`
-//! exactly. QEMU does not model the DWT cycle counter, and without `-icount`
+//! exactly. The other MPS2 machines of the Cortex-M family's tables
+//! (mps2-an385, mps2-an500) run at the same 25 MHz; mps2-an505 at 20 MHz
+//! (50 ns per tick, QEMU's `hw/arm/mps2-tz.c`). QEMU does not model the DWT cycle counter, and without `-icount`
 //! SysTick follows host time, so this is the only deterministic count. These
 //! are executed instructions, not cycles: on a real Cortex-M4F a load takes
 //! two cycles, `VDIV`/`VSQRT` fourteen.
@@ -17,7 +19,11 @@ const SYSTICK_MASK: u32 = 0x00FF_FFFF;
 /// Virtual nanoseconds per instruction (`-icount shift=6`).
 const NS_PER_INSTRUCTION: u32 = 64;
 /// Nanoseconds per SysTick tick (25 MHz).
+#[cfg(not(mps2_an505))]
 const NS_PER_TICK: u32 = 40;
+/// Nanoseconds per SysTick tick (20 MHz).
+#[cfg(mps2_an505)]
+const NS_PER_TICK: u32 = 50;
 /// Longest call the 24-bit counter can time without wrapping twice.
 pub const MAX_INSTRUCTIONS: u32 = SYSTICK_MASK / NS_PER_INSTRUCTION * NS_PER_TICK;
 

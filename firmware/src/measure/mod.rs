@@ -5,10 +5,12 @@
 //! measuring code whatever the optimiser decides about the algorithm itself.
 
 mod instructions;
+mod precision;
 mod probe;
 mod stack;
 
 pub use instructions::{InstructionCounter, MAX_INSTRUCTIONS};
+pub use precision::{fill_symmetric, Real, REAL_NAME};
 pub use probe::{branch_state, probe_scene, Cost, StateIndex, BRANCH_EVERY, SEED, STATES, WOUND};
 pub use stack::{stack_bytes, STACK_WINDOW_BYTES};
 
