@@ -647,8 +647,10 @@ fn single_register_pop(mnemonic: &str, operands: &str) -> Option<u64> {
 fn writes_sp(mnemonic: &str, operands: &str) -> bool {
     let write_back =
         operands.contains("[sp") && (operands.contains("]!") || operands.contains("], "));
+    // `vldm` loads FPU registers only: through `sp` without write-back
+    // (`vldmia sp, {d0, d1}`, in the Cortex-M7's f64 image) it reads.
     let reads_only = [
-        "str", "vstr", "stm", "vstm", "cmp", "cmn", "tst", "teq", "pld",
+        "str", "vstr", "stm", "vstm", "vldm", "cmp", "cmn", "tst", "teq", "pld",
     ];
     if reads_only.iter().any(|s| mnemonic.starts_with(s)) {
         return write_back || operands.starts_with("sp!");
