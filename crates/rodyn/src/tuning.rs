@@ -125,8 +125,10 @@ pub(crate) const FINITE_JOINT_CHECKS: bool = OUT_OF_ORDER;
 /// Whether the centroidal map's poses form every joint transform first and
 /// then compose the chain with the products that skip the zeros of a
 /// quarter-turn placement (`Geometry::then_turned_joint`), and the joint
-/// Jacobians take their poses from that pass: out of order, the chain's
-/// products then have the vector registers to themselves. An in-order
+/// Jacobians take their poses from that pass, as does a frame chain whose
+/// support path holds every body (`frame_chain`, a serial robot's frame):
+/// out of order, the chain's products then have the vector registers to
+/// themselves. An in-order
 /// core would pay for storing the transforms and reading them back, and
 /// for the tests of the placement's form; it keeps one loop and
 /// `then_joint`, and the Jacobians' own pose step.

@@ -37,7 +37,9 @@
 //! them to 1e-14 in `f64`. [`plain`] has the same functions in the book's
 //! form, one column at a time, for reading and for the tests; the
 //! functions here form the path's angles' sines and cosines two at a time
-//! (on hosts, where their dependent chains then overlap), carry the
+//! (on hosts, where their dependent chains then overlap; a path through
+//! every body, on hosts, takes the order of
+//! [`joint_jacobians`](super::jacobian::joint_jacobians)' poses), carry the
 //! parent's pose in registers, read a revolute column off the pose's
 //! rotation, and move the columns with one loop per reference frame (in
 //! LOCAL_WORLD_ALIGNED a shift without the identity rotation,
@@ -91,6 +93,7 @@ use crate::model::Model;
 use crate::space::{MotionVector, RigidTransform, Space, VectorOps};
 use crate::spatial::Spatial;
 use crate::topology::SupportPath;
+use crate::tuning::TURNED_POSES;
 use crate::Scalar;
 
 /// A frame and the support path of its body (see the [module](self)).
@@ -425,7 +428,9 @@ pub fn chains_jacobians<
 /// Out of order ([`ANGLES_FIRST`]) the path goes two bodies at a time,
 /// their angles' sines and cosines formed together: each is a long chain
 /// of dependent operations, which the other's overlaps (alone, the pose
-/// products beside it do not cover it). In order, one body after another.
+/// products beside it do not cover it); a path through every body takes
+/// the joint Jacobians' order instead ([`TURNED_POSES`]). In order, one
+/// body after another.
 #[inline(always)]
 fn world_columns_along<
     S: Scalar,
@@ -442,6 +447,30 @@ fn world_columns_along<
     *jacobian = [zero_motion::<S, G>(); NV];
     let t = model.topology();
     let mut o_m_i = <G::Transform<S> as RigidTransform<S>>::IDENTITY;
+    if TURNED_POSES && path.len() == NB {
+        // A path through every body (a serial chain; parents come first,
+        // so it is 0, 1, …, NB − 1): the all-joints path's order, every
+        // joint transform first and then the poses with the quarter-turn
+        // products, which out of order have the registers to themselves.
+        let sin_cos = super::common::JointSinCos::at(model, q);
+        let mut li_m_i = [<G::Transform<S> as RigidTransform<S>>::IDENTITY; NB];
+        for (i, x) in li_m_i.iter_mut().enumerate() {
+            *x = super::common::body_transform_with(model, i, q, sin_cos.formed());
+        }
+        for (i, x) in li_m_i.iter().enumerate() {
+            o_m_i = if i == 0 {
+                *x
+            } else {
+                G::then_turned_joint(&o_m_i, x, model.joint(i))
+            };
+            let joint = model.joint(i);
+            let (iv, nv) = t.velocity_range(i);
+            for (c, column) in jacobian[iv..iv + nv].iter_mut().enumerate() {
+                *column = G::act_subspace_column(&o_m_i, joint, c);
+            }
+        }
+        return o_m_i;
+    }
     let mut step = |k: usize, i: usize, li_m_i: &G::Transform<S>, o_m_i: &mut G::Transform<S>| {
         // The path's first body hangs on the world.
         *o_m_i = if k == 0 {
