@@ -160,7 +160,7 @@ impl PayloadEstimator {
         let phi = cholesky_solve(a, self.rhs)?;
         let parameters = core::array::from_fn(|k| phi[k] as f32);
         let mass = parameters[0];
-        if !(mass > 0.0) {
+        if mass.is_nan() || mass <= 0.0 {
             return None;
         }
         let com = Vec3::new(parameters[1], parameters[2], parameters[3]).scale(1.0 / mass);
@@ -179,7 +179,7 @@ fn cholesky_solve<const N: usize>(mut a: [[f64; N]; N], mut b: [f64; N]) -> Opti
         for p in 0..k {
             a[k][k] -= a[k][p] * a[k][p];
         }
-        if !(a[k][k] > 0.0) {
+        if a[k][k].is_nan() || a[k][k] <= 0.0 {
             return None;
         }
         a[k][k] = rodyn::Scalar::sqrt(a[k][k]);

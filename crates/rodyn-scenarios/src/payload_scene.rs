@@ -200,7 +200,7 @@ impl<'a> PayloadScene<'a> {
         let data = &mut self.controller_data;
         let tau = self
             .tick_model
-            .read(|model| rnea(model, data, &q0, &v0, &a_cmd, None).map(|tau| *tau))?;
+            .read(|model| rnea(model, data, &q0, &v0, &a_cmd, None).copied())?;
         self.advance(&tau)?;
         if (IDENTIFY_FROM..SWAP_AT).contains(&self.tick) {
             let (q1, v1) = (self.state.q, self.state.v);

@@ -44,7 +44,7 @@ const NOT_READING: u8 = 0;
 /// * Publishing is one store of `active`; the copy that was active stays
 ///   as it is until the writer stages again.
 ///
-/// All five accesses are sequentially consistent, so they fall in one
+/// Every access to the two atomics is sequentially consistent, so they fall in one
 /// order that every context sees. A reader that announced the staging
 /// copy (having loaded `active` just before a publish) either announced
 /// it before the writer looked, and the writer waits, or after, and then
