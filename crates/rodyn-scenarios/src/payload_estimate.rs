@@ -36,6 +36,7 @@ pub const PARAMETERS: usize = 10;
 /// `phi` (`m`, `h`, `I_o` as in the [module](self)) needs for velocity `v`
 /// and acceleration `a` (both in its frame, gravity included in `a`).
 #[must_use]
+#[inline]
 pub fn payload_wrench(phi: &[f32; PARAMETERS], v: &Motion<f32>, a: &Motion<f32>) -> Force<f32> {
     let m = phi[0];
     let h = Vec3::new(phi[1], phi[2], phi[3]);
@@ -62,7 +63,7 @@ pub fn payload_wrench(phi: &[f32; PARAMETERS], v: &Motion<f32>, a: &Motion<f32>)
 }
 
 /// A payload's mass and centre of mass, identified.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, PartialEq)]
 pub struct IdentifiedPayload {
     /// Mass (kg).
     pub mass: f32,
@@ -74,7 +75,7 @@ pub struct IdentifiedPayload {
 
 /// Sums of the normal equations of the payload's parameters on body
 /// `body`.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy)]
 pub struct PayloadEstimator {
     body: usize,
     /// `Σ YᵀY`.
@@ -87,6 +88,7 @@ pub struct PayloadEstimator {
 impl PayloadEstimator {
     /// No samples yet, for a payload on `body`.
     #[must_use]
+    #[inline]
     pub const fn new(body: usize) -> Self {
         Self {
             body,
@@ -98,6 +100,7 @@ impl PayloadEstimator {
 
     /// Samples taken.
     #[must_use]
+    #[inline]
     pub const fn samples(&self) -> u32 {
         self.samples
     }
@@ -109,6 +112,7 @@ impl PayloadEstimator {
     ///
     /// # Errors
     /// RNEA's (a non-finite sample, naming the entry).
+    #[inline]
     pub fn add_sample<const NB: usize, const NQ: usize, const NV: usize>(
         &mut self,
         nominal: &Model<f32, NB, NQ, NV>,
@@ -151,6 +155,7 @@ impl PayloadEstimator {
     /// normal equations are not positive definite, or when the mass found
     /// is not positive.
     #[must_use]
+    #[inline]
     pub fn solve(&self) -> Option<IdentifiedPayload> {
         let mut a = self.normal;
         let mean_diagonal = (0..PARAMETERS).map(|k| a[k][k]).sum::<f64>() / PARAMETERS as f64;
@@ -172,8 +177,35 @@ impl PayloadEstimator {
     }
 }
 
+// `Debug` by hand and inlined, as every function of this module: nothing
+// of it is compiled into `rodyn-scenarios` itself, so the firmware images
+// that do not use it keep their code (the crate's own copies changed how
+// the optimiser inlined the other images; docs/sections/performance_notebook.md,
+// "Model updates").
+impl core::fmt::Debug for IdentifiedPayload {
+    #[inline]
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("IdentifiedPayload")
+            .field("mass", &self.mass)
+            .field("com", &self.com)
+            .field("parameters", &self.parameters)
+            .finish()
+    }
+}
+
+impl core::fmt::Debug for PayloadEstimator {
+    #[inline]
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("PayloadEstimator")
+            .field("body", &self.body)
+            .field("samples", &self.samples)
+            .finish_non_exhaustive()
+    }
+}
+
 /// `x` with `A x = b` for a symmetric positive definite `A` (`A = L Lᵀ`),
 /// `None` when a pivot is not positive.
+#[inline]
 fn cholesky_solve<const N: usize>(mut a: [[f64; N]; N], mut b: [f64; N]) -> Option<[f64; N]> {
     for k in 0..N {
         for p in 0..k {

@@ -75,6 +75,7 @@ const KP: f32 = 1_600.0;
 const KD: f32 = 80.0;
 
 /// `q(t) = q₀ + A (1 - cos ωt)`, its rate and acceleration.
+#[inline]
 fn reference(t: f32) -> ([f32; N], [f32; N], [f32; N]) {
     let mut r = ([0.0; N], [0.0; N], [0.0; N]);
     for k in 0..N {
@@ -88,7 +89,7 @@ fn reference(t: f32) -> ([f32; N], [f32; N], [f32; N]) {
 }
 
 /// Root-mean-square and largest tracking error over a window (rad).
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Default)]
 pub struct TrackingError {
     squares: f32,
     samples: u32,
@@ -97,6 +98,7 @@ pub struct TrackingError {
 }
 
 impl TrackingError {
+    #[inline]
     fn add(&mut self, error: &[f32; N]) {
         for e in error {
             self.squares += e * e;
@@ -106,13 +108,14 @@ impl TrackingError {
     }
     /// The root-mean-square error over every joint and tick (rad).
     #[must_use]
+    #[inline]
     pub fn rms(&self) -> f32 {
         Scalar::sqrt(self.squares / (self.samples.max(1) as f32))
     }
 }
 
 /// What one tick did.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy)]
 pub struct TickOutcome {
     /// The tick's index.
     pub tick: u32,
@@ -124,7 +127,6 @@ pub struct TickOutcome {
 
 /// The scene's state; the models live in the [`DoubleBuffered`] it was
 /// given.
-#[derive(Debug)]
 pub struct PayloadScene<'a> {
     plant: PandaModel,
     plant_data: Data<f32, { panda::NB }, N>,
@@ -143,12 +145,48 @@ pub struct PayloadScene<'a> {
     pub after: TrackingError,
 }
 
+// `Debug` by hand and inlined, as every function of this module (see
+// `payload_estimate`): nothing of it is compiled into the crate itself.
+impl core::fmt::Debug for TrackingError {
+    #[inline]
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("TrackingError")
+            .field("rms", &self.rms())
+            .field("max", &self.max)
+            .finish()
+    }
+}
+
+impl core::fmt::Debug for TickOutcome {
+    #[inline]
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("TickOutcome")
+            .field("tick", &self.tick)
+            .field("error", &self.error)
+            .field("swapped", &self.swapped)
+            .finish()
+    }
+}
+
+impl core::fmt::Debug for PayloadScene<'_> {
+    #[inline]
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("PayloadScene")
+            .field("tick", &self.tick)
+            .field("state", &self.state)
+            .field("before", &self.before)
+            .field("after", &self.after)
+            .finish_non_exhaustive()
+    }
+}
+
 impl<'a> PayloadScene<'a> {
     /// The scene at rest at the ready pose; `models` should hold the
     /// Panda without payload ([`panda::MODEL_F32`]).
     ///
     /// # Errors
     /// None for the shipped Panda; a payload the model refuses.
+    #[inline]
     pub fn new(models: &'a mut DoubleBuffered<PandaModel>) -> Result<Self> {
         let mut plant = panda::MODEL_F32;
         ModelUpdate::new([ParameterChange::Payload {
@@ -175,6 +213,7 @@ impl<'a> PayloadScene<'a> {
 
     /// `true` once every tick has run.
     #[must_use]
+    #[inline]
     pub const fn done(&self) -> bool {
         self.tick >= TICKS
     }
@@ -185,6 +224,7 @@ impl<'a> PayloadScene<'a> {
     ///
     /// # Errors
     /// The dynamics' (a diverging plant), or the staged update's.
+    #[inline]
     pub fn step(&mut self) -> Result<TickOutcome> {
         let swapped = if self.tick == SWAP_AT {
             self.swap_in_identified()?
@@ -232,6 +272,7 @@ impl<'a> PayloadScene<'a> {
     }
 
     /// Solves for the payload, stages it at the flange and publishes it.
+    #[inline]
     fn swap_in_identified(&mut self) -> Result<Option<IdentifiedPayload>> {
         let Some(found) = self.estimator.solve() else {
             return Ok(None);
@@ -248,6 +289,7 @@ impl<'a> PayloadScene<'a> {
     }
 
     /// Advances the plant one tick under `tau`, held over the tick.
+    #[inline]
     fn advance(&mut self, tau: &[f32; N]) -> Result<()> {
         let tau = *tau;
         let mut loads = |_: &PandaModel,
