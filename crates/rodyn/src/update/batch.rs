@@ -32,7 +32,7 @@ use crate::Scalar;
 /// ]);
 /// grasp.apply(&mut model)?;
 /// assert!((model.inertia(0).mass - 1.5).abs() < 1e-12);
-/// assert!((model.inertia(0).com.x - 1.1 / 1.5).abs() < 1e-12); // (1·1 + 0.5·1.1) / 1.5 m
+/// assert!((model.inertia(0).com.x - 1.55 / 1.5).abs() < 1e-12); // (1·1 + 0.5·1.1) / 1.5 m
 /// // A batch with one bad change changes nothing and names it.
 /// let bad = ModelUpdate::new([
 ///     ParameterChange::Armature { dof: 0, armature: 0.1 },
