@@ -38,6 +38,9 @@ pub struct ModelSweep;
 #[doc = include_str!("../../docs/sections/models.md")]
 pub struct Models;
 
+#[doc = include_str!("../../docs/sections/model_updates.md")]
+pub struct ModelUpdates;
+
 #[doc = include_str!("../../docs/sections/optimal_control.md")]
 pub struct OptimalControl;
 

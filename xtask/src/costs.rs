@@ -22,7 +22,12 @@ use std::process::Command;
 /// control-level rows (task space, derivatives) and the rigid-contact rows
 /// have images of their own (see `control_cost_probe.rs`), so that adding
 /// rows does not change how the optimiser inlines the others.
-pub const PROBES: [&str; 3] = ["cost_probe", "control_cost_probe", "contact_cost_probe"];
+pub const PROBES: [&str; 4] = [
+    "cost_probe",
+    "control_cost_probe",
+    "contact_cost_probe",
+    "update_cost_probe",
+];
 /// The Cortex-M4 goals the README states, as (model, algorithm, most
 /// instructions per call): checked against the cost probe's `fast` lines,
 /// the calls with every joint angle in the f32 sine's fast range (the

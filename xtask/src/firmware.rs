@@ -32,6 +32,10 @@ pub const EXAMPLES: &[Example] = &[
         about: "task-space impedance control of the 7-DoF arm's flange along a pose trajectory",
     },
     Example {
+        name: "payload_update",
+        about: "the 7-DoF arm identifies an unknown payload while it moves and swaps the updated model in between two ticks",
+    },
+    Example {
         name: "mpc_pendulum",
         about: "model-predictive control of the pendulum by iLQR on rodyn's analytic derivatives",
     },
@@ -58,6 +62,10 @@ pub const EXAMPLES: &[Example] = &[
     Example {
         name: "contact_cost_probe",
         about: "instructions and stack bytes of the quadruped's constrained dynamics, impact, rigid-contact step and trunk-control tick",
+    },
+    Example {
+        name: "update_cost_probe",
+        about: "instructions and stack bytes of staging and publishing a payload update, and of the tick's read of the model",
     },
     Example {
         name: "agreement",

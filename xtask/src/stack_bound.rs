@@ -236,6 +236,18 @@ pub const ROWS: &[(&str, &str, &str, &str)] = &[
         "four-feet-Jacobians",
         "probe_quadruped_kinematics::{closure_env#4}>",
     ),
+    (
+        "update_cost_probe",
+        "panda-7dof",
+        "model-update(stage+publish)",
+        "probe_update::{closure_env#1}>",
+    ),
+    (
+        "update_cost_probe",
+        "panda-7dof",
+        "model-read(tick)",
+        "probe_update::{closure_env#3}>",
+    ),
 ];
 
 /// A call from one function to another.

@@ -43,6 +43,10 @@ pub mod ilqr;
 #[warn(missing_docs)]
 pub mod muscle_robot;
 #[warn(missing_docs)]
+pub mod payload_estimate;
+#[warn(missing_docs)]
+pub mod payload_scene;
+#[warn(missing_docs)]
 pub mod pendulum_mpc;
 #[warn(missing_docs)]
 pub mod quadruped;

@@ -79,6 +79,7 @@ pub mod space;
 pub mod spatial;
 pub mod topology;
 mod tuning;
+pub mod update;
 
 /// How many points a test's sweep visits: `full`, or `miri` under Miri
 /// (`cargo xtask lint`), which interprets every operation and checks it
