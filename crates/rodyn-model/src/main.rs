@@ -11,6 +11,7 @@
 //! rodyn-model view   <file> [--q a,b,...] [--package-path DIR]... [--trajectory run.csv] [-o robot.html]   3-D viewer page
 //! ```
 
+use rodyn_model::description::JointType;
 use rodyn_model::names::module_name;
 use rodyn_model::render::{render_svg, View};
 use rodyn_model::runtime::RuntimeModel;
@@ -247,11 +248,25 @@ fn run(args: &[String]) -> Result<(), String> {
             if let Some(csv) = &trajectory {
                 let text = std::fs::read_to_string(csv)
                     .map_err(|e| format!("--trajectory {}: {e}", csv.display()))?;
-                let (t, qs) = trajectory_csv::read(
+                let (t, mut qs) = trajectory_csv::read(
                     &text,
                     &csv.display().to_string(),
                     runtime.description.nq(),
                 )?;
+                // The free flyers' quaternions, in the file's layout.
+                let mut starts = Vec::new();
+                let mut k = 0;
+                for body in &runtime.description.bodies {
+                    k += match body.joint {
+                        JointType::FreeFlyer => {
+                            starts.push(k + 3);
+                            7
+                        }
+                        JointType::PlanarFloating => 3,
+                        _ => 1,
+                    };
+                }
+                trajectory_csv::normalise_quaternions(&mut qs, &starts);
                 scene.trajectory = Some(
                     view::trajectory(&runtime, &t, &qs, Vec::new())
                         .map_err(|e| format!("--trajectory {}: {e}", csv.display()))?,

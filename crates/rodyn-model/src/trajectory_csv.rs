@@ -47,9 +47,44 @@ pub fn read(text: &str, file: &str, nq: usize) -> Result<(Vec<f64>, Vec<Vec<f64>
     Ok((times, configurations))
 }
 
+/// Largest distance of a logged quaternion's norm from 1 that is taken
+/// for rounding: an `f32` run printed in its shortest decimals is off by
+/// about 1e-7, far above `f64`'s tolerance of 1e3 ε.
+const LOGGED_NORM_TOLERANCE: f64 = 1e-5;
+
+/// Scales the unit quaternion starting at each of `starts` (offsets into
+/// every configuration of `configurations`, `[qx qy qz qw]`) back to norm 1
+/// when it is off by rounding only; a quaternion further off is left for
+/// the kinematics to refuse, naming the joint.
+pub fn normalise_quaternions(configurations: &mut [Vec<f64>], starts: &[usize]) {
+    for q in configurations {
+        for &k in starts {
+            let Some(quaternion) = q.get_mut(k..k + 4) else {
+                continue;
+            };
+            let norm = quaternion.iter().map(|x| x * x).sum::<f64>().sqrt();
+            if (norm - 1.0).abs() <= LOGGED_NORM_TOLERANCE {
+                quaternion.iter_mut().for_each(|x| *x /= norm);
+            }
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
-    use super::read;
+    use super::{normalise_quaternions, read};
+
+    #[test]
+    fn rounded_quaternions_are_normalised_and_wrong_ones_kept() {
+        let mut q = vec![
+            vec![0.0, 0.0, 0.1, 0.0, 0.0, 0.0, 1.000_000_01],
+            vec![0.0, 0.0, 0.1, 0.0, 0.0, 0.0, 1.1],
+        ];
+        normalise_quaternions(&mut q, &[3]);
+        assert_eq!(q[0][6], 1.0);
+        assert_eq!(q[0][2], 0.1);
+        assert_eq!(q[1][6], 1.1);
+    }
 
     #[test]
     fn samples_read_and_bad_lines_are_named() {

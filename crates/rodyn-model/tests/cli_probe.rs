@@ -199,7 +199,10 @@ fn view_replays_a_trajectory_and_names_a_bad_line() {
     assert!(outcome.status.success(), "{}", outcome.stderr);
     let html = std::fs::read_to_string(&page).unwrap();
     // The scene's JSON carries the three sample times.
-    assert!(html.contains("\"t\":[0.0,0.5,1.0]"), "no trajectory in the page");
+    assert!(
+        html.contains("\"t\":[0.0,0.5,1.0]"),
+        "no trajectory in the page"
+    );
 
     let bad = dir.join("bad.csv");
     std::fs::write(&bad, "t,q0\n0,0.1\n0.5,NaN\n").unwrap();
