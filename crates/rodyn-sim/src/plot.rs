@@ -278,7 +278,7 @@ where
                         points.iter().copied(),
                         dash,
                         gap,
-                        c.stroke_width(1).into(),
+                        c.stroke_width(1),
                     ))?
                     .label(&s.name)
                     .legend(move |(x, y)| {
