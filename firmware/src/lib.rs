@@ -14,6 +14,7 @@
 //! | [`measure`]   | instruction counts (SysTick under `-icount`) and stack use   |
 //! | [`rng`]       | a seeded xorshift generator for reproducible random states  |
 //! | [`exit`]      | leaving QEMU with an exit code; the panic handler            |
+//! | [`pose_log`]  | the configuration every 20 ms, for the viewer (feature)      |
 #![no_std]
 #![warn(missing_docs)]
 
@@ -25,5 +26,6 @@ pub mod drivers;
 pub mod exit;
 pub mod measure;
 pub mod models;
+pub mod pose_log;
 pub mod rng;
 pub mod simulated;

@@ -9,7 +9,9 @@
 //! Not regenerated here, and why (each says so where it is shown):
 //! * timings (the Pinocchio comparisons, the ABA/CRBA crossover, the
 //!   speed-against-accuracy charts, criterion): wall clock, so labelled with
-//!   the machine, the date and the command instead;
+//!   the machine, the date and the command instead (the crossover and the
+//!   charts keep their timings in committed CSV files, and only their
+//!   drawings are regenerated here);
 //! * the example-robot-data sweep and the host arithmetic table
 //!   (`cargo xtask host-profile --table`): they need Pinocchio, which the
 //!   repository does not hold;
@@ -144,10 +146,19 @@ const GENERATORS: &[Generator] = &[
                 "docs/img/sim/chart-quadruped-stand.svg",
             ),
             (
+                "chart-quadruped-stand-position.svg",
+                "docs/img/sim/chart-quadruped-stand-position.svg",
+            ),
+            (
                 "chart-muscle-robot.svg",
                 "docs/img/sim/chart-muscle-robot.svg",
             ),
         ],
+    },
+    Generator {
+        name: "ABA/CRBA crossover chart, redrawn from its timings (crossover --replot)",
+        run: crossover_replotted,
+        files: &[("crossover.svg", "docs/img/perf/crossover.svg")],
     },
     Generator {
         name: "optimal control of the muscle robot (example muscle_robot_optimal_control)",
@@ -459,6 +470,23 @@ fn charts_replotted(out: &Path, _: Options) -> Result<()> {
         .with_context(|| format!("copying docs/img/sim/{csv}"))?;
     }
     cargo_run("rodyn-sim", &[], &["chart", "--replot", "-o", text(out)?]).map(drop)
+}
+
+/// The crossover's timings are wall clock: its CSV file is committed and
+/// only the chart is redrawn from it.
+fn crossover_replotted(out: &Path, _: Options) -> Result<()> {
+    std::fs::copy(
+        shell::root().join("docs/img/perf/crossover.csv"),
+        out.join("crossover.csv"),
+    )
+    .context("copying docs/img/perf/crossover.csv")?;
+    let chart = out.join("crossover.svg");
+    cargo_run(
+        "rodyn-bench",
+        &["--bin", "crossover"],
+        &["--replot", "--out", text(&chart)?],
+    )
+    .map(drop)
 }
 
 /// The solve is deterministic; only `summary.json`'s seconds are not, and

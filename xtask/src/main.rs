@@ -36,23 +36,24 @@ mod miri;
 mod panic_sites;
 mod profile;
 mod public_api;
+mod replay;
 mod setup;
 mod shell;
 mod stack_bound;
 mod template;
 mod viewer;
 
-use anyhow::{bail, Result};
+use anyhow::{bail, Context, Result};
 use std::process::ExitCode;
 use std::time::Instant;
 
 const USAGE: &str =
-    "usage: cargo xtask <run [example] | test | lint | docs [--check] | costs | family | stack [image [words]] | stack --frames <image> | stack --check-frames | panic-sites [image] | viewer | public-api [--bless] | bless | profile [model] [algorithm] | host-profile <algorithm> <model> [--pinocchio]>";
+    "usage: cargo xtask <run [example] [--html page.html] | test | lint | docs [--check] | costs | family | stack [image [words]] | stack --frames <image> | stack --check-frames | panic-sites [image] | viewer | public-api [--bless] | bless | profile [model] [algorithm] | host-profile <algorithm> <model> [--pinocchio]>";
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let result = match args.first().map(String::as_str) {
-        Some("run") => run(args.get(1).map(String::as_str)),
+        Some("run") => run(&args[1..]),
         Some("test") => test(),
         Some("lint") => lint(),
         Some("docs") => docs::run(&args[1..]),
@@ -79,12 +80,43 @@ fn main() -> ExitCode {
     }
 }
 
-/// Builds the firmware and runs one example in QEMU with a live log.
-fn run(example: Option<&str>) -> Result<()> {
-    let name = example.unwrap_or(firmware::FLAGSHIP);
-    let example = firmware::example(name)?;
+/// Builds the firmware and runs one example in QEMU with a live log;
+/// with `--html PAGE`, also writes its run as a viewer page.
+fn run(args: &[String]) -> Result<()> {
+    let mut name = None;
+    let mut html = None;
+    let mut it = args.iter();
+    while let Some(arg) = it.next() {
+        match arg.as_str() {
+            "--html" => {
+                let page = it
+                    .next()
+                    .context("--html needs a page to write, such as run.html")?;
+                html = Some(std::path::PathBuf::from(page));
+            }
+            other if other.starts_with('-') => bail!("run: unknown option {other}\n{USAGE}"),
+            other if name.is_none() => name = Some(other),
+            other => bail!(
+                "run: two examples, {} and {other}: give one",
+                name.unwrap_or("")
+            ),
+        }
+    }
+    let example = firmware::example(name.unwrap_or(firmware::FLAGSHIP))?;
     setup::ensure_target()?;
     setup::ensure_qemu()?;
+    if let Some(html) = html {
+        replay::model_of(example)?;
+        // Checked before the minutes of building: the page can be written.
+        std::fs::write(&html, "")
+            .with_context(|| format!("--html: cannot write {}", html.display()))?;
+        let rodyn_model = replay::build_rodyn_model()?;
+        println!(
+            "running {} in QEMU (mps2-an386, Cortex-M4F) with its pose log: {}",
+            example.name, example.about
+        );
+        return replay::write_page(example, &html, &rodyn_model, |line| println!("{line}"));
+    }
     firmware::build()?;
     println!(
         "running {} in QEMU (mps2-an386, Cortex-M4F): {}",

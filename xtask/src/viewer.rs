@@ -10,13 +10,15 @@
 //!   the robot layer hidden over at least [`MIN_ROBOT_PIXELS`] of the 3-D
 //!   view, and from the committed reference image over at most
 //!   [`MAX_REFERENCE_PIXELS`];
-//! - scrubbing moves the trot: screenshots at two times differ over at
-//!   least [`MIN_MOTION_PIXELS`].
+//! - scrubbing moves the trot, and the firmware's arm controller and
+//!   quadruped replayed from their pose logs (`cargo xtask run EXAMPLE
+//!   --html`): screenshots at two times differ over at least
+//!   [`MIN_MOTION_PIXELS`].
 //!
 //! A reference image that is missing is written (commit it); delete it to
 //! take a new one after a deliberate change of the page.
 
-use crate::shell;
+use crate::{firmware, replay, setup, shell};
 use anyhow::{bail, ensure, Context, Result};
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -37,6 +39,13 @@ const MIN_ROBOT_PIXELS: f64 = 0.02;
 const MAX_REFERENCE_PIXELS: f64 = 0.01;
 /// Least share of the 3-D view that must change between two times of the trot.
 const MIN_MOTION_PIXELS: f64 = 0.005;
+/// The firmware examples replayed from their pose logs, with two times
+/// (s) of the run at which the robot must stand differently: the arm
+/// early and late in its reference motion, the quadruped standing and
+/// trotting.
+const FIRMWARE_REPLAYS: [(&str, &str, &str); 2] =
+    [("arm_control", "0.2", "1.2"), ("quadruped", "1", "4.5")];
+
 /// The Panda's pose for the screenshots (rad): elbow bent, wrist turned.
 const PANDA_Q: &str = "0.3,-0.4,0,-2.0,0,1.6,0.8";
 
@@ -76,6 +85,15 @@ pub fn check() -> Result<()> {
         .arg(&trot);
     run_quietly(&mut sim)?;
     pages.push("trot.html#t=0.5".into());
+    // The firmware examples' runs, from their pose logs in QEMU.
+    setup::ensure_target()?;
+    setup::ensure_qemu()?;
+    for (name, _, _) in FIRMWARE_REPLAYS {
+        let example = firmware::example(name)?;
+        let page = work.join(format!("{name}.html"));
+        replay::write_page(example, &page, &bin.join("rodyn-model"), |_| {})?;
+        pages.push(format!("{name}.html#t=1"));
+    }
     let statuses = page_statuses(&chromium, &work, &pages)?;
     let broken: Vec<String> = statuses
         .iter()
@@ -137,7 +155,33 @@ pub fn check() -> Result<()> {
         );
     }
 
-    // Scrubbing a trajectory moves the robot.
+    // Scrubbing a trajectory moves the robot: the firmware's replays.
+    for (name, early, late) in FIRMWARE_REPLAYS {
+        let page = work.join(format!("{name}.html"));
+        let times = [
+            (
+                work.join(format!("{name}-{early}.png")),
+                url(&page, &format!("t={early}")),
+            ),
+            (
+                work.join(format!("{name}-{late}.png")),
+                url(&page, &format!("t={late}")),
+            ),
+        ];
+        let images = parallel(&times, |(png, url)| screenshot(&chromium, url, png))?;
+        let moved = differing_share(&images[0], &images[1]);
+        ensure!(
+            moved >= MIN_MOTION_PIXELS,
+            "{name}'s replay at {early} s and {late} s differs over {:.2} % of the 3-D view only (at least {:.1} %)",
+            100.0 * moved,
+            100.0 * MIN_MOTION_PIXELS
+        );
+        println!(
+            "viewer: {name}'s replay (firmware pose log) at {early} s and {late} s differs over {:.1} % of the view",
+            100.0 * moved
+        );
+    }
+    // And the simulated trot.
     let times = [
         (work.join("trot-0.1.png"), url(&trot, "t=0.1")),
         (work.join("trot-0.9.png"), url(&trot, "t=0.9")),

@@ -8,9 +8,10 @@
 //! (comma-separated kinds of warning, such as `limit,geometry`, or `all`).
 //! rodyn-model tree   <file> [--floating-base] [--strict]                   bodies, joints, endpoints, drives
 //! rodyn-model render <file> [--q a,b,...] [--view xy|xz|yz|iso] [-o out.svg]   stick figure
-//! rodyn-model view   <file> [--q a,b,...] [--package-path DIR]... [-o robot.html]   3-D viewer page
+//! rodyn-model view   <file> [--q a,b,...] [--package-path DIR]... [--trajectory run.csv] [-o robot.html]   3-D viewer page
 //! ```
 
+use rodyn_model::description::JointType;
 use rodyn_model::names::module_name;
 use rodyn_model::render::{render_svg, View};
 use rodyn_model::runtime::RuntimeModel;
@@ -22,6 +23,8 @@ use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
+mod trajectory_csv;
+
 const USAGE: &str = "usage:
   rodyn-model rust  <file> [--module <NAME>] [--floating-base] [--strict]   print the generated Rust module
   rodyn-model check <file> [--floating-base] [--strict]                     check a model file and print its warnings
@@ -29,8 +32,9 @@ const USAGE: &str = "usage:
   rodyn-model render <file> [--floating-base] [--strict] [--q <a,b,...>] [--view <xy|xz|yz|iso>] [--width <PX>] [-o <out.svg>]
                                                                draw a stick figure at q (default: zeros; planar models view xy, others iso)
                                                                --width from 16 to 10000 px (default 480); each of q finite, at most 1e6 in size
-  rodyn-model view  <file> [--floating-base] [--q <a,b,...>] [--package-path <DIR>]... [-o <robot.html>]
-                                                               write a 3-D viewer as one HTML file (meshes from the URDF; package://NAME/ found as DIR/NAME)
+  rodyn-model view  <file> [--floating-base] [--q <a,b,...>] [--package-path <DIR>]... [--trajectory <run.csv>] [-o <robot.html>]
+                                                               write a 3-D viewer as one HTML file (meshes from the URDF; package://NAME/ found as DIR/NAME);
+                                                               --trajectory replays a CSV of t (s) and the nq coordinates per line, under a header line
 options for every command: --round-quarter-turns, --silence <KINDS> (comma-separated kinds of warning, or all: limit, dynamics, mimic, geometry, transmission, gazebo, calibration, unknown-element, unnamed-robot, fixed-root-inertia, massless-tensor, link-tensor, body-tensor)";
 
 /// The picture's width (px) unless `--width` says otherwise, and its bounds.
@@ -68,6 +72,7 @@ fn run(args: &[String]) -> Result<(), String> {
     // refused elsewhere rather than silently ignored.
     let mut command_only: Vec<(&str, &[&str])> = Vec::new();
     let mut package_path: Vec<PathBuf> = Vec::new();
+    let mut trajectory: Option<PathBuf> = None;
     let mut it = rest.iter();
     while let Some(arg) = it.next() {
         match arg.as_str() {
@@ -121,6 +126,13 @@ fn run(args: &[String]) -> Result<(), String> {
                         .ok_or("--package-path needs a folder that holds packages")?,
                 ));
                 command_only.push(("--package-path", &["view"]));
+            }
+            "--trajectory" => {
+                trajectory = Some(PathBuf::from(
+                    it.next()
+                        .ok_or("--trajectory needs a CSV file of t and q per line")?,
+                ));
+                command_only.push(("--trajectory", &["view"]));
             }
             "-o" | "--output" => {
                 output = Some(PathBuf::from(it.next().ok_or("-o needs a file name")?));
@@ -232,7 +244,35 @@ fn run(args: &[String]) -> Result<(), String> {
                 eprintln!("{w}");
             }
             let runtime = RuntimeModel::new(model).map_err(|d| d.to_string())?;
-            let html = rodyn_viewer::write_html(&view::scene(&runtime, visuals, &q))
+            let mut scene = view::scene(&runtime, visuals, &q);
+            if let Some(csv) = &trajectory {
+                let text = std::fs::read_to_string(csv)
+                    .map_err(|e| format!("--trajectory {}: {e}", csv.display()))?;
+                let (t, mut qs) = trajectory_csv::read(
+                    &text,
+                    &csv.display().to_string(),
+                    runtime.description.nq(),
+                )?;
+                // The free flyers' quaternions, in the file's layout.
+                let mut starts = Vec::new();
+                let mut k = 0;
+                for body in &runtime.description.bodies {
+                    k += match body.joint {
+                        JointType::FreeFlyer => {
+                            starts.push(k + 3);
+                            7
+                        }
+                        JointType::PlanarFloating => 3,
+                        _ => 1,
+                    };
+                }
+                trajectory_csv::normalise_quaternions(&mut qs, &starts);
+                scene.trajectory = Some(
+                    view::trajectory(&runtime, &t, &qs, Vec::new())
+                        .map_err(|e| format!("--trajectory {}: {e}", csv.display()))?,
+                );
+            }
+            let html = rodyn_viewer::write_html(&scene)
                 .map_err(|e| format!("cannot write the page: {e}"))?;
             let path = output
                 .unwrap_or_else(|| PathBuf::from(format!("{}.html", runtime.description.name)));

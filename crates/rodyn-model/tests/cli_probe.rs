@@ -29,7 +29,14 @@ fn scratch(name: &str) -> PathBuf {
 }
 
 const NUMERIC: [&str; 2] = ["--width", "--q"];
-const OTHER: [&str; 5] = ["--module", "--view", "-o", "--silence", "--package-path"];
+const OTHER: [&str; 6] = [
+    "--module",
+    "--view",
+    "-o",
+    "--silence",
+    "--package-path",
+    "--trajectory",
+];
 
 #[test]
 fn every_option_is_probed() {
@@ -110,6 +117,7 @@ fn other_options_refuse_bad_values_outputs_and_inputs() {
         "--q",
         "--width",
         "--package-path",
+        "--trajectory",
     ] {
         // The value missing.
         assert_refused(exe(), &["render", &pendulum, option], option);
@@ -131,6 +139,11 @@ fn other_options_refuse_bad_values_outputs_and_inputs() {
         exe(),
         &["render", &pendulum, "--package-path", "."],
         "--package-path",
+    );
+    assert_refused(
+        exe(),
+        &["render", &pendulum, "--trajectory", "run.csv"],
+        "--trajectory",
     );
 
     let dir = scratch("files");
@@ -161,4 +174,43 @@ fn other_options_refuse_bad_values_outputs_and_inputs() {
     let outcome = assert_refused(exe(), &["check", &pendulum, &pendulum], "two model files");
     assert_no_panic(&outcome, &[]);
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `view --trajectory` replays a CSV file into the page, and refuses one
+/// with a bad line, naming the file and the line.
+#[test]
+fn view_replays_a_trajectory_and_names_a_bad_line() {
+    let pendulum = model("pendulum.toml");
+    let dir = scratch("trajectory");
+    let csv = dir.join("swing.csv");
+    std::fs::write(&csv, "t,q0\n0,0.1\n0.5,0.6\n1,-0.2\n").unwrap();
+    let page = dir.join("swing.html");
+    let outcome = run(
+        exe(),
+        &[
+            "view",
+            &pendulum,
+            "--trajectory",
+            csv.to_str().unwrap(),
+            "-o",
+            page.to_str().unwrap(),
+        ],
+    );
+    assert!(outcome.status.success(), "{}", outcome.stderr);
+    let html = std::fs::read_to_string(&page).unwrap();
+    // The scene's JSON carries the three sample times.
+    assert!(
+        html.contains("\"t\":[0.0,0.5,1.0]"),
+        "no trajectory in the page"
+    );
+
+    let bad = dir.join("bad.csv");
+    std::fs::write(&bad, "t,q0\n0,0.1\n0.5,NaN\n").unwrap();
+    let outcome = assert_refused(
+        exe(),
+        &["view", &pendulum, "--trajectory", bad.to_str().unwrap()],
+        "bad.csv:3",
+    );
+    assert!(outcome.stderr.contains("`NaN`"), "{}", outcome.stderr);
+    std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -3,6 +3,7 @@
 
 use crate::plot::{plot_panels, Figure, Mark, Panel, Scale, Series};
 use crate::scenario::{run, IntegratorKind, Method, RunConfig, ScalarType, Scenario};
+use crate::trajectory::Trajectory;
 use indicatif::ProgressBar;
 use std::io::Write;
 use std::path::Path;
@@ -32,8 +33,12 @@ pub struct Point {
     pub dt: f64,
     /// Median host seconds per simulated second.
     pub cost: f64,
-    /// Largest configuration error against the reference (rad / m), infinite on failure.
+    /// Largest angle error against the reference (rad): the joint angles
+    /// and, for a floating base, its rotation angle; infinite on failure.
     pub error: f64,
+    /// Largest error of a floating base's position against the reference
+    /// (m); NaN for a fixed base, infinite on failure.
+    pub position_error: f64,
     /// The error message of a failed run.
     pub failure: Option<String>,
 }
@@ -107,22 +112,59 @@ pub fn sweep(scenario: Scenario) -> Vec<Point> {
         }
         costs.sort_by(f64::total_cmp);
         let t = last.expect("at least one repeat");
+        let against = match (&rigid_reference, integrator) {
+            (Some(rigid), IntegratorKind::RigidContact) => rigid,
+            _ => &reference,
+        };
+        let (error, position_error) = if scenario.has_feet() {
+            floating_base_errors(&t, against)
+        } else {
+            (t.max_error_against(against), f64::NAN)
+        };
         points.push(Point {
             method,
             scalar,
             integrator,
             dt,
             cost: costs[REPEATS / 2],
-            error: match (&rigid_reference, integrator) {
-                (Some(rigid), IntegratorKind::RigidContact) => t.max_error_against(rigid),
-                _ => t.max_error_against(&reference),
-            },
+            error,
+            position_error,
             failure: t.failure.clone(),
         });
         bar.inc(1);
     }
     bar.finish_and_clear();
     points
+}
+
+/// The largest angle error (rad: the joints' and the base's rotation angle
+/// from the quaternions' product) and the largest base position error (m)
+/// of a floating-base run `run` against `reference`, q laid out as
+/// `[x y z, qx qy qz qw, joints…]`; infinite when the run failed.
+fn floating_base_errors(run: &Trajectory, reference: &Trajectory) -> (f64, f64) {
+    if run.failure.is_some() || run.t.len() < reference.t.len() {
+        return (f64::INFINITY, f64::INFINITY);
+    }
+    let (mut angle, mut position) = (0.0f64, 0.0f64);
+    for (a, b) in run.q.iter().zip(&reference.q) {
+        for k in 0..3 {
+            position = position.max((a[k] - b[k]).abs());
+        }
+        // The angle between two orientations: 2 acos |⟨q_a, q_b⟩| for unit
+        // quaternions (normalised here, so drift does not count twice).
+        let dot: f64 = (3..7).map(|k| a[k] * b[k]).sum();
+        let norms = (3..7).map(|k| a[k] * a[k]).sum::<f64>().sqrt()
+            * (3..7).map(|k| b[k] * b[k]).sum::<f64>().sqrt();
+        angle = angle.max(2.0 * (dot.abs() / norms).min(1.0).acos());
+        for k in 7..a.len().min(b.len()) {
+            angle = angle.max((a[k] - b[k]).abs());
+        }
+    }
+    if angle.is_finite() && position.is_finite() {
+        (angle, position)
+    } else {
+        (f64::INFINITY, f64::INFINITY)
+    }
 }
 
 /// Indices of the points no other point beats on both cost and error,
@@ -177,9 +219,23 @@ const CHART_SCENARIOS: [Scenario; 3] = [
 /// 1 kHz candidates. With `replot`, runs nothing: reads the points back
 /// from the `.csv` files already in `out` (the costs are host timings, which
 /// a new sweep would not reproduce) and redraws the `.svg` files.
-pub fn chart_command(out: &Path, replot: bool) -> Result<(), Box<dyn std::error::Error>> {
+pub fn chart_command(
+    out: &Path,
+    replot: bool,
+    only: Option<Scenario>,
+) -> Result<(), Box<dyn std::error::Error>> {
     std::fs::create_dir_all(out)?;
-    for scenario in CHART_SCENARIOS {
+    if let Some(scenario) = only.filter(|s| !CHART_SCENARIOS.contains(s)) {
+        return Err(format!(
+            "{} has no chart; charts: arm-swing, quadruped-stand, muscle-robot",
+            scenario.name()
+        )
+        .into());
+    }
+    for scenario in CHART_SCENARIOS
+        .into_iter()
+        .filter(|s| only.is_none_or(|o| o == *s))
+    {
         let name = scenario.name();
         let csv_path = out.join(format!("chart-{name}.csv"));
         let (points, front) = if replot {
@@ -194,8 +250,28 @@ pub fn chart_command(out: &Path, replot: bool) -> Result<(), Box<dyn std::error:
             scenario,
             &points,
             &front,
+            Quantity::Angle,
             &out.join(format!("chart-{name}.svg")),
         )?;
+        if scenario.has_feet() {
+            // The base's position error (m) on a chart of its own: one
+            // unit per axis.
+            let by_position: Vec<Point> = points
+                .iter()
+                .map(|p| Point {
+                    error: p.position_error,
+                    ..p.clone()
+                })
+                .collect();
+            let position_front = pareto_front(&by_position);
+            draw(
+                scenario,
+                &by_position,
+                &position_front,
+                Quantity::Position,
+                &out.join(format!("chart-{name}-position.svg")),
+            )?;
+        }
         print_summary(name, &points, &front);
     }
     Ok(())
@@ -206,18 +282,24 @@ fn write_csv(path: &Path, points: &[Point], front: &[usize]) -> std::io::Result<
     let mut csv = std::fs::File::create(path)?;
     writeln!(
         csv,
-        "method,scalar,integrator,dt,cost_s_per_s,max_error,pareto,failure"
+        "method,scalar,integrator,dt,cost_s_per_s,max_error,max_position_error_m,pareto,failure"
     )?;
     for (i, p) in points.iter().enumerate() {
+        let position = if p.position_error.is_nan() {
+            String::new()
+        } else {
+            format!("{:.4e}", p.position_error)
+        };
         writeln!(
             csv,
-            "{},{},{},{:e},{:.4e},{:.4e},{},{}",
+            "{},{},{},{:e},{:.4e},{:.4e},{},{},{}",
             method_name(p),
             p.scalar.name(),
             p.integrator.name(),
             p.dt,
             p.cost,
             p.error,
+            position,
             front.contains(&i),
             p.failure.as_deref().unwrap_or("").replace(',', ";")
         )?;
@@ -238,9 +320,9 @@ fn read_csv(path: &Path) -> Result<(Vec<Point>, Vec<usize>), Box<dyn std::error:
     let mut front = Vec::new();
     for (n, line) in text.lines().enumerate().skip(1) {
         let at = |what: &str| format!("{} line {}: {what}", path.display(), n + 1);
-        let fields: Vec<&str> = line.splitn(8, ',').collect();
-        if fields.len() != 8 {
-            return Err(at("expected 8 comma-separated fields").into());
+        let fields: Vec<&str> = line.splitn(9, ',').collect();
+        if fields.len() != 9 {
+            return Err(at("expected 9 comma-separated fields").into());
         }
         let number = |k: usize, what: &str| -> Result<f64, String> {
             fields[k]
@@ -261,7 +343,7 @@ fn read_csv(path: &Path) -> Result<(Vec<Point>, Vec<usize>), Box<dyn std::error:
             .into_iter()
             .find(|s| s.name() == fields[1])
             .ok_or_else(|| at(&format!("unknown scalar '{}'", fields[1])))?;
-        if fields[6] == "true" {
+        if fields[7] == "true" {
             front.push(points.len());
         }
         points.push(Point {
@@ -271,7 +353,11 @@ fn read_csv(path: &Path) -> Result<(Vec<Point>, Vec<usize>), Box<dyn std::error:
             dt: number(3, "dt")?,
             cost: number(4, "cost")?,
             error: number(5, "error")?,
-            failure: (!fields[7].is_empty()).then(|| fields[7].to_owned()),
+            position_error: match fields[6] {
+                "" => f64::NAN,
+                _ => number(6, "position error")?,
+            },
+            failure: (!fields[8].is_empty()).then(|| fields[8].to_owned()),
         });
     }
     Ok((points, front))
@@ -288,10 +374,20 @@ fn scalar_color(scalar: ScalarType) -> usize {
 /// The chart: one panel per integrator (and one for rigid feet), each with
 /// at most four point series and the Pareto front of all the runs, on
 /// shared axes. Colour is the scalar, the marker the method.
+/// What a chart's y axis shows.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Quantity {
+    /// The largest angle error (rad).
+    Angle,
+    /// The largest error of the floating base's position (m).
+    Position,
+}
+
 fn draw(
     scenario: Scenario,
     points: &[Point],
     front: &[usize],
+    quantity: Quantity,
     path: &Path,
 ) -> Result<(), Box<dyn std::error::Error>> {
     let mut front_points: Vec<(f64, f64)> = front
@@ -355,17 +451,18 @@ fn draw(
             Panel { title, series }
         })
         .collect();
+    let (what, y_label) = match (quantity, scenario.has_feet()) {
+        (Quantity::Position, _) => ("trunk position error", "max |p - p_ref| of the trunk (m)"),
+        (Quantity::Angle, true) => (
+            "angle error",
+            "max angle error (rad; joints and trunk rotation)",
+        ),
+        (Quantity::Angle, false) => ("error", "max |q - q_ref| (rad)"),
+    };
     let title = format!(
-        "{}: cost against error, {DURATION} s simulated, steps 0.1 to 5 ms",
+        "{}: cost against {what}, {DURATION} s simulated, steps 0.1 to 5 ms",
         scenario.name()
     );
-    let y_label = if scenario.has_feet() {
-        // The floating base's position (m) and the joint angles (rad)
-        // share one maximum in the recorded error.
-        "max |q - q_ref| (m or rad, largest coordinate)"
-    } else {
-        "max |q - q_ref| (rad)"
-    };
     plot_panels(
         path,
         &Figure {
@@ -424,6 +521,7 @@ mod tests {
                 dt: 1e-3,
                 cost: 3.5e-3,
                 error: 4.2e-3,
+                position_error: f64::NAN,
                 failure: None,
             },
             Point {
@@ -433,6 +531,7 @@ mod tests {
                 dt: 5e-3,
                 cost: 1.0e-3,
                 error: 2.7e-2,
+                position_error: 1.5e-3,
                 failure: None,
             },
             Point {
@@ -442,6 +541,7 @@ mod tests {
                 dt: 5e-3,
                 cost: 2.0e-4,
                 error: f64::INFINITY,
+                position_error: f64::INFINITY,
                 failure: Some("step 12: state not finite, joint 3".into()),
             },
         ];
@@ -461,6 +561,8 @@ mod tests {
             assert!((a.cost - b.cost).abs() <= 1e-4 * a.cost);
             assert!(a.error == b.error || (a.error - b.error).abs() <= 1e-4 * a.error);
         }
+        assert!(back[0].position_error.is_nan());
+        assert!((back[1].position_error - 1.5e-3).abs() <= 1e-4 * 1.5e-3);
         assert_eq!(
             back[2].failure.as_deref(),
             Some("step 12: state not finite; joint 3")
@@ -473,8 +575,8 @@ mod tests {
         let path = std::env::temp_dir().join(format!("rodyn-chart-bad-{}.csv", std::process::id()));
         std::fs::write(
             &path,
-            "method,scalar,integrator,dt,cost_s_per_s,max_error,pareto,failure\n\
-             ABA,f32,rk4,1e-3,fast,1e-3,false,\n",
+            "method,scalar,integrator,dt,cost_s_per_s,max_error,max_position_error_m,pareto,failure\n\
+             ABA,f32,rk4,1e-3,fast,1e-3,,false,\n",
         )
         .unwrap();
         let message = read_csv(&path).unwrap_err().to_string();

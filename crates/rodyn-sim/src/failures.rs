@@ -1,7 +1,7 @@
 //! `rodyn-sim failures`: where each method breaks down, one plot each.
 
 use crate::models::{chain, light_tip_pendulum, slider, tumbling_box};
-use crate::plot::{plot, Curve, Figure, Mark, Scale, Series};
+use crate::plot::{plot, plot_panels, Curve, Figure, Mark, Panel, Scale, Series};
 use crate::scenario::IntegratorKind;
 use clap::ValueEnum;
 use rodyn::algorithm::forward_dynamics::{Aba, Crba, ForwardDynamics};
@@ -250,7 +250,7 @@ fn stiffness(out: &Path) -> Res {
     series.push(Series::new(
         "2.785/ω (RK4 theory)",
         ks.iter().map(|&k| (k, 2.785 / k.sqrt())).collect(),
-        Mark::ThinLine,
+        Mark::Dotted,
         8,
     ));
     plot(
@@ -442,7 +442,11 @@ fn quaternion(out: &Path) -> Res {
             quaternion_drift::<f64, _>(ExplicitEuler { update: no }, dt, steps),
         ),
     ];
-    let mut series = Vec::new();
+    // Two panels: the updates that keep |q| = 1 and those that let it
+    // drift, each with rodyn's tolerances, so no panel holds more than
+    // seven series.
+    let mut kept = Vec::new();
+    let mut drifting = Vec::new();
     let mut rejected = Vec::new();
     println!("quaternion: tumbling box, dt = 1 ms, 10 s; max ||q|-1| and rodyn's verdict");
     for (c, (name, (pts, failure))) in runs.into_iter().enumerate() {
@@ -460,51 +464,70 @@ fn quaternion(out: &Path) -> Res {
             .filter(|(i, _)| i % 10 == 0)
             .map(|(_, p)| p)
             .collect();
-        series.push(Series::new(name, thinned, Mark::Line, c));
+        let panel = if name.contains("not renormalised") {
+            &mut drifting
+        } else {
+            &mut kept
+        };
+        panel.push(Series::new(name, thinned, Mark::Line, c));
     }
-    series.push(Series::new(
+    drifting.push(Series::new(
         "kinematics only: explicit Euler, no renormalisation",
         kinematic_drift(false, dt, steps),
-        Mark::ThinLine,
+        Mark::Line,
         5,
     ));
-    series.push(Series::new(
+    drifting.push(Series::new(
         "kinematics only: RK4, no renormalisation",
         kinematic_drift(true, dt, steps),
-        Mark::ThinLine,
+        Mark::Line,
         6,
     ));
-    series.push(Series::new(
-        "rodyn's tolerance, f32 (1e3 ε)",
-        vec![
-            (1e-3, 1e3 * f32::EPSILON as f64),
-            (10.0, 1e3 * f32::EPSILON as f64),
-        ],
-        Mark::ThinLine,
-        7,
-    ));
-    series.push(Series::new(
-        "rodyn's tolerance, f64 (1e3 ε)",
-        vec![(1e-3, 1e3 * f64::EPSILON), (10.0, 1e3 * f64::EPSILON)],
-        Mark::ThinLine,
-        8,
-    ));
-    series.push(Series::new(
+    let tolerances = [
+        Series::new(
+            "rodyn's tolerance, f32 (1e3 ε)",
+            vec![
+                (1e-3, 1e3 * f32::EPSILON as f64),
+                (10.0, 1e3 * f32::EPSILON as f64),
+            ],
+            Mark::ThinLine,
+            7,
+        ),
+        Series::new(
+            "rodyn's tolerance, f64 (1e3 ε)",
+            vec![(1e-3, 1e3 * f64::EPSILON), (10.0, 1e3 * f64::EPSILON)],
+            Mark::Dotted,
+            8,
+        ),
+    ];
+    kept.extend(tolerances.iter().cloned());
+    drifting.extend(tolerances);
+    drifting.push(Series::new(
         "rodyn rejects the configuration",
         rejected,
         Mark::Crosses,
         3,
     ));
-    plot(
+    plot_panels(
         &out.join("failure-quaternion.svg"),
         &fig(
             "Quaternion norm drift of a tumbling box (dt = 1 ms)",
             "time (s)",
-            "| |q| - 1 |",
+            "| |q| - 1 | (norm error, no unit)",
             Scale::Linear,
             Scale::Log,
         ),
-        &series,
+        &[
+            Panel {
+                title: "|q| kept at 1 (renormalised or exponential map)".into(),
+                series: kept,
+            },
+            Panel {
+                title: "|q| left to drift (not renormalised)".into(),
+                series: drifting,
+            },
+        ],
+        3,
     )
 }
 

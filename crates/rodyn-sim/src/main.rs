@@ -78,6 +78,9 @@ enum Command {
         /// directory, without running (the costs are host timings).
         #[arg(long)]
         replot: bool,
+        /// Only this scenario's chart (arm-swing, quadruped-stand or muscle-robot).
+        #[arg(long, value_enum)]
+        scenario: Option<Scenario>,
     },
     /// The maps of where methods fail.
     Failures {
@@ -115,9 +118,11 @@ fn main() {
             check_run(&config, &out, html.as_deref())
                 .and_then(|()| run::run_command(&config, &out, html.as_deref()))
         }
-        Command::Chart { out, replot } => {
-            check_output(&out).and_then(|()| chart::chart_command(&out, replot))
-        }
+        Command::Chart {
+            out,
+            replot,
+            scenario,
+        } => check_output(&out).and_then(|()| chart::chart_command(&out, replot, scenario)),
         Command::Failures { experiment, out } => {
             check_output(&out).and_then(|()| failures::failures_command(experiment, &out))
         }

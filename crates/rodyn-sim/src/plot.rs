@@ -4,6 +4,7 @@
 //! axis labelled in powers of ten: one code path for every combination.
 
 use plotters::coord::types::RangedCoordf64;
+use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 use plotters::style::{register_font, FontStyle};
 use std::path::Path;
@@ -17,8 +18,10 @@ pub type Curve = Vec<(f64, f64)>;
 pub enum Mark {
     /// A line through the points.
     Line,
-    /// A dashed-looking thin line.
+    /// A thin dashed line (references, fronts).
     ThinLine,
+    /// A thin dotted line (a second kind of reference).
+    Dotted,
     /// Points only.
     Points,
     /// Hollow circles, large enough to show a cross or point drawn at the
@@ -268,16 +271,39 @@ where
         let c = color(s.color);
         let legend_color = c;
         match s.mark {
-            Mark::Line | Mark::ThinLine => {
-                let width = if s.mark == Mark::ThinLine { 1 } else { 2 };
+            Mark::ThinLine | Mark::Dotted => {
+                let (dash, gap) = dash_pattern(s.mark);
                 chart
-                    .draw_series(LineSeries::new(
+                    .draw_series(DashedLineSeries::new(
                         points.iter().copied(),
-                        c.stroke_width(width),
+                        dash,
+                        gap,
+                        c.stroke_width(1),
                     ))?
                     .label(&s.name)
                     .legend(move |(x, y)| {
-                        PathElement::new([(x, y), (x + 18, y)], legend_color.stroke_width(2))
+                        EmptyElement::at((x, y)) + legend_dashes(legend_color, dash, gap)
+                    });
+            }
+            Mark::Line => {
+                chart.draw_series(LineSeries::new(points.iter().copied(), c.stroke_width(2)))?;
+                // A dense curve gets a marker every few points, shaped by
+                // its palette index, so that curves differ by more than
+                // their colour.
+                let step = (points.len() / SPARSE_MARKERS).max(1);
+                let sparse: Vec<(f64, f64)> = points.iter().copied().step_by(step).collect();
+                let shape = PointShape::of(s.color);
+                chart
+                    .draw_series(
+                        sparse
+                            .into_iter()
+                            .map(move |p| EmptyElement::at(p) + shape.marker(c)),
+                    )?
+                    .label(&s.name)
+                    .legend(move |(x, y)| {
+                        EmptyElement::at((x, y))
+                            + PathElement::new([(0, 0), (18, 0)], legend_color.stroke_width(2))
+                            + shape.marker_at((9, 0), legend_color)
                     });
             }
             Mark::LinePoints => {
@@ -383,6 +409,57 @@ impl PointShape {
     fn of(index: usize) -> Self {
         [Self::Circle, Self::Triangle, Self::Square, Self::Diamond][index % 4]
     }
+
+    /// The marker centred on its anchor, filled with `c`.
+    fn marker(self, c: RGBColor) -> Polygon<(i32, i32)> {
+        self.marker_at((0, 0), c)
+    }
+
+    /// The marker centred at `at` (pixels from its anchor), as one
+    /// polygon (the circle an octagon) so every shape has one type.
+    fn marker_at(self, at: (i32, i32), c: RGBColor) -> Polygon<(i32, i32)> {
+        let corners: &[(i32, i32)] = match self {
+            Self::Circle => &[
+                (2, -4),
+                (4, -2),
+                (4, 2),
+                (2, 4),
+                (-2, 4),
+                (-4, 2),
+                (-4, -2),
+                (-2, -4),
+            ],
+            Self::Triangle => &[(0, -5), (5, 4), (-5, 4)],
+            Self::Square => &[(-3, -3), (3, -3), (3, 3), (-3, 3)],
+            Self::Diamond => &[(0, -5), (5, 0), (0, 5), (-5, 0)],
+        };
+        let points = corners
+            .iter()
+            .map(|&(x, y)| (at.0 + x, at.1 + y))
+            .collect::<Vec<_>>();
+        Polygon::new(points, c.filled())
+    }
+}
+
+/// Markers on a dense curve drawn as [`Mark::Line`].
+const SPARSE_MARKERS: usize = 12;
+
+/// Dash and gap lengths (px) of a dashed or dotted mark.
+fn dash_pattern(mark: Mark) -> (u32, u32) {
+    if mark == Mark::Dotted {
+        (2, 3)
+    } else {
+        (6, 4)
+    }
+}
+
+/// A legend's dashed line, 18 px long from its anchor, one path per dash.
+fn legend_dashes(
+    c: RGBColor,
+    dash: u32,
+    gap: u32,
+) -> DashedPathElement<std::array::IntoIter<(i32, i32), 2>, u32> {
+    DashedPathElement::new([(0, 0), (18, 0)], dash, gap, c.stroke_width(2))
 }
 
 /// One panel of a multi-panel figure: its own title and series.
@@ -527,8 +604,13 @@ where
         let y = 60 + 22 * k as i32;
         let c = color(s.color);
         match s.mark {
-            Mark::Line | Mark::ThinLine => {
-                panel.draw(&PathElement::new([(8, y), (26, y)], c.stroke_width(2)))?
+            Mark::ThinLine | Mark::Dotted => {
+                let (dash, gap) = dash_pattern(s.mark);
+                panel.draw(&(EmptyElement::at((8, y)) + legend_dashes(c, dash, gap)))?
+            }
+            Mark::Line => {
+                panel.draw(&PathElement::new([(4, y), (30, y)], c.stroke_width(2)))?;
+                panel.draw(&(EmptyElement::at((17, y)) + PointShape::of(s.color).marker(c)))?
             }
             Mark::LinePoints => {
                 panel.draw(&PathElement::new([(4, y), (30, y)], c.stroke_width(2)))?;

@@ -62,6 +62,7 @@ fn other(subcommand: &str) -> &'static [&'static str] {
             "--html",
         ],
         "failures" => &["[EXPERIMENT]", "--out"],
+        "chart" => &["--out", "--scenario"],
         _ => &["--out"],
     }
 }
@@ -134,6 +135,24 @@ fn other_options_refuse_unknown_choices_and_unwritable_outputs() {
         );
     }
     assert_refused(exe(), &["run", "no-such-scenario"], "no-such-scenario");
+    // A scenario without a chart, and one that is not a scenario.
+    assert_refused(
+        exe(),
+        &[
+            "chart",
+            "--replot",
+            "-o",
+            out,
+            "--scenario",
+            "quadruped-trot",
+        ],
+        "quadruped-trot has no chart",
+    );
+    assert_refused(
+        exe(),
+        &["chart", "-o", out, "--scenario", "nonsense"],
+        "--scenario",
+    );
     assert_refused(
         exe(),
         &["failures", "no-such-experiment"],

@@ -82,6 +82,7 @@ fn main() -> ! {
         if tick % 1000 == 0 {
             defmt::println!("t = {} ms: q = {}, tau = {}", tick, report.q, report.tau);
         }
+        rodyn_firmware::pose_log::log_pose(tick, &plant.state.q);
         if let Err(e) = plant.advance(&signals, DT, SUBSTEPS) {
             defmt::error!("plant at tick {}: {}", tick, e);
             exit(CHECK_FAILED)

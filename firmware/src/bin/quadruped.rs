@@ -46,8 +46,10 @@ const MIN_TROT_HEIGHT: f32 = 0.09;
 const MIN_UPRIGHT_W: f32 = 0.996;
 
 /// Runs `steps` steps, logging every [`LOG_EVERY`]; exits on an error.
+/// `start_ms` is the run's time at the phase's start (for the pose log).
 fn simulate(
     phase: &str,
+    start_ms: u32,
     steps: u32,
     loads: &mut QuadrupedLoads<f32>,
     state: &mut QuadrupedState<f32>,
@@ -58,6 +60,9 @@ fn simulate(
         if let Err(e) = quadruped::step(&mut euler, Aba, &MODEL_F32, data, loads, state, DT) {
             defmt::error!("{=str} step {}: {}", phase, step, e);
             exit(CHECK_FAILED)
+        }
+        if step % (RATE_HZ / 1_000) == 0 {
+            rodyn_firmware::pose_log::log_pose(start_ms + step * 1_000 / RATE_HZ, &state.q);
         }
         if step % LOG_EVERY == 0 {
             let trunk = quadruped::trunk_position(&state.q);
@@ -86,8 +91,10 @@ fn main() -> ! {
         DT
     );
 
+    rodyn_firmware::pose_log::log_pose(0, &state.q);
     simulate(
         "stand",
+        0,
         STAND_SECONDS * RATE_HZ,
         &mut loads,
         &mut state,
@@ -113,6 +120,7 @@ fn main() -> ! {
     let start = quadruped::trunk_position(&state.q).x;
     simulate(
         "trot",
+        STAND_SECONDS * 1_000,
         TROT_SECONDS * RATE_HZ,
         &mut loads,
         &mut state,

@@ -2,15 +2,20 @@
 //!
 //! ```text
 //! cargo run -p rodyn-bench --release --bin crossover [-- --rounds N --ms M --out FILE]
+//! cargo run -p rodyn-bench --release --bin crossover -- --replot [--out FILE]
 //! ```
 //!
 //! Times both methods on the planar chains (planar algebra and their 3-D
 //! equivalents, `f64` and `f32`), prints a markdown table of the medians and
 //! the crossover per variant, and draws `docs/img/perf/crossover.svg`: the
 //! time of CRBA forward dynamics divided by that of ABA against the number
-//! of links. Below 1, CRBA is faster.
+//! of links. Below 1, CRBA is faster. The medians go to a CSV file beside
+//! the chart (`crossover.csv`); `--replot` draws the chart from that file
+//! without timing anything (timings are wall clock, so only the drawing can
+//! be regenerated).
 
 use clap::Parser;
+use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 use rodyn_bench::arguments::{milliseconds, Rounds};
 use rodyn_bench::cases::{Case, ModelCase};
@@ -55,9 +60,17 @@ struct Options {
     /// Milliseconds per measurement (at most 10000).
     #[arg(long, default_value = "10", value_parser = milliseconds, allow_hyphen_values = true)]
     ms: f64,
-    /// The chart (SVG).
+    /// The chart (SVG); the medians go beside it with the extension .csv.
     #[arg(long, default_value = "docs/img/perf/crossover.svg")]
     out: String,
+    /// Draw the chart from the CSV file beside --out instead of timing.
+    #[arg(long)]
+    replot: bool,
+}
+
+/// The CSV file beside the chart `out`.
+fn csv_path(out: &str) -> std::path::PathBuf {
+    std::path::Path::new(out).with_extension("csv")
 }
 
 /// The smallest chain length from which ABA stays faster than CRBA.
@@ -73,6 +86,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let opts = Options::parse();
     // The chart is written after minutes of timing: check its place first.
     writable_file(std::path::Path::new(&opts.out)).map_err(|e| format!("--out: {e}"))?;
+    if opts.replot {
+        let (lengths, ratios) = read_csv(&csv_path(&opts.out))?;
+        draw(&opts.out, &lengths, &ratios)?;
+        eprintln!("wrote {}", opts.out);
+        return Ok(());
+    }
     let mut chains = all_chains();
     let target_ns = opts.ms * 1.0e6;
     let methods = [Algorithm::Aba, Algorithm::CrbaForwardDynamics];
@@ -163,9 +182,82 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         }
     }
 
+    write_csv(&csv_path(&opts.out), &lengths, &ns, &ratios)?;
     draw(&opts.out, &lengths, &ratios)?;
-    eprintln!("wrote {}", opts.out);
+    eprintln!("wrote {} and its CSV", opts.out);
     Ok(())
+}
+
+/// `links,variant,aba_ns,crba_ns,ratio`, one line per chain and variant;
+/// a failed CRBA leaves its time and ratio empty.
+fn write_csv(
+    path: &std::path::Path,
+    lengths: &[usize],
+    ns: &[[Vec<f64>; 2]],
+    ratios: &[Vec<f64>],
+) -> std::io::Result<()> {
+    let mut csv = String::from("links,variant,aba_ns,crba_ns,ratio\n");
+    for (c, n) in lengths.iter().enumerate() {
+        for (v, name) in VARIANTS.iter().enumerate() {
+            let (aba, crba, ratio) = (ns[v][0][c], ns[v][1][c], ratios[v][c]);
+            if ratio.is_finite() {
+                csv.push_str(&format!("{n},{name},{aba:.0},{crba:.0},{ratio:.2}\n"));
+            } else {
+                csv.push_str(&format!("{n},{name},{aba:.0},,\n"));
+            }
+        }
+    }
+    std::fs::write(path, csv)
+}
+
+/// The chain lengths and, per variant in [`VARIANTS`] order, the ratios
+/// (NaN where CRBA failed) of a CSV file [`write_csv`] wrote. An error
+/// names the file, the line and what is wrong.
+fn read_csv(path: &std::path::Path) -> Result<(Vec<usize>, Vec<Vec<f64>>), String> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+    let mut lengths: Vec<usize> = Vec::new();
+    let mut ratios = vec![Vec::new(); VARIANTS.len()];
+    for (k, line) in text.lines().enumerate().skip(1) {
+        let at = || format!("{}:{}", path.display(), k + 1);
+        let fields: Vec<&str> = line.split(',').collect();
+        let [links, variant, _, _, ratio] = fields[..] else {
+            return Err(format!(
+                "{}: expected 5 fields, found {}",
+                at(),
+                fields.len()
+            ));
+        };
+        let links: usize = links
+            .parse()
+            .map_err(|_| format!("{}: links `{links}` is not a count", at()))?;
+        let v = VARIANTS
+            .iter()
+            .position(|&name| name == variant)
+            .ok_or_else(|| format!("{}: unknown variant `{variant}`", at()))?;
+        let ratio = match ratio {
+            "" => f64::NAN,
+            r => r
+                .parse::<f64>()
+                .ok()
+                .filter(|r| r.is_finite() && *r > 0.0)
+                .ok_or_else(|| format!("{}: ratio `{r}` is not a positive number", at()))?,
+        };
+        if lengths.last() != Some(&links) {
+            lengths.push(links);
+        }
+        if ratios[v].len() + 1 != lengths.len() {
+            return Err(format!("{}: variant `{variant}` out of order", at()));
+        }
+        ratios[v].push(ratio);
+    }
+    if lengths.is_empty() || ratios.iter().any(|r| r.len() != lengths.len()) {
+        return Err(format!(
+            "{}: every variant needs one line per chain length",
+            path.display()
+        ));
+    }
+    Ok((lengths, ratios))
 }
 
 fn draw(
@@ -192,28 +284,49 @@ fn draw(
         )?;
     chart
         .configure_mesh()
-        .x_desc("links (degrees of freedom)")
-        .y_desc("CRBA / ABA (below 1: CRBA faster)")
+        .x_desc("links (= degrees of freedom)")
+        .y_desc("CRBA time / ABA time (ratio; below 1: CRBA faster)")
         .draw()?;
     chart.draw_series(LineSeries::new(
         [(1.0, 1.0), (max_n, 1.0)],
         BLACK.stroke_width(1),
     ))?;
-    let colours = [RED, BLUE, GREEN, MAGENTA];
-    for ((name, ratio), colour) in VARIANTS.iter().zip(ratios).zip(colours) {
+    // Colour and marker per variant, and the line dashed for the planar
+    // algebra, so that the curves part without their colours.
+    let colours = [
+        RGBColor(214, 39, 40),
+        RGBColor(31, 119, 180),
+        RGBColor(44, 160, 44),
+        RGBColor(148, 103, 189),
+    ];
+    for (v, ((name, ratio), colour)) in VARIANTS.iter().zip(ratios).zip(colours).enumerate() {
         let points: Vec<(f64, f64)> = lengths
             .iter()
             .map(|&n| n as f64)
             .zip(ratio.iter().copied())
             .filter(|(_, r)| r.is_finite())
             .collect();
+        let planar = name.starts_with("planar");
+        let style = colour.stroke_width(2);
+        if planar {
+            chart.draw_series(DashedLineSeries::new(points.clone(), 7, 4, style))?;
+        } else {
+            chart.draw_series(LineSeries::new(points.clone(), style))?;
+        }
         chart
-            .draw_series(LineSeries::new(points.clone(), colour.stroke_width(2)))?
+            .draw_series(
+                points
+                    .iter()
+                    .map(|&p| EmptyElement::at(p) + marker(v, colour, (0, 0))),
+            )?
             .label(*name)
             .legend(move |(x, y)| {
-                PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2))
+                // One dash as long as the sample for a solid line.
+                let (dash, gap) = if planar { (7, 4) } else { (22, 4) };
+                EmptyElement::at((x, y))
+                    + DashedPathElement::new([(0, 0), (22, 0)], dash, gap, colour.stroke_width(2))
+                    + marker(v, colour, (11, 0))
             });
-        chart.draw_series(points.iter().map(|&p| Circle::new(p, 3, colour.filled())))?;
     }
     chart
         .configure_series_labels()
@@ -223,4 +336,31 @@ fn draw(
         .draw()?;
     root.present()?;
     Ok(())
+}
+
+/// Variant `v`'s marker around its anchor: circle, triangle, square,
+/// diamond (the circle an octagon, so that every marker is one polygon).
+fn marker(v: usize, colour: RGBColor, at: (i32, i32)) -> Polygon<(i32, i32)> {
+    const SHAPES: [&[(i32, i32)]; 4] = [
+        &[
+            (2, -4),
+            (4, -2),
+            (4, 2),
+            (2, 4),
+            (-2, 4),
+            (-4, 2),
+            (-4, -2),
+            (-2, -4),
+        ],
+        &[(0, -5), (5, 4), (-5, 4)],
+        &[(-4, -4), (4, -4), (4, 4), (-4, 4)],
+        &[(0, -5), (5, 0), (0, 5), (-5, 0)],
+    ];
+    let corners = SHAPES[v % SHAPES.len()].iter();
+    Polygon::new(
+        corners
+            .map(|&(x, y)| (at.0 + x, at.1 + y))
+            .collect::<Vec<_>>(),
+        colour.filled(),
+    )
 }
