@@ -1,9 +1,11 @@
 //! Puts the machine's memory layout where the linker finds it as
 //! `memory.x`, and relinks when it changes.
 //!
-//! `memory.x` is the layout of mps2-an386 (Cortex-M4F), which the Cortex-M3
-//! of mps2-an385 and the Cortex-M7 of mps2-an500 share; the Cortex-M33 of
-//! mps2-an505 (thumbv8m.main) has its own in `memory/`, and a slower
+//! The layouts live in `memory/`, none in the crate's root: cortex-m-rt's
+//! `INCLUDE memory.x` would find one there (the linker's working directory)
+//! before the copy in `OUT_DIR`. `mps2-an386.x` (Cortex-M4F) is shared by
+//! the Cortex-M3 of mps2-an385 and the Cortex-M7 of mps2-an500; the
+//! Cortex-M33 of mps2-an505 (thumbv8m.main) has its own, and a slower
 //! clock, which the cfg `mps2_an505` tells the instruction counter.
 
 use std::{env, fs, path::PathBuf};
@@ -19,7 +21,7 @@ fn main() {
     let source = if is_an505(&target) {
         "memory/mps2-an505.x"
     } else {
-        "memory.x"
+        "memory/mps2-an386.x"
     };
     // The machine's clock differs too (`measure::instructions`).
     println!("cargo::rustc-check-cfg=cfg(mps2_an505)");

@@ -38,19 +38,7 @@ pub struct Core {
 }
 
 /// The cores beside the Cortex-M4F, in the tables' order after it.
-///
-/// The Cortex-M33 of mps2-an505 is not among them yet: its image must be
-/// linked at the secure aliases (`firmware/memory/mps2-an505.x`, chosen by
-/// `firmware/build.rs`), but cortex-m-rt's `INCLUDE memory.x` finds
-/// `firmware/memory.x` in the linker's working directory before the copy
-/// in `OUT_DIR`, so the image is linked at 0 and locks up at reset. Moving
-/// the Cortex-M4F's layout out of the crate's root (into `memory/`) fixes
-/// that, and rebuilds every Cortex-M4F image; the entry to add is
-/// `Core { id: "m33", title: "Cortex-M33, f32 (mps2-an505)", target:
-/// "thumbv8m.main-none-eabihf", rustflags: &["-C", "target-cpu=cortex-m33"],
-/// features: &[], machine: ("mps2-an505", "cortex-m33"), probes:
-/// &costs::PROBES }`.
-pub const CORES: [Core; 3] = [
+pub const CORES: [Core; 4] = [
     Core {
         id: "m3",
         title: "Cortex-M3, f32 soft-float (mps2-an385)",
@@ -77,6 +65,15 @@ pub const CORES: [Core; 3] = [
         features: &["f64"],
         machine: ("mps2-an500", "cortex-m7"),
         probes: &["cost_probe"],
+    },
+    Core {
+        id: "m33",
+        title: "Cortex-M33, f32 (mps2-an505)",
+        target: "thumbv8m.main-none-eabihf",
+        rustflags: &["-C", "target-cpu=cortex-m33"],
+        features: &[],
+        machine: ("mps2-an505", "cortex-m33"),
+        probes: &costs::PROBES,
     },
 ];
 
