@@ -16,23 +16,34 @@
 //!
 //! A geometry is split in two: [`Geometry`], the algebra every algorithm
 //! reads (the types above, casts, validators, composing a body's pose),
-//! and the hooks of the one algorithm that needs more,
-//! [`CrbaSpace`](crate::algorithm::crba::CrbaSpace), kept with CRBA.
-//! [`Space`] is both: forward dynamics puts ABA and CRBA behind one
-//! interface, so generic code that can reach forward dynamics needs
-//! CRBA's hooks, and a geometry provides both to run every algorithm.
+//! and the hooks of the one algorithm that needs more, [`CrbaSpace`]
+//! (`crba.rs`, with the [`TurnedFrame`](crate::algorithm::crba::TurnedFrame)s
+//! it takes; implemented beside CRBA). [`Space`] is both: forward dynamics
+//! puts ABA and CRBA behind one interface, so generic code that can reach
+//! forward dynamics needs CRBA's hooks, and a geometry provides both to
+//! run every algorithm.
+//!
+//! This module stands below the joints and the algorithms and imports
+//! nothing from them: the interface a geometry names its joints by,
+//! [`JointModel`], is defined here (`joint_model.rs`) and the joints
+//! implement it; 3-D space's [`Geometry`] impl, which names the 3-D
+//! joints, stands with them (`joint/spatial_geometry.rs`).
 //!
 //! [`Spatial`]: crate::spatial::Spatial
 //! [`Planar`]: crate::planar::Planar
 
+pub(crate) mod crba;
+pub(crate) mod joint_model;
 mod planar;
 mod spatial;
+pub(crate) mod turned_frame;
 
 use crate::error::ModelProblem;
-use crate::joint::JointModel;
 use crate::Scalar;
 use core::fmt::Debug;
 use core::ops::{Add, AddAssign, Mul, Neg, Sub, SubAssign};
+use crba::CrbaSpace;
+use joint_model::JointModel;
 
 /// Arithmetic shared by motion and force vectors.
 pub trait VectorOps<S: Scalar>:
@@ -285,8 +296,8 @@ pub trait Geometry: Copy + Debug + PartialEq + 'static {
 
 /// A geometry every algorithm of the crate runs in: its algebra
 /// ([`Geometry`]) and CRBA's hooks
-/// ([`CrbaSpace`](crate::algorithm::crba::CrbaSpace)); implemented for
+/// ([`CrbaSpace`]); implemented for
 /// every type that has both.
-pub trait Space: Geometry + crate::algorithm::crba::CrbaSpace {}
+pub trait Space: Geometry + CrbaSpace {}
 
-impl<G: Geometry + crate::algorithm::crba::CrbaSpace> Space for G {}
+impl<G: Geometry + CrbaSpace> Space for G {}

@@ -5,8 +5,8 @@
 //! | [`textbook`]    | the book's algorithm as written, the oracle the tests hold the rest to |
 //! | `mod.rs`        | the public entries, the choice of pass ([`CrbaPass`]), the steps   |
 //! | `plan.rs`       | [`CrbaPlan`]: the turned frames, computed once per model          |
-//! | `turned_frame.rs` | [`TurnedFrame`]: a body's frame turned by the quarter turns above it |
-//! | `space.rs`      | [`CrbaSpace`]: the hooks CRBA needs from a geometry               |
+//! | `src/space/turned_frame.rs` | [`TurnedFrame`]: a body's frame turned by the quarter turns above it |
+//! | `src/space/crba.rs` | [`CrbaSpace`]: the hooks CRBA needs from a geometry (beside [`Space`], which requires them) |
 //! | `spatial.rs`, `planar.rs` | [`CrbaSpace`] for 3-D space and the plane               |
 //! | `step.rs`       | [`TransformStep`]: a joint transform prepared to move many columns |
 //! | `fused_body.rs` | one body's whole step fused: a joint about its own axis, a free-flying root |
@@ -48,12 +48,10 @@ mod local;
 mod plan;
 mod planar;
 mod root_frame;
-mod space;
 mod spatial;
 mod step;
 pub mod textbook;
 mod triangle;
-mod turned_frame;
 
 use crate::algorithm::common::{
     backward_force_pass_with, body_transform_with, check_state, forward_body, joint_configuration,
@@ -62,6 +60,8 @@ use crate::algorithm::common::{
 use crate::data::Data;
 use crate::error::{Quantity, Result};
 use crate::model::{check_result, Model};
+pub use crate::space::crba::CrbaSpace;
+pub use crate::space::turned_frame::{TurnedAxis, TurnedFrame};
 use crate::space::{Space, VectorOps};
 use crate::topology::Topology;
 use crate::Scalar;
@@ -69,10 +69,8 @@ use local::backward_body;
 pub use plan::CrbaPlan;
 use plan::{BodyFrames, Unturned};
 use root_frame::about_root;
-pub use space::CrbaSpace;
 pub use step::TransformStep;
 use triangle::{clear_lower, mirror_lower};
-pub use turned_frame::{TurnedAxis, TurnedFrame};
 
 // Whether the local backward pass writes `M`'s zeros and, for `crba`, its
 // entries above the diagonal itself (the root-frame pass, for `crba`, the

@@ -1,8 +1,7 @@
 //! CRBA's hooks in the plane: a plane transform is its own prepared step,
 //! and a plane has no frames to turn.
 
-use super::space::CrbaSpace;
-use super::turned_frame::TurnedFrame;
+use super::{CrbaSpace, TurnedFrame};
 use crate::planar::{Planar, PlanarForce, PlanarInertia, PlanarJoint, PlanarTransform};
 use crate::space::RigidTransform;
 use crate::Scalar;

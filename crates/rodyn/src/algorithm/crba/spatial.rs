@@ -3,9 +3,8 @@
 //! (`fused_body.rs`), and the turned frames.
 
 use super::fused_body;
-use super::space::CrbaSpace;
 use super::step::TransformStep;
-use super::turned_frame::{TurnedAxis, TurnedFrame};
+use super::{CrbaSpace, TurnedAxis, TurnedFrame};
 use crate::joint::Joint;
 use crate::spatial::{AxisPermutation, Force, Inertia, Motion, Spatial, Sym3, Transform, Vec3};
 use crate::Scalar;

@@ -1,16 +1,18 @@
 //! The hooks CRBA needs from a geometry beyond its algebra
 //! ([`Geometry`]): a joint transform prepared to act on many columns
 //! ([`CrbaSpace::Step`]), the fused steps of one body, and the turned
-//! frames ([`TurnedFrame`]). Implemented for [`Spatial`] (`spatial.rs`)
-//! and [`Planar`] (`planar.rs`) beside this file; the defaults ignore the
-//! turned frames, for geometries without quarter turns.
+//! frames ([`TurnedFrame`]). Implemented for [`Spatial`] and [`Planar`]
+//! beside CRBA (`algorithm/crba/spatial.rs`, `planar.rs`); the defaults
+//! ignore the turned frames, for geometries without quarter turns. The
+//! trait is defined here, below the algorithms, because [`Space`](super::Space)
+//! requires it; users name it `rodyn::algorithm::crba::CrbaSpace`.
 //!
 //! [`Spatial`]: crate::spatial::Spatial
 //! [`Planar`]: crate::planar::Planar
 
-use super::TurnedFrame;
-use crate::joint::JointModel;
-use crate::space::{Geometry, RigidTransform};
+use super::joint_model::JointModel;
+use super::turned_frame::TurnedFrame;
+use super::{Geometry, RigidTransform};
 use crate::spatial::AxisPermutation;
 use crate::Scalar;
 

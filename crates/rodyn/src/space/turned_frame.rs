@@ -15,6 +15,9 @@
 //! `Sⱼᵀ Fᵢ`, and both factors turn together), so CRBA only has to turn each
 //! body's inertia once (a reordering of its entries with sign flips, exact)
 //! and read each joint's subspace column on its turned axis.
+//!
+//! Defined with the geometry traits, whose CRBA hooks take it; users name
+//! it `rodyn::algorithm::crba::TurnedFrame`.
 
 use crate::spatial::{AxisPermutation, Mat3};
 use crate::Scalar;
