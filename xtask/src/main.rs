@@ -5,13 +5,14 @@
 //! |--------------------------|-------------------------------------------------------------------|
 //! | `run [example]`          | builds the firmware, runs `example` (default: the arm controller) in QEMU, prints the decoded defmt log |
 //! | `test`                   | host tests (the core's and `rodyn-host-tests`' also in the in-order tuning profile), the no_std core for thumbv7em, every firmware example in QEMU against its expected output, sizes, panic sites, stack bounds, the viewer's pages in Chromium, the firmware template run from a copy outside the repository, lint |
-//! | `lint`                   | rustfmt, clippy and rustdoc, warnings as errors, host and firmware; the core without float features stops at one error; `cargo package` of every crate, the published libraries built from their packages; their public API against `xtask/public-api/`; the core's unit tests under Miri (nightly), which stops at undefined behaviour |
+//! | `lint`                   | the core's layers (`layers`); rustfmt, clippy and rustdoc, warnings as errors, host and firmware; the core without float features stops at one error; `cargo package` of every crate, the published libraries built from their packages; their public API against `xtask/public-api/`; the core's unit tests under Miri (nightly), which stops at undefined behaviour |
 //! | `viewer`                 | the viewer's pages in headless Chromium (also a step of `test`): every model's page draws without an error, the Panda against its reference image, the trot moves when scrubbed |
 //! | `docs [--check]`         | regenerates every figure and table of the docs that a command draws the same on every run (`--check`: fails naming each committed file that differs) |
 //! | `costs`                  | runs the cost probe, measures sizes and bounds the stack, rewrites the tables in `docs/sections/firmware.md` and `firmware/expected/sizes.txt`; builds and runs the probes on QEMU's Cortex-M3, M7 (f32 and f64) and M33 for `docs/sections/cortex_m_family.md` |
 //! | `family`                 | builds the cost probes for QEMU's Cortex-M3, M7 (f32 and f64) and M33 and runs them (the step of `test`; `costs` writes their tables) |
 //! | `stack [image] [words]`  | worst-case stack per image and per cost-table row from a static call graph, checked against the painted figures (`--check-frames`: the frame reading against LLVM's `-Z emit-stack-sizes`) |
 //! | `panic-sites [image]`    | the panic call sites of one image (default: all) by source, function and line |
+//! | `layers`                 | the core's files import no file that imports them back, and each module only from its layer and those below (`xtask/src/layers.rs`) |
 //! | `public-api [--bless]`   | the public items of `rodyn` and `rodyn-model` (rustdoc JSON, nightly) against `xtask/public-api/*.txt`: a removed item fails; `--bless` rewrites the lists |
 //! | `python-env`             | makes or updates the test command's Python venv (Pinocchio 4.1, example-robot-data, numpy, pytest, matplotlib, maturin) under `target/python-venv` and prints its paths |
 //! | `bless`                  | rewrites `firmware/expected/*.log` from fresh runs, keeping `*` wildcards |
@@ -33,6 +34,7 @@ mod family;
 mod firmware;
 mod fp_ops;
 mod host_profile;
+mod layers;
 mod miri;
 mod panic_sites;
 mod profile;
@@ -50,7 +52,7 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 const USAGE: &str =
-    "usage: cargo xtask <run [example] [--html page.html] | test | lint | docs [--check] | costs | family | stack [image [words]] | stack --frames <image> | stack --check-frames | panic-sites [image] | viewer | python-env | public-api [--bless] | bless | profile [model] [algorithm] | host-profile <algorithm> <model> [--pinocchio]>";
+    "usage: cargo xtask <run [example] [--html page.html] | test | lint | layers | docs [--check] | costs | family | stack [image [words]] | stack --frames <image> | stack --check-frames | panic-sites [image] | viewer | python-env | public-api [--bless] | bless | profile [model] [algorithm] | host-profile <algorithm> <model> [--pinocchio]>";
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -68,6 +70,7 @@ fn main() -> ExitCode {
             println!("example-robot-data robots: {}", venv.robots()?.display());
             Ok(())
         }),
+        Some("layers") => layers::run(),
         Some("public-api") => public_api::run(args.get(1).map(String::as_str) == Some("--bless")),
         Some("stack") => stack_bound::run(&args[1..]),
         Some("panic-sites") => panic_sites::run(&args[1..]),
@@ -254,6 +257,7 @@ fn test_in_order_profile() -> Result<()> {
 fn lint() -> Result<()> {
     let started = Instant::now();
     setup::ensure_ipopt()?;
+    layers::run()?;
     shell::cargo(&["fmt", "--all", "--check"])?;
     shell::cargo_in(firmware::dir(), &["fmt", "--check"])?;
     shell::cargo(&[
