@@ -11,7 +11,8 @@
 //! test may check a layer with what is built on it.
 //!
 //! Two things fail: an import from a module of a higher layer than the
-//! importing file's ([`LAYERS`]), and a cycle of files that import each
+//! importing file's ([`LAYERS`]; a path through a higher module's
+//! re-export counts as an import from that module), and a cycle of files that import each
 //! other through more than one top-level module (reported as the files of
 //! the strongly connected component with the imports that close it; the
 //! layers alone would let two modules of one layer import each other). A
@@ -34,8 +35,8 @@ use crate::shell;
 pub const LAYERS: &[&[&str]] = &[
     // Scalars and the build's tuning profile.
     &["scalar", "tuning"],
-    // The algebra: 3-D and planar value types, then the traits that make
-    // them a geometry, with the errors a model's parameters can have.
+    // The algebra: 3-D and planar value types; the crate's errors, which
+    // name only the algebra's; the traits that make the types a geometry.
     &["spatial"],
     &["planar"],
     &["error"],
