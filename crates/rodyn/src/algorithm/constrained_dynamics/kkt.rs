@@ -11,7 +11,8 @@ use super::{
 use crate::algorithm::crba::{crba, crba_lower};
 use crate::algorithm::dense::cholesky_solve;
 use crate::algorithm::forward_dynamics::bias_and_mass;
-use crate::algorithm::frame_chain::{chain_placement, union, FrameChain};
+use crate::algorithm::frame_chain::union;
+use crate::algorithm::frames::frame_placement;
 use crate::algorithm::jacobian::joint_jacobians_from_transforms;
 use crate::algorithm::ltdl::{
     ltdl_factor, solve_lower, solve_transposed, solve_transposed_on_path,
@@ -190,8 +191,8 @@ pub(crate) fn form_delassus<
     }
     let mut row = 0;
     for contact in contacts {
-        let chain = FrameChain::try_new(model, contact.held_frame())?;
-        let o_m_f = chain_placement(data, &chain)?;
+        let frame = contact.held_frame();
+        let o_m_f = frame_placement(data, frame)?;
         let Some(jc_rows) = cdata.jc.get_mut(row..row + contact.rows()) else {
             break;
         };
@@ -199,13 +200,20 @@ pub(crate) fn form_delassus<
             *jc_row = [S::ZERO; NV];
         }
         let world = &cdata.jacobians.j;
-        union::for_each_chain_column(model, &chain, &o_m_f, contact.reference(), world, |k, c| {
-            let (lin, ang) = (c.lin.to_array(), c.ang.to_array());
-            for (r, jc_row) in jc_rows.iter_mut().enumerate() {
-                // A contact has at most six rows: the clamp changes nothing.
-                jc_row[k] = if r < 3 { lin[r] } else { ang[(r - 3).min(2)] };
-            }
-        });
+        union::for_each_path_column(
+            model,
+            frame.body,
+            &o_m_f,
+            contact.reference(),
+            world,
+            |k, c| {
+                let (lin, ang) = (c.lin.to_array(), c.ang.to_array());
+                for (r, jc_row) in jc_rows.iter_mut().enumerate() {
+                    // A contact has at most six rows: the clamp changes nothing.
+                    jc_row[k] = if r < 3 { lin[r] } else { ang[(r - 3).min(2)] };
+                }
+            },
+        );
         row += contact.rows();
     }
     // G = J_c L⁻¹ D⁻¹ L⁻ᵀ J_cᵀ = Yᵀ D⁻¹ Y with Y = L⁻ᵀ J_cᵀ: one sweep per

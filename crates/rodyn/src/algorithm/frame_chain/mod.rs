@@ -217,22 +217,6 @@ pub fn chain_jacobian<
     Ok(o_m_f)
 }
 
-/// The chain's frame's placement `ᵒMf` from its body's pose in
-/// `data.o_m_i`.
-///
-/// # Errors
-/// As [`frame_placement`](super::frames::frame_placement).
-#[inline]
-pub(crate) fn chain_placement<S: Scalar, const NB: usize, const NV: usize, G: Space>(
-    data: &Data<S, NB, NV, G>,
-    chain: &FrameChain<S, NB, G>,
-) -> Result<G::Transform<S>> {
-    checked_placement(
-        data.o_m_i[chain.path.body()].compose(&chain.frame.placement),
-        &chain.frame,
-    )
-}
-
 /// `ᵒMf` when it is finite. One test of the pose covers a NaN or infinite
 /// frame placement (a [`Frame`] is plain data, checked by nothing when it
 /// was made), as [`frame_placement`](super::frames::frame_placement) does.

@@ -99,12 +99,13 @@ fn write_columns<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G
     }
 }
 
-/// `f(k, column)` for each velocity coordinate k on `chain`'s path, with
-/// its world column `world[k]` moved into `reference` at the frame whose
-/// pose is `o_m_f` (the coordinates off the path are not visited: their
-/// columns are zero).
+/// `f(k, column)` for each velocity coordinate k of the support path of
+/// `body` (the body and its ancestors, walked up from the body: no path
+/// to store), with its world column `world[k]` moved into `reference` at
+/// the frame whose pose is `o_m_f`. The coordinates off the path are not
+/// visited: their columns are zero. A body past the model's ends the walk.
 #[inline(always)]
-pub(crate) fn for_each_chain_column<
+pub(crate) fn for_each_path_column<
     S: Scalar,
     const NB: usize,
     const NQ: usize,
@@ -112,7 +113,7 @@ pub(crate) fn for_each_chain_column<
     G: FrameSpace,
 >(
     model: &Model<S, NB, NQ, NV, G>,
-    chain: &FrameChain<S, NB, G>,
+    body: usize,
     o_m_f: &G::Transform<S>,
     reference: ReferenceFrame,
     world: &[G::Motion<S>; NV],
@@ -120,7 +121,8 @@ pub(crate) fn for_each_chain_column<
 ) {
     let t = model.topology();
     let p = o_m_f.translation();
-    for i in chain.path.iter() {
+    let mut b = Some(body).filter(|&i| i < NB);
+    while let Some(i) = b {
         for k in t.velocity_coordinates(i) {
             let c = &world[k];
             let column = match reference {
@@ -130,5 +132,6 @@ pub(crate) fn for_each_chain_column<
             };
             f(k, &column);
         }
+        b = t.parent(i);
     }
 }
