@@ -263,7 +263,7 @@ pub fn contact_inverse_dynamics<
         q,
         contacts,
         constraint.damping,
-        Poses::FromPoses,
+        Poses::FromKinematics,
     )?;
     let cdata = &mut iddata.constraint;
     let rows = cdata.rows.min(NC);

@@ -151,7 +151,7 @@ pub(crate) fn form_delassus<
             crba(model, data, q)?;
         }
         // From the known joint transforms, as CRBA forward dynamics does.
-        Poses::FromPoses => crba_lower(model, data, None),
+        Poses::FromKinematics => crba_lower(model, data, None),
         Poses::FromJointTransformsAndMass => {}
     }
     if let Some(added) = added_diagonal {
@@ -185,7 +185,7 @@ pub(crate) fn form_delassus<
         Poses::FromJointTransformsAndMass => {
             joint_jacobians_from_transforms(model, data, &mut cdata.jacobians, &on_paths);
         }
-        Poses::FromPoses => {
+        Poses::FromKinematics => {
             union::union_world_columns_from_poses(model, data, &on_paths, &mut cdata.jacobians.j);
         }
     }
@@ -267,7 +267,7 @@ pub(crate) enum Poses {
     /// The joint transforms and the poses at `q` (left by a
     /// forward-kinematics pass): CRBA runs on the transforms, and the
     /// contacts' columns are read off the poses.
-    FromPoses,
+    FromKinematics,
 }
 
 /// `cdata.ddq = base + M⁻¹ J_cᵀ λ` after the KKT method's
