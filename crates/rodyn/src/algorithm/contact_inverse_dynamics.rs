@@ -253,8 +253,8 @@ pub fn contact_inverse_dynamics<
     check_finite(ddq_wanted, Quantity::Acceleration)?;
 
     // 1. q̈ = q̈* + M⁻¹ J_cᵀ G⁻¹ (a_c* − J̇_c q̇ − J_c q̈*). The kinematics at
-    // q̈ = 0 first (the drift): the Jacobians then compose their poses from
-    // its joint transforms, which CRBA leaves alone.
+    // q̈ = 0 first (the drift): the Jacobians then read their columns off
+    // its poses, and CRBA runs on its joint transforms.
     forward_kinematics_acceleration(model, data, q, v, &[S::ZERO; NV])?;
     prepare(
         model,
@@ -263,7 +263,7 @@ pub fn contact_inverse_dynamics<
         q,
         contacts,
         constraint.damping,
-        Poses::FromJointTransforms,
+        Poses::FromKinematics,
     )?;
     let cdata = &mut iddata.constraint;
     let rows = cdata.rows.min(NC);

@@ -11,9 +11,9 @@ use super::{
 use crate::algorithm::crba::{crba, crba_lower};
 use crate::algorithm::dense::cholesky_solve;
 use crate::algorithm::forward_dynamics::bias_and_mass;
-use crate::algorithm::jacobian::{
-    frame_jacobian, joint_jacobians, joint_jacobians_from_transforms,
-};
+use crate::algorithm::frame_chain::union;
+use crate::algorithm::frames::frame_placement;
+use crate::algorithm::jacobian::joint_jacobians_from_transforms;
 use crate::algorithm::ltdl::{
     ltdl_factor, solve_lower, solve_transposed, solve_transposed_on_path,
 };
@@ -151,7 +151,7 @@ pub(crate) fn form_delassus<
             crba(model, data, q)?;
         }
         // From the known joint transforms, as CRBA forward dynamics does.
-        Poses::FromJointTransforms => crba_lower(model, data, None),
+        Poses::FromKinematics => crba_lower(model, data, None),
         Poses::FromJointTransformsAndMass => {}
     }
     if let Some(added) = added_diagonal {
@@ -160,51 +160,60 @@ pub(crate) fn form_delassus<
         }
     }
     ltdl_factor(model, data)?;
-    // J_c from the joint Jacobians, whose pass is cheaper per column than
-    // forming each contact's columns along its path from the joints'
-    // subspaces (performance_notebook.md, "Constrained dynamics"). After
-    // RNEA the joints' transforms are known: the poses need only be
-    // composed.
+    // J_c along the contacts' support paths only (`frame_chain`): the
+    // world columns of the paths' union once, each from its body's pose
+    // (cheaper per column than forming each contact's columns from the
+    // joints' subspaces, performance_notebook.md, "Constrained dynamics"),
+    // then each contact's columns moved into its reference frame straight
+    // into its rows.
+    let mut on_paths = [false; NB];
+    for contact in contacts {
+        let mut body = Some(contact.held_frame().body);
+        // The contact's body is the caller's (`get`: past the end ends the
+        // walk); the parents are in range.
+        while let Some(i) = body.filter(|&i| on_paths.get(i) == Some(&false)) {
+            on_paths[i] = true;
+            body = model.parent(i);
+        }
+    }
     match poses {
-        Poses::Compute => joint_jacobians(model, data, &mut cdata.jacobians, q)?,
-        Poses::FromJointTransforms | Poses::FromJointTransformsAndMass => {
-            // Only the contacts' paths have columns J_c reads.
-            let mut on_path = [false; NB];
-            for contact in contacts {
-                let mut body = Some(contact.held_frame().body);
-                // The contact's body is the caller's (`get`: past the end
-                // ends the walk); the parents are in range.
-                while let Some(i) = body.filter(|&i| on_path.get(i) == Some(&false)) {
-                    on_path[i] = true;
-                    body = model.parent(i);
-                }
-            }
-            joint_jacobians_from_transforms(model, data, &mut cdata.jacobians, &on_path);
+        Poses::Compute => {
+            union::union_world_columns(model, data, q, &on_paths, &mut cdata.jacobians.j);
+        }
+        // After RNEA the joints' transforms are known: the poses need only
+        // be composed (all of them: the callers leave every pose valid).
+        Poses::FromJointTransformsAndMass => {
+            joint_jacobians_from_transforms(model, data, &mut cdata.jacobians, &on_paths);
+        }
+        Poses::FromKinematics => {
+            union::union_world_columns_from_poses(model, data, &on_paths, &mut cdata.jacobians.j);
         }
     }
     let mut row = 0;
     for contact in contacts {
-        frame_jacobian(
-            model,
-            data,
-            &cdata.jacobians,
-            contact.held_frame(),
-            contact.reference(),
-            &mut cdata.columns,
-        )?;
+        let frame = contact.held_frame();
+        let o_m_f = frame_placement(data, frame)?;
         let Some(jc_rows) = cdata.jc.get_mut(row..row + contact.rows()) else {
             break;
         };
-        for (r, jc_row) in jc_rows.iter_mut().enumerate() {
-            for (entry, column) in jc_row.iter_mut().zip(&cdata.columns) {
-                // A contact has at most six rows: the clamp changes nothing.
-                *entry = if r < 3 {
-                    column.lin.to_array()[r]
-                } else {
-                    column.ang.to_array()[(r - 3).min(2)]
-                };
-            }
+        for jc_row in jc_rows.iter_mut() {
+            *jc_row = [S::ZERO; NV];
         }
+        let world = &cdata.jacobians.j;
+        union::for_each_path_column(
+            model,
+            frame.body,
+            &o_m_f,
+            contact.reference(),
+            world,
+            |k, c| {
+                let (lin, ang) = (c.lin.to_array(), c.ang.to_array());
+                for (r, jc_row) in jc_rows.iter_mut().enumerate() {
+                    // A contact has at most six rows: the clamp changes nothing.
+                    jc_row[k] = if r < 3 { lin[r] } else { ang[(r - 3).min(2)] };
+                }
+            },
+        );
         row += contact.rows();
     }
     // G = J_c L⁻¹ D⁻¹ L⁻ᵀ J_cᵀ = Yᵀ D⁻¹ Y with Y = L⁻ᵀ J_cᵀ: one sweep per
@@ -249,15 +258,16 @@ pub(crate) fn form_delassus<
 /// What [`form_delassus`] finds in `data`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Poses {
-    /// Nothing at `q`: it runs CRBA and forward kinematics.
+    /// Nothing at `q`: it runs CRBA, and forms the poses of the contacts'
+    /// support paths only.
     Compute,
-    /// The joint transforms at `q` in `data.li_m_i` (left by RNEA or a
-    /// forward-kinematics pass): the poses are composed from them, and CRBA
-    /// runs on them.
-    FromJointTransforms,
     /// The joint transforms and `M`'s lower triangle at `q` (left by
     /// `bias_and_mass`): neither is formed again.
     FromJointTransformsAndMass,
+    /// The joint transforms and the poses at `q` (left by a
+    /// forward-kinematics pass): CRBA runs on the transforms, and the
+    /// contacts' columns are read off the poses.
+    FromKinematics,
 }
 
 /// `cdata.ddq = base + M⁻¹ J_cᵀ λ` after the KKT method's

@@ -36,7 +36,7 @@
 //!
 //! Cost of the KKT method: the bias forces and CRBA in one pass (as CRBA
 //! forward dynamics runs them), the factorisation, the joint Jacobians of
-//! the contacts' paths, a half sweep of `Lᵀ D L` along its contact's path per
+//! the contacts' paths (`frame_chain`), a half sweep of `Lᵀ D L` along its contact's path per
 //! constrained row, one sweep for the response, and a dense `m × m` solve
 //! for `m` rows; of the articulated-body method: one ABA, one kinematics
 //! pass, two sweeps per row and the same dense solve. `contact.rs` holds
@@ -55,8 +55,7 @@ use super::jacobian::JacobianData;
 use crate::data::Data;
 use crate::error::{Error, Quantity, Result, Setting};
 use crate::model::{check_finite, check_result, Model};
-use crate::space::VectorOps;
-use crate::spatial::{Motion, Spatial};
+use crate::spatial::Spatial;
 use crate::Scalar;
 
 /// Relative size (of the pivot's own diagonal entry of the Delassus
@@ -187,8 +186,8 @@ impl<S: Scalar> Default for ConstraintSettings<S> {
 /// firmware without contacts pays nothing for them.
 #[derive(Clone, Debug)]
 pub struct ConstraintData<S: Scalar, const NV: usize, const NC: usize> {
-    /// The joint Jacobians of the last call (after the KKT method's
-    /// forward dynamics, only the columns of the contacts' paths).
+    /// The joint Jacobians' world columns of the last call: only those of
+    /// the contacts' support paths (the others are stale).
     pub jacobians: JacobianData<S, NV, Spatial>,
     /// `J_c`, one row per constrained direction (the first [`rows`](Self::rows)).
     pub jc: [[S; NV]; NC],
@@ -205,7 +204,6 @@ pub struct ConstraintData<S: Scalar, const NV: usize, const NC: usize> {
     pub ddq: [S; NV],
     /// Rows in use by the contacts of the last call.
     pub rows: usize,
-    columns: [Motion<S>; NV],
 }
 
 impl<S: Scalar, const NV: usize, const NC: usize> ConstraintData<S, NV, NC> {
@@ -220,7 +218,6 @@ impl<S: Scalar, const NV: usize, const NC: usize> ConstraintData<S, NV, NC> {
             lambda: [S::ZERO; NC],
             ddq: [S::ZERO; NV],
             rows: 0,
-            columns: [Motion::ZERO; NV],
         }
     }
 }
@@ -365,10 +362,12 @@ pub fn constrained_forward_dynamics_with<
 /// with `e ≤ 1` never adds kinetic energy. Returns `(v⁺, Λ)`; `damping`
 /// regularises redundant contacts as in [`constrained_forward_dynamics`].
 ///
-/// Leaves valid in `data`: what [`crba`](crate::algorithm::crba::crba),
-/// [`ltdl_factor`](crate::algorithm::ltdl::ltdl_factor) and
-/// [`joint_jacobians`](crate::algorithm::jacobian::joint_jacobians) leave. In `cdata`: every field (`ddq` holds `v⁺`,
-/// `lambda` holds `Λ`).
+/// Leaves valid in `data`: what [`crba`](crate::algorithm::crba::crba)
+/// and [`ltdl_factor`](crate::algorithm::ltdl::ltdl_factor) leave, and the
+/// poses `o_m_i` of the bodies on the contacts' support paths (only those
+/// bodies' transforms are formed for the contacts' Jacobians). In `cdata`:
+/// every field (`ddq` holds `v⁺`, `lambda` holds `Λ`, `jacobians` the
+/// columns of the contacts' paths).
 ///
 /// # Errors
 /// As [`constrained_forward_dynamics`]; [`Error::InvalidSetting`] for a

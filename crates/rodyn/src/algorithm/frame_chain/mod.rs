@@ -82,6 +82,7 @@
 //! ```
 
 pub mod plain;
+pub(crate) mod union;
 
 use super::common::{joint_configuration, joint_rates, ANGLES_FIRST};
 use super::frames::{zero_motion, FrameSpace, ReferenceFrame};
@@ -362,33 +363,11 @@ pub fn chains_jacobians<
             <G::Transform<S> as RigidTransform<S>>::IDENTITY
         }));
     };
-    // The union of the paths, in body order (parents first).
-    let mut on_paths = [false; NB];
-    for chain in chains {
-        for i in chain.path.iter() {
-            on_paths[i] = true;
-        }
-    }
-    // Every world column of the union, once, into the last Jacobian (the
-    // coordinates of different bodies do not overlap).
+    // Every world column of the paths' union, once, into the last
+    // Jacobian (the coordinates of different bodies do not overlap).
+    let on_paths = union::bodies_on_paths(chains);
+    union::union_world_columns(model, data, q, &on_paths, last);
     let t = model.topology();
-    let sin_cos = super::common::JointSinCos::at(model, q);
-    for i in 0..NB {
-        if !on_paths[i] {
-            continue;
-        }
-        let li_m_i = super::common::body_transform_with(model, i, q, sin_cos.formed());
-        let o_m_i = match t.parent(i) {
-            Some(p) => G::then_joint(&data.o_m_i[p], &li_m_i, model.joint(i)),
-            None => li_m_i,
-        };
-        data.o_m_i[i] = o_m_i;
-        let joint = model.joint(i);
-        let (iv, nv) = t.velocity_range(i);
-        for (k, column) in last[iv..iv + nv].iter_mut().enumerate() {
-            *column = G::act_subspace_column(&o_m_i, joint, k);
-        }
-    }
     let placements: [G::Transform<S>; N] = core::array::from_fn(|f| {
         let chain = &chains[f];
         data.o_m_i[chain.path.body()].compose(&chain.frame.placement)
