@@ -20,7 +20,7 @@
 
 use crate::drive::geometry::PointGeometry;
 use crate::endpoint::Endpoint;
-use crate::error::{DriveProblem, Error, Result};
+use crate::error::{DriveProblem, Error, Quantity, Result};
 use crate::space::{RigidTransform, Space};
 use crate::{Data, Scalar};
 
@@ -77,7 +77,10 @@ impl<S: Scalar, G: PointGeometry, const K: usize> Path<S, G, K> {
     /// (or ABA, RNEA) leave them.
     ///
     /// # Errors
-    /// [`Error::InvalidDrive`] when an endpoint names a body out of range.
+    /// [`Error::InvalidDrive`] when an endpoint names a body out of range;
+    /// [`Error::NonFinite`] with [`Quantity::PathPoint`] naming a point
+    /// whose position is not finite, [`Error::NonFiniteResult`] with it
+    /// when the length or its rate overflows.
     pub fn kinematics<const NB: usize, const NV: usize>(
         &self,
         data: &Data<S, NB, NV, G>,
@@ -120,6 +123,11 @@ impl<S: Scalar, G: PointGeometry, const K: usize> Path<S, G, K> {
             unit_forces[k] = G::point_add(&unit_forces[k], &e);
             unit_forces[k + 1] = G::point_sub(&unit_forces[k + 1], &e);
         }
+        // Non-finite points make the length (and so the unit forces) so;
+        // one test of the sum covers both.
+        if !(length + lengthening_velocity).is_finite() {
+            return Err(self.non_finite());
+        }
         Ok(PathKinematics {
             length,
             lengthening_velocity,
@@ -134,7 +142,9 @@ impl<S: Scalar, G: PointGeometry, const K: usize> Path<S, G, K> {
     /// nothing.
     ///
     /// # Errors
-    /// [`Error::InvalidDrive`] when an endpoint names a body out of range.
+    /// [`Error::InvalidDrive`] when an endpoint names a body out of range;
+    /// [`Error::NonFinite`] with [`Quantity::ExternalForce`] naming the
+    /// first body on the path for a non-finite `tension`.
     pub fn add_tension<const NB: usize, const NV: usize>(
         &self,
         kinematics: &PathKinematics<S, G, K>,
@@ -143,6 +153,11 @@ impl<S: Scalar, G: PointGeometry, const K: usize> Path<S, G, K> {
         f_ext: &mut [G::Force<S>; NB],
     ) -> Result<()> {
         self.check(NB)?;
+        // The unit forces come from `kinematics`, checked there: a finite
+        // tension gives finite forces.
+        if !tension.is_finite() {
+            return Err(self.non_finite_tension());
+        }
         for (k, endpoint) in self.points.iter().enumerate() {
             if let Some(b) = endpoint.body {
                 let f = G::point_scale(&kinematics.unit_forces[k], tension);
@@ -155,6 +170,37 @@ impl<S: Scalar, G: PointGeometry, const K: usize> Path<S, G, K> {
             }
         }
         Ok(())
+    }
+
+    /// The error of a path whose length or rate came out non-finite: the
+    /// first point whose position is not finite, otherwise an overflow.
+    #[cold]
+    pub(crate) fn non_finite(&self) -> Error {
+        // `p − p` is zero exactly when every entry of `p` is finite.
+        let finite = |p: &G::Point<S>| {
+            let zero = G::point_sub(p, p);
+            G::point_dot(&zero, &zero) == S::ZERO
+        };
+        match self.points.iter().position(|p| !finite(&p.position)) {
+            Some(index) => Error::NonFinite {
+                quantity: Quantity::PathPoint,
+                index,
+            },
+            None => Error::NonFiniteResult {
+                quantity: Quantity::PathPoint,
+                index: 0,
+            },
+        }
+    }
+
+    /// The error of a non-finite tension: the force on the path's first
+    /// body.
+    #[cold]
+    fn non_finite_tension(&self) -> Error {
+        Error::NonFinite {
+            quantity: Quantity::ExternalForce,
+            index: self.points.iter().find_map(|p| p.body).unwrap_or(0),
+        }
     }
 
     /// The same path in another scalar type.
