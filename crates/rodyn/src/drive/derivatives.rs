@@ -22,7 +22,7 @@
 use crate::algorithm::derivatives::{aba_derivatives, DerivativeData, DerivativeSpace};
 use crate::algorithm::jacobian::{joint_jacobians_time_variation, JacobianData};
 use crate::data::Data;
-use crate::drive::path::body_out_of_range;
+use crate::drive::path::{body_out_of_range, non_finite_path};
 use crate::drive::{ForceElement, Path, PointGeometry, MIN_SEGMENT_LENGTH};
 use crate::error::{Quantity, Result};
 use crate::model::{check_finite, check_result, Model};
@@ -184,7 +184,7 @@ impl<S: Scalar, G: PointGeometry, const K: usize> Path<S, G, K> {
             out.lengthening_velocity += *g * *v;
         }
         if !(out.length + out.lengthening_velocity).is_finite() {
-            return Err(self.non_finite());
+            return Err(non_finite_path::<S, G>(points.into_iter()));
         }
         Ok(out)
     }
