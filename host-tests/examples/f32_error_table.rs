@@ -52,9 +52,9 @@ fn row<S: Scalar, const NB: usize, const NQ: usize, const NV: usize>(
 macro_rules! table {
     ($scalar:ty; $(($id:ident, $name:literal, $nb:literal, $nq:literal, $nv:literal)),* $(,)?) => {{
         let header: Vec<&str> = ALGORITHMS.iter().map(|(name, _)| *name).collect();
-        println!("| model | nv | κ₂(M) | {} |", header.join(" | "));
-        println!("|---|---:|---:|{}", "---:|".repeat(ALGORITHMS.len()));
-        $( println!("{}", row::<$scalar, $nb, $nq, $nv>($name)?); )*
+        rodyn_cli::outln!("| model | nv | κ₂(M) | {} |", header.join(" | "));
+        rodyn_cli::outln!("|---|---:|---:|{}", "---:|".repeat(ALGORITHMS.len()));
+        $( rodyn_cli::outln!("{}", row::<$scalar, $nb, $nq, $nv>($name)?); )*
     }};
 }
 
@@ -67,9 +67,9 @@ macro_rules! f64_table {
 
 fn main() -> Result<(), String> {
     no_arguments("f32_error_table", "prints the table of every fixture")?;
-    println!("### f32: relative error against Pinocchio\n");
+    rodyn_cli::outln!("### f32: relative error against Pinocchio\n");
     for_each_fixture!(f32_table);
-    println!("\n### f64: relative error against Pinocchio\n");
+    rodyn_cli::outln!("\n### f64: relative error against Pinocchio\n");
     for_each_fixture!(f64_table);
     Ok(())
 }

@@ -248,7 +248,7 @@ fn place_pelvis(coordinates: &mut [FourierSeries]) -> f64 {
         }
         if anchor != previous_anchor {
             let name = ["left heel", "left toe", "right heel", "right toe"][anchor];
-            println!(
+            rodyn_cli::outln!(
                 "{:5.1} % of the cycle: {name} takes the weight",
                 100.0 * j as f64 / SAMPLES as f64
             );
@@ -265,7 +265,7 @@ fn place_pelvis(coordinates: &mut [FourierSeries]) -> f64 {
             }
         }
     }
-    println!(
+    rodyn_cli::outln!(
         "swing foot: lowest {:.1} mm above the ground (at {:.1} %); stance foot: up to {:.1} mm above it (at {:.1} %)",
         1e3 * clearance.0, clearance.1, 1e3 * hover.0, hover.1
     );
@@ -333,7 +333,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     std::fs::create_dir_all(&dir)?;
     std::fs::write(dir.join("joint_fourier.csv"), cycle.to_csv())?;
     std::fs::write(dir.join("ground_reaction.csv"), grf)?;
-    println!(
+    rodyn_cli::outln!(
         "speed {speed:.3} m/s, stride {:.3} m, vertical peak {:.3} BW; wrote {}",
         speed * PERIOD,
         scale * VERTICAL_PEAK / weight,

@@ -138,20 +138,20 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let rms = |x: &[f64]| (x.iter().map(|x| x * x).sum::<f64>() / x.len() as f64).sqrt();
     let (at_f, max_f) = peak(&residual_force);
     let (at_m, max_m) = peak(&residual_moment);
-    println!(
+    rodyn_cli::outln!(
         "body mass {mass:.2} kg, {} samples over {:.2} s",
         frames.len(),
         cycle.period()
     );
-    println!(
+    rodyn_cli::outln!(
         "pelvis residual force: peak {max_f:.3} BW at {at_f} %, RMS {:.3} BW",
         rms(&residual_force)
     );
-    println!(
+    rodyn_cli::outln!(
         "pelvis residual moment: peak {max_m:.1} N m at {at_m} %, RMS {:.1} N m",
         rms(&residual_moment)
     );
-    println!(
+    rodyn_cli::outln!(
         "f32 against f64: largest torque difference {f32_error:.2e} BW (N m per N of body weight)"
     );
 
@@ -166,27 +166,27 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         ("left ankle (plantarflexor +)", v::L_ANKLE, -1.0),
         ("sacroiliac (trunk extensor −)", v::SACROILIAC, 1.0),
     ];
-    println!("\n| joint moment | peak (N m/kg) | at % of cycle |\n|---|---|---|");
+    rodyn_cli::outln!("\n| joint moment | peak (N m/kg) | at % of cycle |\n|---|---|---|");
     let mut torque_curves = Vec::new();
     // Left joints dashed in the right joints' colours.
     let colours = [RED, BLUE, GREEN, RED, BLUE, GREEN, BLACK];
     for ((name, k, sign), colour) in joints.iter().zip(colours) {
         let values = per_kg(&|g| sign * g.tau[*k]);
         let (at, value) = peak(&values);
-        println!("| {name} | {value:.3} | {at} |");
+        rodyn_cli::outln!("| {name} | {value:.3} | {at} |");
         torque_curves.push((*name, colour, values));
     }
     let torque = per_kg(&|g| g.interface.torque);
     let normal = per_kg(&|g| g.interface.normal);
     let shear = per_kg(&|g| g.interface.shear);
-    println!("\n| socket load | peak | at % of cycle |\n|---|---|---|");
+    rodyn_cli::outln!("\n| socket load | peak | at % of cycle |\n|---|---|---|");
     for (name, unit, values) in [
         ("τ_p", "N m/kg", &torque),
         ("F_p", "N/kg", &normal),
         ("shear", "N/kg", &shear),
     ] {
         let (at, value) = peak(values);
-        println!("| {name} | {value:.3} {unit} | {at} |");
+        rodyn_cli::outln!("| {name} | {value:.3} {unit} | {at} |");
     }
 
     plot(
@@ -254,6 +254,6 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             ),
         ],
     )?;
-    println!("\nwrote {}", img.display());
+    rodyn_cli::outln!("\nwrote {}", img.display());
     Ok(())
 }

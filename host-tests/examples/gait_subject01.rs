@@ -68,7 +68,7 @@ fn arguments() -> Result<Option<Arguments>, String> {
                     .ok_or("--data needs a directory")?
             }
             "-h" | "--help" => {
-                println!("{USAGE}");
+                rodyn_cli::outln!("{USAGE}");
                 return Ok(None);
             }
             other => return Err(format!("unknown argument `{other}`\n{USAGE}")),
@@ -239,7 +239,7 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
         summary,
         "  largest change of τ_p in swing from the lighter limb: {swing_change:.1} N m"
     );
-    print!("{summary}");
+    rodyn_cli::out!("{summary}");
     std::fs::write(args.out.join("summary.txt"), &summary)?;
 
     // Figures.
@@ -357,7 +357,7 @@ fn run() -> Result<(), Box<dyn std::error::Error>> {
             },
         ],
     )?;
-    println!(
+    rodyn_cli::outln!(
         "wrote joint_loads.csv, summary.txt, joint_moments.svg, residuals.svg and socket_loads.svg to {}",
         args.out.display()
     );

@@ -212,3 +212,42 @@ fn coincident_points_give_zero_force_not_nan_and_bad_bodies_are_errors() {
         })
     ));
 }
+
+/// A path point that is not finite is named by its place along the path,
+/// for the kinematics, for a tension to apply and for the derivatives'
+/// length, rather than read as a NaN length.
+#[test]
+fn a_non_finite_path_point_is_named() {
+    use rodyn::error::Quantity;
+    let model = model_3d();
+    let mut data = Data::new();
+    forward_kinematics_velocity(&model, &mut data, &[0.2, -0.1, 0.4], &[0.3, 0.1, -0.2]).unwrap();
+    for bad in [f64::NAN, f64::INFINITY] {
+        let path = Path::new([
+            Endpoint::on_body(1, Vec3::new(0.1, 0.0, 0.0)),
+            Endpoint::on_body(2, Vec3::new(0.0, bad, 0.0)),
+            Endpoint::in_world(Vec3::new(1.0, 0.0, 0.0)),
+        ]);
+        assert_eq!(
+            path.kinematics(&data).map(|k| k.length),
+            Err(Error::NonFinite {
+                quantity: Quantity::PathPoint,
+                index: 1
+            })
+        );
+    }
+    let path = Path::new([
+        Endpoint::on_body(1, Vec3::new(0.1, 0.0, 0.0)),
+        Endpoint::in_world(Vec3::new(1.0, 0.0, 0.0)),
+    ]);
+    let kin = path.kinematics(&data).unwrap();
+    let mut f_ext = [Force::ZERO; 3];
+    assert_eq!(
+        path.add_tension(&kin, f64::NAN, &data, &mut f_ext),
+        Err(Error::NonFinite {
+            quantity: Quantity::ExternalForce,
+            index: 1
+        })
+    );
+    assert_eq!(f_ext, [Force::ZERO; 3]);
+}

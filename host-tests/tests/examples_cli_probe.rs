@@ -6,7 +6,9 @@
 mod gait_inputs;
 
 use gait_inputs::{frames, write_inputs};
-use rodyn_cli::probe::{assert_listed, assert_refused, example, run};
+use rodyn_cli::probe::{
+    assert_calm_when_stdout_closes, assert_listed, assert_refused, example, run,
+};
 use std::path::PathBuf;
 
 fn scratch(name: &str) -> PathBuf {
@@ -136,4 +138,21 @@ fn examples_without_options_refuse_arguments() {
         "usage: gait_prosthesis [--out DIR]",
     );
     assert_refused(&exe, &["--out"], "usage: gait_prosthesis [--out DIR]");
+}
+
+/// The examples that print, with the reader of their output gone (`| head
+/// -1`): no panic, status 0. The README's first program
+/// (`crates/rodyn/examples/quickstart.rs`) keeps the plain `println!` a
+/// first program shows.
+#[test]
+fn a_reader_that_stops_early_is_no_panic() {
+    let gait = example("rodyn-host-tests", "gait_subject01");
+    assert_calm_when_stdout_closes(&gait, &["--help"]);
+    assert_calm_when_stdout_closes(&example("rodyn-host-tests", "f32_error_table"), &[]);
+    assert_calm_when_stdout_closes(&example("rodyn", "pendulum_spring"), &[]);
+    let dir = scratch("closed-stdout");
+    assert_calm_when_stdout_closes(
+        &example("rodyn-host-tests", "gait_prosthesis"),
+        &["--out", dir.to_str().unwrap()],
+    );
 }

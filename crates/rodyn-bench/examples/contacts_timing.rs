@@ -57,7 +57,7 @@ fn run<const NB: usize, const NQ: usize, const NV: usize>(
             .unwrap();
             black_box(ddq);
         });
-        println!("{name} {algorithm}{suffix} {t:.1}");
+        rodyn_cli::outln!("{name} {algorithm}{suffix} {t:.1}");
     }
 }
 

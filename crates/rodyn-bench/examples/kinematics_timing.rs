@@ -98,7 +98,7 @@ fn run<const NB: usize, const NQ: usize, const NV: usize>(
             match *mode {
                 Mode::Timed(ms) => {
                     let t = time(ms, n, $f);
-                    println!("{name} {} {t:.1}", $algorithm);
+                    rodyn_cli::outln!("{name} {} {t:.1}", $algorithm);
                 }
                 Mode::Only(only, calls) if only == $algorithm => {
                     let mut f = $f;
@@ -189,7 +189,7 @@ fn solo12_constant_path(mode: &Mode) {
     match *mode {
         Mode::Timed(ms) => {
             let t = time(ms, states.len(), f);
-            println!("solo12 frame_jacobian_from_q_const {t:.1}");
+            rodyn_cli::outln!("solo12 frame_jacobian_from_q_const {t:.1}");
         }
         Mode::Only("frame_jacobian_from_q_const", calls) => {
             let mut f = f;

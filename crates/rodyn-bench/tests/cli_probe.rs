@@ -4,8 +4,8 @@
 //! binaries' help shows; a new one fails `every_argument_is_probed`.
 
 use rodyn_cli::probe::{
-    assert_listed, assert_refused, assert_refuses_hostile_values, example, run, NumericOption,
-    HOSTILE,
+    assert_calm_when_stdout_closes, assert_listed, assert_refused, assert_refuses_hostile_values,
+    example, run, NumericOption, HOSTILE,
 };
 use std::path::Path;
 
@@ -194,4 +194,19 @@ fn names_paths_and_choices_are_checked_before_any_timing() {
     let crossover = Path::new(env!("CARGO_BIN_EXE_crossover"));
     assert_refused(crossover, &["--out", unwritable.to_str().unwrap()], "--out");
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// `profile aba panda 1 | head -1` and the like: the measuring programs
+/// print to a closed pipe without a panic and end with status 0 (short
+/// runs of each; `compare` needs Pinocchio's program and `crossover`
+/// minutes, and they print through the same macro).
+#[test]
+fn a_reader_that_stops_early_is_no_panic() {
+    let short = ["--ms", "1"];
+    assert_calm_when_stdout_closes(
+        Path::new(env!("CARGO_BIN_EXE_profile")),
+        &["aba", "panda", "1"],
+    );
+    assert_calm_when_stdout_closes(Path::new(env!("CARGO_BIN_EXE_derivatives_timing")), &short);
+    assert_calm_when_stdout_closes(&example("rodyn-bench", "kinematics_timing"), &short);
 }

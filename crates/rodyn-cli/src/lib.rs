@@ -10,6 +10,8 @@
 //!   long computation rather than after it.
 //! - [`no_arguments`]: a program without options refuses arguments
 //!   rather than ignoring them.
+//! - [`outln!`] and [`out!`]: `println!` and `print!` that take a reader
+//!   closing the pipe early (`| head -1`) calmly, where `println!` panics.
 //! - [`probe`]: the test harness that runs a tool with hostile values of
 //!   every argument and requires a clean refusal.
 //!
@@ -23,6 +25,7 @@ mod number;
 mod output;
 mod positive;
 pub mod probe;
+pub mod stdout;
 mod steps;
 
 pub use count::Count;
@@ -30,4 +33,5 @@ pub use no_arguments::no_arguments;
 pub use number::shown;
 pub use output::{writable_dir, writable_file};
 pub use positive::PositiveFinite;
+pub use stdout::emit;
 pub use steps::step_count;

@@ -50,6 +50,31 @@ pub struct Outcome {
 /// failure of the probe), naming the arguments.
 #[must_use]
 pub fn run(exe: &Path, args: &[&str]) -> Outcome {
+    run_reading(exe, args, true)
+}
+
+/// Runs `exe` with `args` as `exe args | head -0` would: the reader of its
+/// standard output is gone before it writes. The tool must finish calmly
+/// (see [`emit`](crate::emit)): exit 0 without a panic.
+///
+/// # Panics
+/// If the tool cannot be started, hangs, panics, dies by a signal or
+/// exits with an error, naming the arguments and showing its diagnostics.
+pub fn assert_calm_when_stdout_closes(exe: &Path, args: &[&str]) {
+    let outcome = run_reading(exe, args, false);
+    assert_no_panic(&outcome, args);
+    assert!(
+        outcome.status.success(),
+        "{} {args:?} with its standard output closed: {}\n{}",
+        exe.display(),
+        outcome.status,
+        outcome.stderr
+    );
+}
+
+/// [`run`], reading the tool's standard output or (`read_stdout` false)
+/// closing it at once.
+fn run_reading(exe: &Path, args: &[&str], read_stdout: bool) -> Outcome {
     let mut child = Command::new(exe)
         .args(args)
         .stdin(Stdio::null())
@@ -68,12 +93,14 @@ pub fn run(exe: &Path, args: &[&str]) -> Outcome {
             String::from_utf8_lossy(&text).into_owned()
         })
     };
-    let stdout = drain(
-        child
-            .stdout
-            .take()
-            .map(|p| Box::new(p) as Box<dyn Read + Send>),
-    );
+    let stdout = child.stdout.take();
+    let stdout = drain(if read_stdout {
+        stdout.map(|p| Box::new(p) as Box<dyn Read + Send>)
+    } else {
+        // The pipe's only reader, dropped: every write now fails.
+        drop(stdout);
+        None
+    });
     let stderr = drain(
         child
             .stderr

@@ -222,14 +222,14 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .iter()
         .flat_map(|s| s.sensitivity.iter().flatten().map(|x| x.abs()))
         .fold(0.0f64, f64::max);
-    println!(
+    rodyn_cli::outln!(
         "{} samples over {DURATION} s; final q = [{:.4}, {:.4}] rad",
         samples.len(),
         last.q[0],
         last.q[1]
     );
-    println!("largest |∂q̈/∂a| along the trajectory: {peak:.1} rad/s²");
-    println!(
+    rodyn_cli::outln!("largest |∂q̈/∂a| along the trajectory: {peak:.1} rad/s²");
+    rodyn_cli::outln!(
         "wrote {} and {}",
         trajectory.display(),
         sensitivity.display()

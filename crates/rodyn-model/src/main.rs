@@ -277,8 +277,7 @@ fn run(args: &[String]) -> Result<(), String> {
             let path = output
                 .unwrap_or_else(|| PathBuf::from(format!("{}.html", runtime.description.name)));
             std::fs::write(&path, html).map_err(|e| format!("{}: {e}", path.display()))?;
-            println!("wrote {}", path.display());
-            Ok(())
+            emit(&format!("wrote {}\n", path.display()))
         }
         _ => Err(format!("unknown command `{command}`\n{USAGE}")),
     }
@@ -316,7 +315,9 @@ fn pixels(text: &str) -> Result<f64, String> {
 }
 
 /// Writes `text` to standard output. A reader that stopped early (`| head`)
-/// is no error: what it wanted it has.
+/// is no error: what it wanted it has. (`rodyn_cli::emit` for the other
+/// tools; this crate keeps its own, since `rodyn-cli` is only its test
+/// dependency and the model compiler is every firmware's build dependency.)
 fn emit(text: &str) -> Result<(), String> {
     match std::io::stdout().lock().write_all(text.as_bytes()) {
         Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {

@@ -4,8 +4,8 @@
 //! fails `every_option_is_probed` until it is added here.
 
 use rodyn_cli::probe::{
-    assert_listed, assert_no_panic, assert_refused, assert_refuses_hostile_values, run,
-    NumericOption,
+    assert_calm_when_stdout_closes, assert_listed, assert_no_panic, assert_refused,
+    assert_refuses_hostile_values, run, NumericOption,
 };
 use std::path::{Path, PathBuf};
 
@@ -213,4 +213,15 @@ fn view_replays_a_trajectory_and_names_a_bad_line() {
     );
     assert!(outcome.stderr.contains("`NaN`"), "{}", outcome.stderr);
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// `rodyn-model rust FILE | head -1`, and the same for `tree`, `check` and
+/// `render` to standard output: the reader's early close is no panic and
+/// no error.
+#[test]
+fn a_reader_that_stops_early_is_no_panic() {
+    let pendulum = model("pendulum.toml");
+    for command in ["rust", "tree", "check", "render"] {
+        assert_calm_when_stdout_closes(exe(), &[command, &pendulum]);
+    }
 }

@@ -23,7 +23,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut rk4 = Rk4::default();
     let dt = 1e-3;
     let mut x = robot::rest_state(INITIAL_ACTIVATION);
-    println!(
+    rodyn_cli::outln!(
         "{:>5} {:>8} {:>8} {:>6} {:>6} {:>6} {:>6} | d(qdd_shoulder)/da (rad/s^2)      | d(qdd_elbow)/da (rad/s^2)",
         "t s", "q1 rad", "q2 rad", "a1", "a2", "a3", "a4"
     );
@@ -41,7 +41,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                 &mut s,
             )?;
             let a = x.z;
-            println!(
+            rodyn_cli::outln!(
                 "{:5.2} {:8.4} {:8.4} {:6.3} {:6.3} {:6.3} {:6.3} | {:7.1} {:7.1} {:7.1} {:7.1} | {:7.1} {:7.1} {:7.1} {:7.1}",
                 x.t, x.q[0], x.q[1], a[0], a[1], a[2], a[3],
                 s[0][0], s[0][1], s[0][2], s[0][3], s[1][0], s[1][1], s[1][2], s[1][3]

@@ -479,19 +479,19 @@ fn draw(
 
 /// Prints the front and every combination at 1 ms.
 fn print_summary(name: &str, points: &[Point], front: &[usize]) {
-    println!("{name}: Pareto front (cheapest first)");
+    rodyn_cli::outln!("{name}: Pareto front (cheapest first)");
     for &i in front {
         let p = &points[i];
-        println!(
+        rodyn_cli::outln!(
             "  {:<45} cost {:.2e} s/s  error {:.2e}",
             label(p),
             p.cost,
             p.error
         );
     }
-    println!("{name}: every combination at dt = 1 ms (a 1 kHz loop)");
+    rodyn_cli::outln!("{name}: every combination at dt = 1 ms (a 1 kHz loop)");
     for p in points.iter().filter(|p| p.dt == 1e-3) {
-        println!(
+        rodyn_cli::outln!(
             "  {:<45} cost {:.2e} s/s  error {:.2e}",
             label(p),
             p.cost,
@@ -499,7 +499,7 @@ fn print_summary(name: &str, points: &[Point], front: &[usize]) {
         );
     }
     let failed = points.iter().filter(|p| p.failure.is_some()).count();
-    println!(
+    rodyn_cli::outln!(
         "{name}: {failed} of {} runs stopped with an error",
         points.len()
     );

@@ -117,11 +117,11 @@ macro_rules! chain_rows {
 
 fn chain_length(out: &Path) -> Res {
     let rows = chain_rows!(1, 2, 5, 10, 20, 30, 40, 60, 80, 100, 120);
-    println!("chain: links, f32 ABA rel. error, f32 CRBA rel. error, f64 CRBA vs f64 ABA");
+    rodyn_cli::outln!("chain: links, f32 ABA rel. error, f32 CRBA rel. error, f64 CRBA vs f64 ABA");
     let mut s: [Curve; 3] = [Vec::new(), Vec::new(), Vec::new()];
     for (n, (_, aba32), (crba64, crba32)) in &rows {
         let show = |e: &Option<f64>| e.map_or("error".to_string(), |e| format!("{e:.2e}"));
-        println!(
+        rodyn_cli::outln!(
             "  {n:>4} {:>10} {:>10} {crba64:>10.2e}",
             show(aba32),
             show(crba32)
@@ -225,13 +225,15 @@ pub fn largest_stable_step(kind: IntegratorKind, k: f64, steps: usize) -> f64 {
 fn stiffness(out: &Path) -> Res {
     let ks: Vec<f64> = (0..=14).map(|e| 10f64.powf(1.0 + 0.5 * e as f64)).collect();
     let mut series = Vec::new();
-    println!("stiffness: largest stable step (s) of a 1 kg spring over 2000 steps, k in N/m");
+    rodyn_cli::outln!(
+        "stiffness: largest stable step (s) of a 1 kg spring over 2000 steps, k in N/m"
+    );
     for (c, kind) in IntegratorKind::ALL.into_iter().enumerate() {
         let pts: Vec<(f64, f64)> = ks
             .iter()
             .map(|&k| (k, largest_stable_step(kind, k, 2000)))
             .collect();
-        println!(
+        rodyn_cli::outln!(
             "  {:<20} {}",
             kind.name(),
             pts.iter()
@@ -298,7 +300,7 @@ fn massless(out: &Path) -> Res {
     let masses: Vec<f64> = (0..=46).map(|e| 10f64.powi(-e)).chain([0.0]).collect();
     let mut series = Vec::new();
     let mut reported = Vec::new();
-    println!("massless: tip mass (kg, first link 1 kg) -> relative error of q̈, or the error rodyn returns");
+    rodyn_cli::outln!("massless: tip mass (kg, first link 1 kg) -> relative error of q̈, or the error rodyn returns");
     let cases: [Case; 4] = [
         ("ABA f32", light_tip_error::<Aba, f32>),
         ("CRBA f32", light_tip_error::<Crba, f32>),
@@ -327,10 +329,10 @@ fn massless(out: &Path) -> Res {
             .step_by(2)
             .map(|(m, e)| format!("{m:.0e}:{e:.1e}"))
             .collect();
-        println!("  {name:<40} {}", table.join(" "));
+        rodyn_cli::outln!("  {name:<40} {}", table.join(" "));
         match first_error {
-            Some((m, e)) => println!("  {name:<40} first error at tip mass {m:.0e}: {e}"),
-            None => println!("  {name:<40} no error down to 1e-46 kg"),
+            Some((m, e)) => rodyn_cli::outln!("  {name:<40} first error at tip mass {m:.0e}: {e}"),
+            None => rodyn_cli::outln!("  {name:<40} no error down to 1e-46 kg"),
         }
         series.push(Series::new(*name, pts, Mark::LinePoints, c));
     }
@@ -448,15 +450,17 @@ fn quaternion(out: &Path) -> Res {
     let mut kept = Vec::new();
     let mut drifting = Vec::new();
     let mut rejected = Vec::new();
-    println!("quaternion: tumbling box, dt = 1 ms, 10 s; max ||q|-1| and rodyn's verdict");
+    rodyn_cli::outln!("quaternion: tumbling box, dt = 1 ms, 10 s; max ||q|-1| and rodyn's verdict");
     for (c, (name, (pts, failure))) in runs.into_iter().enumerate() {
         let worst = pts.iter().fold(0.0f64, |m, p| m.max(p.1));
         match &failure {
             Some((t, e)) => {
-                println!("  {name:<45} max drift {worst:.2e}; rejected at t = {t:.3} s: {e}");
+                rodyn_cli::outln!(
+                    "  {name:<45} max drift {worst:.2e}; rejected at t = {t:.3} s: {e}"
+                );
                 rejected.push((t.max(1e-3), pts.last().map_or(1e-17, |p| p.1)));
             }
-            None => println!("  {name:<45} max drift {worst:.2e}; never rejected"),
+            None => rodyn_cli::outln!("  {name:<45} max drift {worst:.2e}; never rejected"),
         }
         let thinned = pts
             .into_iter()
@@ -565,7 +569,7 @@ fn contact(out: &Path) -> Res {
     let ks = [1e3, 3e3, 1e4, 3e4, 1e5, 3e5, 1e6];
     let steps = [5e-5, 1e-4, 2e-4, 5e-4, 1e-3, 2e-3, 5e-3];
     let mut series = Vec::new();
-    println!("contact: largest step (s) at which the dropped quadruped comes to rest, per ground stiffness");
+    rodyn_cli::outln!("contact: largest step (s) at which the dropped quadruped comes to rest, per ground stiffness");
     for (c, kind) in IntegratorKind::ALL.into_iter().enumerate() {
         let mut pts = Vec::new();
         for &k in &ks {
@@ -591,7 +595,7 @@ fn contact(out: &Path) -> Res {
             if let Some(dt) = best {
                 pts.push((k, dt));
             }
-            println!(
+            rodyn_cli::outln!(
                 "  {:<20} k = {k:.0e} N/m: {}",
                 kind.name(),
                 best.map_or("none of the steps".into(), |dt| format!("{dt:e} s"))

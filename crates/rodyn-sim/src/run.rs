@@ -169,7 +169,7 @@ pub fn run_command(
         }
     }
     let last_t = trajectory.t.last().copied().unwrap_or(0.0);
-    println!(
+    rodyn_cli::outln!(
         "{name}: {} {} {} dt = {} s, simulated {last_t:.3} s in {:.3} s of host time ({:.2e} s per simulated s)",
         config.method_name(),
         config.scalar.name(),
@@ -185,30 +185,37 @@ pub fn run_command(
         ) {
             let q: [f64; quadruped::NQ] = q.as_slice().try_into()?;
             let p = quadruped::trunk_position(&q);
-            println!(
+            rodyn_cli::outln!(
                 "final torso position x = {:.4} m, y = {:.4} m, z = {:.4} m",
-                p.x, p.y, p.z
+                p.x,
+                p.y,
+                p.z
             );
         }
     }
     if let (Some(q), Some(a)) = (trajectory.q.last(), trajectory.internal.last()) {
-        println!(
+        rodyn_cli::outln!(
             "final joint angles {:.4} {:.4} rad, activations {:.3} {:.3} {:.3} {:.3}",
-            q[0], q[1], a[0], a[1], a[2], a[3]
+            q[0],
+            q[1],
+            a[0],
+            a[1],
+            a[2],
+            a[3]
         );
     }
-    println!(
+    rodyn_cli::outln!(
         "wrote {}, {}, {}",
         csv.display(),
         plot_path.display(),
         gif.display()
     );
     if forces_path.exists() {
-        println!("wrote {}", forces_path.display());
+        rodyn_cli::outln!("wrote {}", forces_path.display());
     }
     if let Some(page) = html {
         crate::viewer::write_page(config, &trajectory, page)?;
-        println!("wrote {}", page.display());
+        rodyn_cli::outln!("wrote {}", page.display());
     }
     match &trajectory.failure {
         // The files hold the run up to the failure, for a look at it.

@@ -4,7 +4,10 @@
 //! option fails `every_option_is_probed` until it is added here.
 
 use rodyn_cli::probe::NumericOption;
-use rodyn_cli::probe::{assert_listed, assert_refused, assert_refuses_hostile_values, run};
+use rodyn_cli::probe::{
+    assert_calm_when_stdout_closes, assert_listed, assert_refused, assert_refuses_hostile_values,
+    run,
+};
 use std::path::{Path, PathBuf};
 
 fn exe() -> &'static Path {
@@ -205,4 +208,21 @@ fn a_short_valid_run_still_succeeds_and_writes_its_files() {
     let csv = std::fs::read_to_string(out.join("arm-swing.csv")).unwrap();
     assert_eq!(csv.lines().count(), 1 + 6, "{csv}");
     assert!(out.join("arm-swing.svg").is_file() && out.join("arm-swing.gif").is_file());
+}
+
+/// `rodyn-sim run … | head -1`: the summary's lines go to a closed pipe;
+/// the run still ends with status 0 and its files, without a panic.
+#[test]
+fn a_reader_that_stops_early_is_no_panic() {
+    let scratch = Scratch::new("closed-stdout");
+    let args = [
+        "run",
+        "arm-swing",
+        "--duration",
+        "0.05",
+        "-o",
+        scratch.path(),
+    ];
+    assert_calm_when_stdout_closes(exe(), &args);
+    assert!(scratch.0.join("arm-swing.csv").is_file());
 }

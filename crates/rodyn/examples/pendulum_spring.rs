@@ -50,15 +50,20 @@ fn main() -> Result<(), rodyn::Error> {
         };
     let (mut q, mut v) = ([1.2], [0.0]);
     let dt = 1e-3;
-    println!(
+    rodyn_cli::outln!(
         "{:>5} {:>9} {:>9} {:>9} {:>10} {:>12}",
-        "t s", "q rad", "v rad/s", "L m", "tension N", "energy J"
+        "t s",
+        "q rad",
+        "v rad/s",
+        "L m",
+        "tension N",
+        "energy J"
     );
     for step in 0..=2000 {
         if step % 100 == 0 {
             let e = energy(&mut data, &q, &v)?;
             let kin = SPRING.path.kinematics(&data)?;
-            println!(
+            rodyn_cli::outln!(
                 "{:5.2} {:9.5} {:9.5} {:9.5} {:10.4} {:12.9}",
                 step as f64 * dt,
                 q[0],

@@ -57,6 +57,10 @@ pub enum Quantity {
     /// energy, a motor's reflected inertia; `index` as the element
     /// documents).
     Drive,
+    /// A point of a drive's path (a spring's, a damper's, a muscle's;
+    /// `index` is the point's place along the path, from 0), or the path's
+    /// length and rate formed from the points.
+    PathPoint,
 }
 
 impl Quantity {
@@ -87,6 +91,7 @@ impl Quantity {
             Self::CentroidalMap => "centroidal momentum map",
             Self::Target => "target pose",
             Self::Drive => "drive element",
+            Self::PathPoint => "drive path point",
         }
     }
 
@@ -98,6 +103,7 @@ impl Quantity {
             Self::FramePlacement => "frame on body",
             Self::Contact => "contact",
             Self::PathLength | Self::PathVelocity => "muscle input",
+            Self::PathPoint => "point",
             _ => "entry",
         }
     }
@@ -566,6 +572,7 @@ impl defmt::Format for Quantity {
             Self::CentroidalMap => defmt::write!(f, "CentroidalMap"),
             Self::Target => defmt::write!(f, "Target"),
             Self::Drive => defmt::write!(f, "Drive"),
+            Self::PathPoint => defmt::write!(f, "PathPoint"),
         }
     }
 }

@@ -237,7 +237,7 @@ fn main() -> Result<(), String> {
     let manifest_path = dir.join("manifest.txt");
     std::fs::write(&manifest_path, manifest).map_err(io)?;
     if opts.inputs_only {
-        println!("{}", manifest_path.display());
+        rodyn_cli::outln!("{}", manifest_path.display());
         return Ok(());
     }
 
@@ -285,15 +285,15 @@ fn main() -> Result<(), String> {
     }
     eprintln!();
 
-    println!(
+    rodyn_cli::outln!(
         "CPU: {} ({} logical cores); {} rounds, {} random states per model, medians.\n",
         cpu_model(),
         std::thread::available_parallelism().map_or(0, usize::from),
         opts.rounds.get(),
         STATES
     );
-    println!("| model | nv | algorithm | rodyn 3-D (ns) | rodyn planar (ns) | Pinocchio (ns) | rodyn / Pinocchio |");
-    println!("|---|---:|---|---:|---:|---:|---:|");
+    rodyn_cli::outln!("| model | nv | algorithm | rodyn 3-D (ns) | rodyn planar (ns) | Pinocchio (ns) | rodyn / Pinocchio |");
+    rodyn_cli::outln!("|---|---:|---|---:|---:|---:|---:|");
     let mut worst: f64 = 0.0;
     for (i, e) in entries.iter().enumerate() {
         for a in Algorithm::ALL {
@@ -316,7 +316,7 @@ fn main() -> Result<(), String> {
                 .map_or(String::new(), |(_, c)| format!(" ({c})"));
             let ratio = spatial / pin_ns;
             worst = worst.max(ratio);
-            println!(
+            rodyn_cli::outln!(
                 "| {} | {} | {} | {spatial:.0} | {planar} | {pin_ns:.0}{convention} | {ratio:.2} |",
                 e.name,
                 e.spatial.nv(),
@@ -324,7 +324,7 @@ fn main() -> Result<(), String> {
             );
         }
     }
-    println!("\nLargest ratio rodyn 3-D / Pinocchio: {worst:.2}");
+    rodyn_cli::outln!("\nLargest ratio rodyn 3-D / Pinocchio: {worst:.2}");
     Ok(())
 }
 

@@ -151,34 +151,34 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .map(|[aba, crba]| crba.iter().zip(aba).map(|(c, a)| c / a).collect())
         .collect();
 
-    println!(
+    rodyn_cli::outln!(
         "{} rounds, medians, ns per call; ratio = CRBA forward dynamics / ABA.\n",
         opts.rounds.get()
     );
-    print!("| links |");
+    rodyn_cli::out!("| links |");
     for v in VARIANTS {
-        print!(" ABA {v} | CRBA {v} | ratio |");
+        rodyn_cli::out!(" ABA {v} | CRBA {v} | ratio |");
     }
-    println!();
-    println!("|---:|{}", "---:|---:|---:|".repeat(VARIANTS.len()));
+    rodyn_cli::outln!();
+    rodyn_cli::outln!("|---:|{}", "---:|---:|---:|".repeat(VARIANTS.len()));
     for (c, n) in lengths.iter().enumerate() {
-        print!("| {n} |");
+        rodyn_cli::out!("| {n} |");
         for v in 0..VARIANTS.len() {
             let (aba, crba, ratio) = (ns[v][0][c], ns[v][1][c], ratios[v][c]);
             if ratio.is_finite() {
-                print!(" {aba:.0} | {crba:.0} | {ratio:.2} |");
+                rodyn_cli::out!(" {aba:.0} | {crba:.0} | {ratio:.2} |");
             } else {
                 // CRBA reported the mass matrix as not positive definite.
-                print!(" {aba:.0} | fails | – |");
+                rodyn_cli::out!(" {aba:.0} | fails | – |");
             }
         }
-        println!();
+        rodyn_cli::outln!();
     }
-    println!();
+    rodyn_cli::outln!();
     for (v, name) in VARIANTS.iter().enumerate() {
         match crossover(&lengths, &ratios[v]) {
-            Some(n) => println!("{name}: ABA is faster from {n} links on"),
-            None => println!("{name}: CRBA is faster at every length measured"),
+            Some(n) => rodyn_cli::outln!("{name}: ABA is faster from {n} links on"),
+            None => rodyn_cli::outln!("{name}: CRBA is faster at every length measured"),
         }
     }
 

@@ -51,7 +51,7 @@ fn run<const NB: usize, const NQ: usize, const NV: usize>(
             match *mode {
                 Mode::Timed(ms) => {
                     let t = median_ns(ms, n, $f);
-                    println!("{name} {} {t:.1}", $algorithm);
+                    rodyn_cli::outln!("{name} {} {t:.1}", $algorithm);
                 }
                 Mode::Only(only, calls) if only == $algorithm => {
                     let mut f = $f;

@@ -70,7 +70,7 @@ fn main() -> Result<(), String> {
     let mut case = case(name).ok_or(format!("<MODEL>: unknown model {name}"))?;
     let calls = cli.calls.get();
     let ns = case.time(algorithm, calls);
-    println!(
+    rodyn_cli::outln!(
         "{} {name}: {ns:.1} ns/call over {calls} calls",
         algorithm.name()
     );

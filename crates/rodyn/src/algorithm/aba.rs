@@ -318,10 +318,14 @@ fn check_pivot<S: Scalar>(joint: usize, d: S, scale: S) -> Result<()> {
     if d.is_finite() && scale.is_finite() && d > tolerance {
         Ok(())
     } else {
-        let (d, scale) = (d.to_f64(), scale.to_f64());
+        // Divided in S too: an f64 division is a software routine there.
         Err(Error::SingularArticulatedInertia {
             joint,
-            relative_pivot: if scale > 0.0 { d / scale } else { 0.0 },
+            relative_pivot: if scale > S::ZERO {
+                (d / scale).to_f64()
+            } else {
+                0.0
+            },
         })
     }
 }

@@ -336,7 +336,7 @@ pub fn contact_inverse_dynamics<
                 break;
             };
             let tangential = (lx * lx + ly * ly).sqrt();
-            if lz.to_f64() < 0.0 || tangential.to_f64() > (settings.friction * lz).to_f64() {
+            if lz < S::ZERO || tangential > settings.friction * lz {
                 if let Some(outside) = iddata.outside_cone.get_mut(c) {
                     *outside = true;
                 }

@@ -259,7 +259,7 @@ pub fn solve<S: Scalar, const NB: usize, const NQ: usize, const NV: usize>(
         Outcome::Converged(iterations) => Ok(iterations),
         Outcome::Stopped { residual, .. } => Err(Error::NotConverged {
             iterations: settings.max_iterations,
-            residual,
+            residual: residual.to_f64(),
         }),
     }
 }
@@ -317,7 +317,7 @@ pub fn solve_with_fallback<S: Scalar, const NB: usize, const NQ: usize, const NV
             }
             Err(Error::NotConverged {
                 iterations: budget,
-                residual: residual.min(first_residual),
+                residual: residual.min(first_residual).to_f64(),
             })
         }
     }
@@ -328,12 +328,14 @@ pub fn solve_with_fallback<S: Scalar, const NB: usize, const NQ: usize, const NV
 const STALL_PROGRESS: f64 = 0.99;
 
 /// What one start of the iteration came to.
-enum Outcome {
+/// The residuals stay in `S` until an error reports one: an `f32` solve
+/// does no double-precision arithmetic.
+enum Outcome<S> {
     /// Within tolerance after this many steps.
     Converged(usize),
     /// Out of budget, or stalled: steps taken and the last error's largest
     /// component.
-    Stopped { iterations: usize, residual: f64 },
+    Stopped { iterations: usize, residual: S },
 }
 
 /// The fixed inputs of an inverse-kinematics solve.
@@ -358,10 +360,10 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Problem<'_, S
         q: &mut [S; NQ],
         budget: usize,
         stall: Option<usize>,
-    ) -> Result<Outcome> {
-        let mut residual = f64::INFINITY;
+    ) -> Result<Outcome<S>> {
+        let mut residual = S::from_f64(f64::INFINITY);
         // The error when the current window of `stall` steps began.
-        let mut window_start = f64::INFINITY;
+        let mut window_start = residual;
         for iteration in 0..budget {
             let before = *q;
             let e = step(
@@ -374,7 +376,7 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Problem<'_, S
                 q,
             )?;
             let size = largest_component(&e);
-            residual = size.to_f64();
+            residual = size;
             if size <= self.settings.tolerance {
                 *q = before;
                 return Ok(Outcome::Converged(iteration));
@@ -383,7 +385,7 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Problem<'_, S
             // configuration a step can throw the error up before the next
             // ones bring it down.
             if stall.is_some_and(|n| n > 0 && iteration % n == 0) {
-                if iteration > 0 && residual >= STALL_PROGRESS * window_start {
+                if iteration > 0 && residual >= S::from_f64(STALL_PROGRESS) * window_start {
                     return Ok(Outcome::Stopped {
                         iterations: iteration + 1,
                         residual,
@@ -434,7 +436,7 @@ pub fn check_problem<S: Scalar, const NB: usize>(
         index: 0,
         problem: ModelProblem::from(problem),
     })?;
-    let positive = |x: S| x.is_finite() && x.to_f64() > 0.0;
+    let positive = |x: S| x.is_finite() && x > S::ZERO;
     if !positive(settings.damping) {
         return Err(Error::InvalidSetting {
             setting: Setting::IkDamping,

@@ -224,10 +224,15 @@ impl<S: Scalar, const NV: usize> Pivots<S, NV> {
         // A non-positive or NaN `M[k][k]` fails too: `D[k] ≤ M[k][k]`
         // once the pivots below are positive.
         if !(d.is_finite() && d > self.tolerance * m_kk) {
-            let m_kk = m_kk.to_f64();
+            // Divided in S: an f64 division is a software routine on an
+            // FPU without double precision.
             return Err(Error::MassMatrixNotPositiveDefinite {
                 dof: k,
-                relative_pivot: if m_kk > 0.0 { d.to_f64() / m_kk } else { 0.0 },
+                relative_pivot: if m_kk > S::ZERO {
+                    (d / m_kk).to_f64()
+                } else {
+                    0.0
+                },
             });
         }
         self.d[k] = d;

@@ -22,7 +22,7 @@
 use crate::algorithm::derivatives::{aba_derivatives, DerivativeData, DerivativeSpace};
 use crate::algorithm::jacobian::{joint_jacobians_time_variation, JacobianData};
 use crate::data::Data;
-use crate::drive::path::body_out_of_range;
+use crate::drive::path::{body_out_of_range, non_finite_path};
 use crate::drive::{ForceElement, Path, PointGeometry, MIN_SEGMENT_LENGTH};
 use crate::error::{Quantity, Result};
 use crate::model::{check_finite, check_result, Model};
@@ -99,7 +99,9 @@ impl<S: Scalar, G: PointGeometry, const K: usize> Path<S, G, K> {
     /// [`kinematics`](Self::kinematics).
     ///
     /// # Errors
-    /// [`Error::InvalidDrive`](crate::Error::InvalidDrive) when an endpoint names a body out of range.
+    /// [`Error::InvalidDrive`](crate::Error::InvalidDrive) when an endpoint names a body out of range;
+    /// as [`kinematics`](Self::kinematics) for a point that is not finite
+    /// or a length that overflows.
     pub fn length_derivatives<const NB: usize, const NV: usize>(
         &self,
         state: &DriveDerivativeState<'_, S, G, NB, NV>,
@@ -180,6 +182,9 @@ impl<S: Scalar, G: PointGeometry, const K: usize> Path<S, G, K> {
         }
         for (g, v) in out.gradient.iter().zip(state.v) {
             out.lengthening_velocity += *g * *v;
+        }
+        if !(out.length + out.lengthening_velocity).is_finite() {
+            return Err(non_finite_path::<S, G>(points.into_iter()));
         }
         Ok(out)
     }

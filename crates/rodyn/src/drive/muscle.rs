@@ -600,12 +600,12 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
         // reported; `ThelenParameters::validate` names the field. The path
         // comes from a finite state: only an overflow makes it non-finite,
         // and then the tension too.
-        let kin = self.path.kinematics(state.data)?;
+        let kin = self.path.kinematics_in_element(state.data)?;
         let muscle = self.state_unvalidated(kin.length, kin.lengthening_velocity, activation);
         self.check_output(muscle.fiber_length, &[muscle.tension])?;
         let tension = muscle.tension;
         self.path
-            .add_tension(&kin, tension, state.data, &mut out.f_ext)
+            .add_tension_in_element(&kin, tension, state.data, &mut out.f_ext)
     }
     fn add_input_derivative(
         &self,
@@ -619,12 +619,12 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
             return Ok(());
         }
         check_activation(activation, self.input)?;
-        let kin = self.path.kinematics(state.data)?;
+        let kin = self.path.kinematics_in_element(state.data)?;
         let muscle = self.state_unvalidated(kin.length, kin.lengthening_velocity, activation);
         self.check_output(muscle.fiber_length, &[muscle.tension_per_activation])?;
         let slope = muscle.tension_per_activation;
         self.path
-            .add_tension(&kin, slope, state.data, &mut out.f_ext)
+            .add_tension_in_element(&kin, slope, state.data, &mut out.f_ext)
     }
     fn add_state_derivatives(
         &self,

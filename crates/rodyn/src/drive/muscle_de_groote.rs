@@ -513,11 +513,11 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
         out: &mut DriveForces<S, G, NB, NV>,
     ) -> Result<()> {
         let activation = self.activation(w)?;
-        let kin = self.path.kinematics(state.data)?;
+        let kin = self.path.kinematics_in_element(state.data)?;
         let muscle = self.state_unvalidated(kin.length, kin.lengthening_velocity, activation);
         self.check_output(&muscle)?;
         self.path
-            .add_tension(&kin, muscle.tension, state.data, &mut out.f_ext)
+            .add_tension_in_element(&kin, muscle.tension, state.data, &mut out.f_ext)
     }
     fn add_input_derivative(
         &self,
@@ -530,10 +530,10 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
         if input != self.input {
             return Ok(());
         }
-        let kin = self.path.kinematics(state.data)?;
+        let kin = self.path.kinematics_in_element(state.data)?;
         let muscle = self.state_unvalidated(kin.length, kin.lengthening_velocity, activation);
         self.check_output(&muscle)?;
-        self.path.add_tension(
+        self.path.add_tension_in_element(
             &kin,
             muscle.tension_per_activation,
             state.data,

@@ -20,7 +20,7 @@
 
 use crate::drive::geometry::PointGeometry;
 use crate::endpoint::Endpoint;
-use crate::error::{DriveProblem, Error, Result};
+use crate::error::{DriveProblem, Error, Quantity, Result};
 use crate::space::{RigidTransform, Space};
 use crate::{Data, Scalar};
 
@@ -77,8 +77,31 @@ impl<S: Scalar, G: PointGeometry, const K: usize> Path<S, G, K> {
     /// (or ABA, RNEA) leave them.
     ///
     /// # Errors
-    /// [`Error::InvalidDrive`] when an endpoint names a body out of range.
+    /// [`Error::InvalidDrive`] when an endpoint names a body out of range;
+    /// [`Error::NonFinite`] with [`Quantity::PathPoint`] naming a point
+    /// whose position is not finite, [`Error::NonFiniteResult`] with it
+    /// when the length or its rate overflows.
     pub fn kinematics<const NB: usize, const NV: usize>(
+        &self,
+        data: &Data<S, NB, NV, G>,
+    ) -> Result<PathKinematics<S, G, K>> {
+        let kin = self.kinematics_in_element(data)?;
+        // Non-finite points make the length (and so the unit forces) so.
+        // The rate is not tested: every point that enters it enters the
+        // length too, and only an overflow of finite numbers could spoil it
+        // alone.
+        if !kin.length.is_finite() {
+            return Err(self.non_finite_length());
+        }
+        Ok(kin)
+    }
+
+    /// [`kinematics`](Self::kinematics) without the test of the length:
+    /// for the springs and muscles, which test the length they read (a
+    /// spring's tension, a muscle's state) and whose forces
+    /// [`drive_forces`](crate::drive::drive_forces) tests. A test here too
+    /// grew the pendulum's image by half a kilobyte.
+    pub(crate) fn kinematics_in_element<const NB: usize, const NV: usize>(
         &self,
         data: &Data<S, NB, NV, G>,
     ) -> Result<PathKinematics<S, G, K>> {
@@ -134,8 +157,29 @@ impl<S: Scalar, G: PointGeometry, const K: usize> Path<S, G, K> {
     /// nothing.
     ///
     /// # Errors
-    /// [`Error::InvalidDrive`] when an endpoint names a body out of range.
+    /// [`Error::InvalidDrive`] when an endpoint names a body out of range;
+    /// [`Error::NonFinite`] with [`Quantity::ExternalForce`] naming the
+    /// first body on the path for a non-finite `tension`.
     pub fn add_tension<const NB: usize, const NV: usize>(
+        &self,
+        kinematics: &PathKinematics<S, G, K>,
+        tension: S,
+        data: &Data<S, NB, NV, G>,
+        f_ext: &mut [G::Force<S>; NB],
+    ) -> Result<()> {
+        // The unit forces come from `kinematics`, checked there: a finite
+        // tension gives finite forces.
+        if !tension.is_finite() {
+            return Err(self.non_finite_tension());
+        }
+        self.add_tension_in_element(kinematics, tension, data, f_ext)
+    }
+
+    /// [`add_tension`](Self::add_tension) without the test of the tension:
+    /// for the springs and muscles, which test the tension they compute
+    /// and whose forces [`drive_forces`](crate::drive::drive_forces)
+    /// tests.
+    pub(crate) fn add_tension_in_element<const NB: usize, const NV: usize>(
         &self,
         kinematics: &PathKinematics<S, G, K>,
         tension: S,
@@ -157,6 +201,29 @@ impl<S: Scalar, G: PointGeometry, const K: usize> Path<S, G, K> {
         Ok(())
     }
 
+    /// The error of a path whose length came out non-finite: the first
+    /// point given as not finite (the body poses are: forward kinematics
+    /// checks them), otherwise an overflow.
+    // Out of line, and reading the points rather than the caller's world
+    // positions, which it then kept alive: inlined, or handed those, the
+    // search grew the pendulum's image by half a kilobyte.
+    #[cold]
+    #[inline(never)]
+    fn non_finite_length(&self) -> Error {
+        non_finite_path::<S, G>(self.points.iter().map(|p| p.position))
+    }
+
+    /// The error of a non-finite tension: the force on the path's first
+    /// body.
+    #[cold]
+    #[inline(never)]
+    fn non_finite_tension(&self) -> Error {
+        Error::NonFinite {
+            quantity: Quantity::ExternalForce,
+            index: self.points.iter().find_map(|p| p.body).unwrap_or(0),
+        }
+    }
+
     /// The same path in another scalar type.
     #[must_use]
     pub fn cast<T: Scalar>(&self) -> Path<T, G, K> {
@@ -166,6 +233,30 @@ impl<S: Scalar, G: PointGeometry, const K: usize> Path<S, G, K> {
                 position: G::cast_point(&self.points[k].position),
             }),
         }
+    }
+}
+
+/// The error of a path whose length or rate came out non-finite, from
+/// the points' world positions: the first that is not finite, otherwise
+/// an overflow.
+#[inline]
+pub(crate) fn non_finite_path<S: Scalar, G: PointGeometry>(
+    mut points: impl Iterator<Item = G::Point<S>>,
+) -> Error {
+    // `p − p` is zero exactly when every entry of `p` is finite.
+    let finite = |p: &G::Point<S>| {
+        let zero = G::point_sub(p, p);
+        G::point_dot(&zero, &zero) == S::ZERO
+    };
+    match points.position(|p| !finite(&p)) {
+        Some(index) => Error::NonFinite {
+            quantity: Quantity::PathPoint,
+            index,
+        },
+        None => Error::NonFiniteResult {
+            quantity: Quantity::PathPoint,
+            index: 0,
+        },
     }
 }
 

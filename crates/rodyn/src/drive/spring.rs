@@ -104,9 +104,13 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
         _w: &[S],
         out: &mut DriveForces<S, G, NB, NV>,
     ) -> Result<()> {
-        let kin = self.path.kinematics(state.data)?;
-        self.path
-            .add_tension(&kin, self.tension(kin.length)?, state.data, &mut out.f_ext)
+        let kin = self.path.kinematics_in_element(state.data)?;
+        self.path.add_tension_in_element(
+            &kin,
+            self.tension(kin.length)?,
+            state.data,
+            &mut out.f_ext,
+        )
     }
     fn add_state_derivatives(
         &self,
@@ -205,9 +209,13 @@ impl<S: Scalar, G: PointGeometry, const K: usize, const NB: usize, const NV: usi
         _w: &[S],
         out: &mut DriveForces<S, G, NB, NV>,
     ) -> Result<()> {
-        let kin = self.path.kinematics(state.data)?;
-        self.path
-            .add_tension(&kin, self.tension(kin.length)?, state.data, &mut out.f_ext)
+        let kin = self.path.kinematics_in_element(state.data)?;
+        self.path.add_tension_in_element(
+            &kin,
+            self.tension(kin.length)?,
+            state.data,
+            &mut out.f_ext,
+        )
     }
     fn add_state_derivatives(
         &self,

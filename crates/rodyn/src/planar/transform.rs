@@ -33,13 +33,14 @@ impl<S: Scalar> PlanarTransform<S> {
     /// # Errors
     /// The first [`ParameterProblem`] found.
     pub fn validate(&self) -> Result<(), ParameterProblem> {
-        let n = (self.cos * self.cos + self.sin * self.sin).to_f64();
+        // Compared in `S`, as the 3-D placements.
+        let n = self.cos * self.cos + self.sin * self.sin;
         if !self.is_finite() {
             Err(ParameterProblem::NonFinite)
         } else if !self.trans.norm_squared().squared().is_finite() {
             // As the 3-D placements: ABA multiplies two m |p|² entries.
             Err(ParameterProblem::Overflow)
-        } else if (n - 1.0).abs() <= 1e3 * S::EPSILON {
+        } else if (n - S::ONE).abs() <= S::from_f64(1e3 * S::EPSILON) {
             Ok(())
         } else {
             Err(ParameterProblem::RotationNotOrthonormal)

@@ -3,8 +3,8 @@
 use crate::algorithm::forward_dynamics::Aba;
 use crate::data::Data;
 use crate::drive::{forward_dynamics_with_drives, DriveForces, DriveState, ForceElement};
-use crate::error::Result;
-use crate::model::Model;
+use crate::error::{Quantity, Result};
+use crate::model::{check_finite, check_matrix_result, Model};
 use crate::sensitivity::aba_response;
 use crate::space::Space;
 use crate::Scalar;
@@ -17,8 +17,39 @@ use crate::Scalar;
 /// articulated quantities. `data` is only read.
 ///
 /// # Errors
-/// [`Error::InvalidDrive`](crate::Error::InvalidDrive) from the elements.
+/// [`Error::NonFinite`](crate::Error::NonFinite) with
+/// [`Quantity::DriveInput`] for a non-finite input `w`;
+/// [`Error::InvalidDrive`](crate::Error::InvalidDrive) from the elements;
+/// [`Error::NonFiniteResult`](crate::Error::NonFiniteResult) with
+/// [`Quantity::Derivative`] for an entry of `out` that overflows.
 pub fn input_sensitivity<
+    S,
+    G,
+    E,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    const NU: usize,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    data: &Data<S, NB, NV, G>,
+    q: &[S; NQ],
+    v: &[S; NV],
+    elements: &E,
+    w: &[S; NU],
+    out: &mut [[S; NU]; NV],
+) -> Result<()>
+where
+    S: Scalar,
+    G: Space,
+    E: ForceElement<S, G, NB, NV> + ?Sized,
+{
+    check_finite(w, Quantity::DriveInput)?;
+    sensitivity_of_checked_inputs(model, data, q, v, elements, w, out)
+}
+
+/// [`input_sensitivity`] for inputs `w` already checked.
+fn sensitivity_of_checked_inputs<
     S,
     G,
     E,
@@ -57,7 +88,7 @@ where
             row[k] = *value;
         }
     }
-    Ok(())
+    check_matrix_result(out.as_flattened(), Quantity::Derivative)
 }
 
 /// Forward dynamics by ABA under drives and the sensitivity matrix
@@ -96,6 +127,7 @@ where
     forward_dynamics_with_drives::<Aba, _, _, _, NB, NQ, NV>(
         model, data, q, v, tau, elements, w, forces,
     )?;
-    input_sensitivity(model, data, q, v, elements, w, sensitivity)?;
+    // `forward_dynamics_with_drives` has checked `w`.
+    sensitivity_of_checked_inputs(model, data, q, v, elements, w, sensitivity)?;
     Ok(&data.ddq)
 }

@@ -106,12 +106,14 @@ impl<S: Scalar> Transform<S> {
         if !self.trans.norm_squared().squared().is_finite() {
             return Err(ParameterProblem::Overflow);
         }
+        // Compared in `S`: an `f32` target would otherwise pull software
+        // doubles into a Cortex-M4F image.
         let rtr = self.rot.tr_mul_mat(&self.rot);
-        let tol = 1e3 * S::EPSILON;
+        let tol = S::from_f64(1e3 * S::EPSILON);
         for a in 0..3 {
             for b in 0..3 {
-                let expect = if a == b { 1.0 } else { 0.0 };
-                if (rtr.m[a][b].to_f64() - expect).abs() > tol {
+                let expect = if a == b { S::ONE } else { S::ZERO };
+                if (rtr.m[a][b] - expect).abs() > tol {
                     return Err(ParameterProblem::RotationNotOrthonormal);
                 }
             }
@@ -121,7 +123,7 @@ impl<S: Scalar> Transform<S> {
         let det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
             - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
             + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-        if det.to_f64() < 0.0 {
+        if det < S::ZERO {
             return Err(ParameterProblem::Reflection);
         }
         Ok(())
