@@ -87,6 +87,13 @@ macro_rules! define_classes {
                 }
             }
 
+            /// Sets the world's gravity (the linear part of `gravity`, m/s²).
+            pub fn set_gravity(&mut self, gravity: rodyn::spatial::Motion<f64>) -> rodyn::Result<()> {
+                match self {
+                    $( Self::$name(m) => m.model.set_gravity(gravity), )*
+                }
+            }
+
             /// The class's capacities `(NB, NQ, NV)`.
             pub fn capacity(&self) -> (usize, usize, usize) {
                 match self {

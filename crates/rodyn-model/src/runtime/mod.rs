@@ -109,6 +109,7 @@ pub struct RuntimeModel {
     nq: usize,
     nv: usize,
     neutral: Vec<f64>,
+    gravity: [f64; 3],
 }
 
 /// A [`RuntimeModel`]'s scratch memory (rodyn's `Data` and the algorithms'
@@ -174,6 +175,7 @@ impl RuntimeModel {
             .iter()
             .map(|b| b.joint_name.clone())
             .collect();
+        let gravity = description.gravity;
         let mut model = Self {
             class,
             description,
@@ -182,6 +184,7 @@ impl RuntimeModel {
             nq,
             nv,
             neutral: Vec::new(),
+            gravity,
         };
         model.neutral = model.compute_neutral();
         Ok(model)
@@ -221,6 +224,35 @@ impl RuntimeModel {
     #[must_use]
     pub fn description(&self) -> &ModelDescription {
         &self.description
+    }
+
+    /// The gravitational acceleration in the world frame (m/s²).
+    #[must_use]
+    pub fn gravity_vector(&self) -> [f64; 3] {
+        self.gravity
+    }
+
+    /// Sets the gravitational acceleration in the world frame (m/s²): a
+    /// URDF has none, and the file's default is `[0, 0, -9.80665]`.
+    ///
+    /// # Errors
+    /// A non-finite component.
+    pub fn set_gravity(&mut self, gravity: [f64; 3]) -> Result<(), RuntimeError> {
+        if let Some(k) = gravity.iter().position(|g| !g.is_finite()) {
+            return Err(RuntimeError::invalid_input(format!(
+                "gravity[{k}] is {}",
+                gravity[k]
+            )));
+        }
+        let motion = rodyn::spatial::Motion::new(
+            rodyn::spatial::Vec3::ZERO,
+            rodyn::spatial::Vec3::new(gravity[0], gravity[1], gravity[2]),
+        );
+        self.class
+            .set_gravity(motion)
+            .map_err(|e| RuntimeError::invalid_input(format!("gravity: {e}")))?;
+        self.gravity = gravity;
+        Ok(())
     }
 
     /// The size class's capacities `(NB, NQ, NV)`: the file's bodies and
