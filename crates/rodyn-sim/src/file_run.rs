@@ -10,6 +10,7 @@ use crate::plot::{plot, Figure, Mark, Scale, Series};
 use crate::progress::Progress;
 use crate::scenario::{IntegratorKind, Method};
 use crate::trajectory::Trajectory;
+use clap::ValueEnum;
 use rodyn_model::runtime::{RuntimeError, RuntimeModel, Workspace};
 use rodyn_model::{view, visual, LoadOptions};
 use std::path::Path;
@@ -45,7 +46,10 @@ pub fn check_integrator(integrator: IntegratorKind) -> Result<(), String> {
     match integrator {
         IntegratorKind::ExplicitEuler | IntegratorKind::SemiImplicitEuler | IntegratorKind::Rk4 => Ok(()),
         other => Err(format!(
-            "--integrator {other:?} is not available with --model (explicit-euler, semi-implicit-euler and rk4 are)"
+            "--integrator {} is not available with --model (explicit-euler, semi-implicit-euler and rk4 are)",
+            other
+                .to_possible_value()
+                .map_or_else(|| format!("{other:?}"), |v| v.get_name().to_string())
         )),
     }
 }
