@@ -7,7 +7,7 @@ fn main() {
     let models = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../models");
     let _ = rodyn_model::build::compile(models.join("gait_planar.toml"), "gait_planar");
     let _ = rodyn_model::build::compile(models.join("gait_subject01.toml"), "gait_subject01");
-    for model in ["pendulum", "panda", "two_link_muscles", "aibo"] {
+    for model in ["pendulum", "panda", "two_link_muscles", "aibo", "solo12"] {
         let _ = rodyn_model::build::compile(models.join(format!("{model}.toml")), model);
     }
     // Continuous joints on a free flyer, for the configuration conversion.

@@ -17,7 +17,7 @@ use rodyn::algorithm::crba::crba;
 use rodyn::algorithm::rnea::rnea;
 use rodyn::Data;
 use rodyn_cli::writable_file;
-use rodyn_model::runtime::{RuntimeModel, MAX_BODIES, MAX_NV};
+use rodyn_model::runtime::{PaddedRuntimeModel, MAX_BODIES, MAX_NV};
 use rodyn_model::{load, LoadOptions};
 use serde_json::{json, Value};
 
@@ -50,7 +50,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         };
         let warnings = description.warnings.len();
         let (nq, nv) = (description.nq(), description.nv());
-        let runtime = match RuntimeModel::new(description) {
+        let runtime = match PaddedRuntimeModel::new(description) {
             Ok(r) => r,
             Err(e) => {
                 results.push(json!({"urdf": urdf, "loaded": false, "error": e.to_string()}));

@@ -251,12 +251,12 @@ fn run(args: &[String]) -> Result<(), String> {
                 let (t, mut qs) = trajectory_csv::read(
                     &text,
                     &csv.display().to_string(),
-                    runtime.description.nq(),
+                    runtime.description().nq(),
                 )?;
                 // The free flyers' quaternions, in the file's layout.
                 let mut starts = Vec::new();
                 let mut k = 0;
-                for body in &runtime.description.bodies {
+                for body in &runtime.description().bodies {
                     k += match body.joint {
                         JointType::FreeFlyer => {
                             starts.push(k + 3);
@@ -275,7 +275,7 @@ fn run(args: &[String]) -> Result<(), String> {
             let html = rodyn_viewer::write_html(&scene)
                 .map_err(|e| format!("cannot write the page: {e}"))?;
             let path = output
-                .unwrap_or_else(|| PathBuf::from(format!("{}.html", runtime.description.name)));
+                .unwrap_or_else(|| PathBuf::from(format!("{}.html", runtime.description().name)));
             std::fs::write(&path, html).map_err(|e| format!("{}: {e}", path.display()))?;
             emit(&format!("wrote {}\n", path.display()))
         }

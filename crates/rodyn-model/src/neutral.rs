@@ -7,7 +7,7 @@
 use crate::codegen::generated_frames;
 use crate::description::ModelDescription;
 use crate::diagnostic::{Diagnostic, Location};
-use crate::runtime::{RuntimeModel, MAX_NV};
+use crate::runtime::{PaddedRuntimeModel, MAX_NV};
 use rodyn::algorithm::crba::crba;
 use rodyn::algorithm::dense::cholesky_in_place;
 use rodyn::Data;
@@ -43,7 +43,7 @@ pub fn singular_at_neutral(model: &ModelDescription) -> Option<Diagnostic> {
     if nv == 0 || nv > MAX_NV {
         return None;
     }
-    let runtime = RuntimeModel::new(model.clone()).ok()?;
+    let runtime = PaddedRuntimeModel::new(model.clone()).ok()?;
     let mut data = Box::new(Data::new());
     let q = runtime.model.neutral_configuration();
     let m = crba(&runtime.model, &mut data, &q).ok()?;

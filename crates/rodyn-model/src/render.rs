@@ -58,8 +58,8 @@ pub fn render_svg(
     q: &[f64],
     view: View,
     width: f64,
-) -> Result<String, rodyn::Error> {
-    let d = &model.description;
+) -> Result<String, crate::runtime::RuntimeError> {
+    let d = model.description();
     let poses = model.body_poses(q)?;
     let endpoints = model.endpoint_positions(&poses);
     let joint_at = |i: usize| view.project(&poses[i].trans);

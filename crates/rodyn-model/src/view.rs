@@ -11,7 +11,7 @@ use rodyn_viewer::{Body, ContactPoint, Endpoint, Joint, Pose, Scene, Trajectory}
 /// file's layout; empty: zeros).
 #[must_use]
 pub fn scene(model: &RuntimeModel, visuals: Visuals, q: &[f64]) -> Scene {
-    let d = &model.description;
+    let d = model.description();
     let mut scene = Scene::new(d.name.clone());
     let g = d.gravity;
     let g_norm = (g[0] * g[0] + g[1] * g[1] + g[2] * g[2]).sqrt();

@@ -4,7 +4,7 @@
 use rodyn::algorithm::rnea::gravity_torques;
 use rodyn::Data;
 use rodyn_model::render::{render_svg, View};
-use rodyn_model::runtime::{RuntimeModel, MAX_BODIES, MAX_NV};
+use rodyn_model::runtime::{PaddedRuntimeModel, RuntimeModel, MAX_BODIES, MAX_NV};
 use rodyn_model::tree::render_tree;
 use rodyn_model::{load, LoadOptions};
 use std::path::Path;
@@ -18,7 +18,7 @@ fn model(file: &str) -> rodyn_model::ModelDescription {
 
 #[test]
 fn padded_panda_has_the_gravity_torques_of_a_hand_computation() {
-    let runtime = RuntimeModel::new(model("panda.toml")).unwrap();
+    let runtime = PaddedRuntimeModel::new(model("panda.toml")).unwrap();
     runtime.model.validate().unwrap();
     let mut data: Box<Data<f64, MAX_BODIES, MAX_NV>> = Box::default();
     // At q = 0 the Panda stands upright: joints 1, 3, 5, 7 turn about the

@@ -1,5 +1,7 @@
-//! The model of a file built at run time, for the host tools (`tree`,
-//! `render`) that cannot know its sizes at compile time.
+//! The first run-time model: one padded capacity for every file, kept for
+//! the callers that want rodyn's `Model` itself ([`PaddedRuntimeModel::model`]);
+//! [`RuntimeModel`](super::RuntimeModel) is the fast one with every
+//! algorithm.
 //!
 //! rodyn's sizes are const parameters, so a run-time model uses fixed
 //! capacities ([`MAX_BODIES`], [`MAX_NV`], [`MAX_FREE_FLYERS`]) and fills
@@ -32,7 +34,7 @@ pub const MAX_NQ: usize = MAX_NV + MAX_FREE_FLYERS;
 pub type PaddedModel = Model<f64, MAX_BODIES, MAX_NQ, MAX_NV>;
 
 /// A model file's model, built at run time.
-pub struct RuntimeModel {
+pub struct PaddedRuntimeModel {
     /// The padded model; bodies `0..nb` are the file's.
     pub model: Box<PaddedModel>,
     /// The file's description.
@@ -52,7 +54,7 @@ fn axis(a: &[f64; 3]) -> Axis<f64> {
     }
 }
 
-impl RuntimeModel {
+impl PaddedRuntimeModel {
     /// Builds the model of `description`.
     ///
     /// # Errors

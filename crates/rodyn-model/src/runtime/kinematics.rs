@@ -1,0 +1,251 @@
+//! Frames, Jacobians and their time variation, the centre of mass and the
+//! centroidal map.
+
+use super::check::Input;
+use super::{RuntimeError, RuntimeModel, Workspace};
+use rodyn::algorithm::centroidal::centroidal_map;
+use rodyn::algorithm::energy::center_of_mass;
+use rodyn::algorithm::frame_chain::frame_jacobian_from_q;
+use rodyn::algorithm::frames::{frame_placement, ReferenceFrame};
+use rodyn::algorithm::jacobian::{frame_jacobian_time_variation, joint_jacobians_time_variation};
+use rodyn::algorithm::kinematics::forward_kinematics;
+use rodyn::spatial::{Motion, Transform};
+
+/// The frame a Jacobian's rows are expressed in (Pinocchio's
+/// `ReferenceFrame`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Reference {
+    /// The frame's own axes, at its origin (`LOCAL`).
+    Local,
+    /// The world's axes, at the world's origin (`WORLD`).
+    World,
+    /// The world's axes, at the frame's origin (`LOCAL_WORLD_ALIGNED`).
+    LocalWorldAligned,
+}
+
+impl Reference {
+    fn rodyn(self) -> ReferenceFrame {
+        match self {
+            Self::Local => ReferenceFrame::Local,
+            Self::World => ReferenceFrame::World,
+            Self::LocalWorldAligned => ReferenceFrame::LocalWorldAligned,
+        }
+    }
+}
+
+/// `m` as a 4 × 4 homogeneous matrix, row-major.
+fn homogeneous(m: &Transform<f64>, out: &mut [f64; 16]) {
+    for r in 0..3 {
+        out[4 * r..4 * r + 3].copy_from_slice(&m.rot.m[r]);
+    }
+    out[3] = m.trans.x;
+    out[7] = m.trans.y;
+    out[11] = m.trans.z;
+    out[12..].copy_from_slice(&[0.0, 0.0, 0.0, 1.0]);
+}
+
+/// The first `nv` columns as a `6 × nv` row-major matrix, linear rows first.
+fn linear_first_rows(columns: &[Motion<f64>], nv: usize, out: &mut [f64]) {
+    for (k, c) in columns[..nv].iter().enumerate() {
+        for (r, x) in c.to_linear_first().into_iter().enumerate() {
+            out[r * nv + k] = x;
+        }
+    }
+}
+
+impl RuntimeModel {
+    /// The world placement `ᵒMf` of `frame` at `q`, a 4 × 4 homogeneous
+    /// matrix, row-major.
+    ///
+    /// # Errors
+    /// An unknown frame; as [`rnea`](Self::rnea).
+    pub fn frame_placement(
+        &self,
+        ws: &mut Workspace,
+        q: &[f64],
+        frame: &str,
+        out: &mut [f64; 16],
+    ) -> Result<(), RuntimeError> {
+        let f = self.frame(frame)?;
+        self.check_q(q)?;
+        dispatch!(&self.class, &mut ws.class, |m, s| {
+            let s = &mut **s;
+            s.set_q(q);
+            let inputs = [Input {
+                name: "q",
+                values: q,
+            }];
+            forward_kinematics(&m.model, &mut s.data, &s.q)
+                .and_then(|()| frame_placement(&s.data, f))
+                .map(|o_m_f| homogeneous(&o_m_f, out))
+                .map_err(|e| self.explain("frame placement", &e, &inputs))
+        })
+    }
+
+    /// The Jacobian of `frame` at `q` in `reference` into `out`: `6 × nv`,
+    /// row-major, linear rows first (Pinocchio's `computeFrameJacobian`),
+    /// walking only the joints that move the frame.
+    ///
+    /// # Errors
+    /// An unknown frame; as [`rnea`](Self::rnea).
+    pub fn frame_jacobian(
+        &self,
+        ws: &mut Workspace,
+        q: &[f64],
+        frame: &str,
+        reference: Reference,
+        out: &mut [f64],
+    ) -> Result<(), RuntimeError> {
+        let f = self.frame(frame)?;
+        self.check_q(q)?;
+        self.check_matrix("out", out, 6)?;
+        let nv = self.nv;
+        dispatch!(&self.class, &mut ws.class, |m, s| {
+            let s = &mut **s;
+            s.set_q(q);
+            match frame_jacobian_from_q(&m.model, &s.q, f, reference.rodyn(), &mut s.columns) {
+                Ok(_) => {
+                    linear_first_rows(&s.columns[..], nv, out);
+                    Ok(())
+                }
+                Err(e) => Err(self.explain(
+                    "frame Jacobian",
+                    &e,
+                    &[Input {
+                        name: "q",
+                        values: q,
+                    }],
+                )),
+            }
+        })
+    }
+
+    /// The time variation `J̇(q, v)` of `frame`'s Jacobian in `reference`
+    /// into `out` (`6 × nv`, as [`frame_jacobian`](Self::frame_jacobian);
+    /// Pinocchio's `getFrameJacobianTimeVariation`).
+    ///
+    /// # Errors
+    /// An unknown frame; as [`rnea`](Self::rnea).
+    pub fn frame_jacobian_time_variation(
+        &self,
+        ws: &mut Workspace,
+        q: &[f64],
+        v: &[f64],
+        frame: &str,
+        reference: Reference,
+        out: &mut [f64],
+    ) -> Result<(), RuntimeError> {
+        let f = self.frame(frame)?;
+        self.check_q(q)?;
+        self.check_nv("v", v)?;
+        self.check_matrix("out", out, 6)?;
+        let nv = self.nv;
+        dispatch!(&self.class, &mut ws.class, |m, s| {
+            let s = &mut **s;
+            s.set_q(q);
+            s.set_v(v);
+            let result =
+                joint_jacobians_time_variation(&m.model, &mut s.data, &mut s.jacobians, &s.q, &s.v)
+                    .and_then(|()| {
+                        frame_jacobian_time_variation(
+                            &m.model,
+                            &s.data,
+                            &s.jacobians,
+                            f,
+                            reference.rodyn(),
+                            &mut s.columns,
+                        )
+                    });
+            match result {
+                Ok(()) => {
+                    linear_first_rows(&s.columns[..], nv, out);
+                    Ok(())
+                }
+                Err(e) => Err(self.explain(
+                    "frame Jacobian time variation",
+                    &e,
+                    &[
+                        Input {
+                            name: "q",
+                            values: q,
+                        },
+                        Input {
+                            name: "v",
+                            values: v,
+                        },
+                    ],
+                )),
+            }
+        })
+    }
+
+    /// The centre of mass at `q`, world frame (m).
+    ///
+    /// # Errors
+    /// As [`rnea`](Self::rnea); a model without mass.
+    pub fn com(
+        &self,
+        ws: &mut Workspace,
+        q: &[f64],
+        out: &mut [f64; 3],
+    ) -> Result<(), RuntimeError> {
+        self.check_q(q)?;
+        dispatch!(&self.class, &mut ws.class, |m, s| {
+            let s = &mut **s;
+            s.set_q(q);
+            match center_of_mass(&m.model, &mut s.data, &s.q) {
+                Ok((c, _mass)) => {
+                    *out = [c.x, c.y, c.z];
+                    Ok(())
+                }
+                Err(e) => Err(self.explain(
+                    "centre of mass",
+                    &e,
+                    &[Input {
+                        name: "q",
+                        values: q,
+                    }],
+                )),
+            }
+        })
+    }
+
+    /// The centroidal momentum map `A_g(q)` into `out`: `6 × nv`,
+    /// row-major, linear momentum rows first (Pinocchio's
+    /// `computeCentroidalMap`), about the centre of mass in world axes.
+    ///
+    /// # Errors
+    /// As [`rnea`](Self::rnea).
+    pub fn centroidal_map(
+        &self,
+        ws: &mut Workspace,
+        q: &[f64],
+        out: &mut [f64],
+    ) -> Result<(), RuntimeError> {
+        self.check_q(q)?;
+        self.check_matrix("out", out, 6)?;
+        let nv = self.nv;
+        dispatch!(&self.class, &mut ws.class, |m, s| {
+            let s = &mut **s;
+            s.set_q(q);
+            match centroidal_map(&m.model, &mut s.data, &mut s.centroidal, &s.q) {
+                Ok(()) => {
+                    for (k, column) in s.centroidal.ag[..nv].iter().enumerate() {
+                        for (r, x) in column.to_linear_first().into_iter().enumerate() {
+                            out[r * nv + k] = x;
+                        }
+                    }
+                    Ok(())
+                }
+                Err(e) => Err(self.explain(
+                    "centroidal map",
+                    &e,
+                    &[Input {
+                        name: "q",
+                        values: q,
+                    }],
+                )),
+            }
+        })
+    }
+}
