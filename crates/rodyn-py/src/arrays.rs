@@ -15,11 +15,10 @@
 //! input is refused, so a mutable slice never aliases a shared one.
 
 use crate::errors::value_error;
+use numpy::ndarray::Dimension;
 use numpy::npyffi::flags::NPY_ARRAY_WRITEABLE;
 use numpy::npyffi::objects::_PyArray_GET_ITEM_DATA;
-use numpy::{
-    PyArray1, PyArray2, PyArrayDyn, PyArrayMethods, PyUntypedArray, PyUntypedArrayMethods,
-};
+use numpy::{PyArray, PyArray1, PyArray2, PyArrayMethods, PyUntypedArray, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 
 /// A vector argument (`q`, `v`, `tau`, ...) before it is read.
@@ -105,13 +104,17 @@ fn dtype_name(array: &Bound<'_, PyUntypedArray>) -> String {
 }
 
 fn not_numbers(name: &str, object: &Bound<'_, PyAny>) -> PyErr {
-    let type_name = object
+    value_error(format!(
+        "{name} must be a float64 numpy array or a sequence of numbers, not {}",
+        type_name(object)
+    ))
+}
+
+fn type_name(object: &Bound<'_, PyAny>) -> String {
+    object
         .get_type()
         .name()
-        .map_or_else(|_| "?".to_owned(), |n| n.to_string());
-    value_error(format!(
-        "{name} must be a float64 numpy array or a sequence of numbers, not {type_name}"
-    ))
+        .map_or_else(|_| "?".to_owned(), |n| n.to_string())
 }
 
 fn wrong_array(name: &str, array: &Bound<'_, PyUntypedArray>, wanted: &str) -> PyErr {
@@ -137,10 +140,7 @@ pub fn output_vector<'py>(
 ) -> PyResult<Bound<'py, PyArray1<f64>>> {
     match out {
         None => Ok(PyArray1::zeros(py, len, false)),
-        Some(object) => {
-            let array = checked_out(object, &[len])?;
-            Ok(array.cast_into::<PyArray1<f64>>()?)
-        }
+        Some(object) => checked_out(object, &[len]),
     }
 }
 
@@ -153,32 +153,19 @@ pub fn output_matrix<'py>(
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
     match out {
         None => Ok(PyArray2::zeros(py, [rows, columns], false)),
-        Some(object) => {
-            let array = checked_out(object, &[rows, columns])?;
-            Ok(array.cast_into::<PyArray2<f64>>()?)
-        }
+        Some(object) => checked_out(object, &[rows, columns]),
     }
 }
 
-fn checked_out<'py>(
+/// `object` as a writable C-contiguous float64 array of `shape`; the
+/// reasons it is not are looked up only when it is not.
+fn checked_out<'py, D: Dimension>(
     object: &Bound<'py, PyAny>,
     shape: &[usize],
-) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-    let Ok(array) = object.cast::<PyUntypedArray>() else {
-        return Err(value_error(format!(
-            "out must be a float64 numpy array of shape {shape:?}, not {}",
-            object
-                .get_type()
-                .name()
-                .map_or_else(|_| "?".to_owned(), |n| n.to_string())
-        )));
+) -> PyResult<Bound<'py, PyArray<f64, D>>> {
+    let Ok(array) = object.cast::<PyArray<f64, D>>() else {
+        return Err(out_of_wrong_type(object, shape));
     };
-    let dtype = dtype_name(array);
-    if dtype != "float64" {
-        return Err(value_error(format!(
-            "out must be a float64 array, not {dtype}"
-        )));
-    }
     if array.shape() != shape {
         return Err(value_error(format!(
             "out has shape {:?}; this result has shape {shape:?}",
@@ -195,7 +182,25 @@ fn checked_out<'py>(
     if flags & NPY_ARRAY_WRITEABLE == 0 {
         return Err(value_error("out is read-only; pass a writable array"));
     }
-    Ok(array.cast::<PyArrayDyn<f64>>()?.clone())
+    Ok(array.clone())
+}
+
+fn out_of_wrong_type(object: &Bound<'_, PyAny>, shape: &[usize]) -> PyErr {
+    let Ok(array) = object.cast::<PyUntypedArray>() else {
+        return value_error(format!(
+            "out must be a float64 numpy array of shape {shape:?}, not {}",
+            type_name(object)
+        ));
+    };
+    let dtype = dtype_name(array);
+    if dtype == "float64" {
+        value_error(format!(
+            "out has shape {:?}; this result has shape {shape:?}",
+            array.shape()
+        ))
+    } else {
+        value_error(format!("out must be a float64 array, not {dtype}"))
+    }
 }
 
 /// Refuses an `out` buffer (`len` floats at `data`) that shares memory

@@ -221,7 +221,7 @@ impl Model {
     }
 
     /// Inverse dynamics (RNEA): `tau = M(q) a + C(q, v) v + g(q)`.
-    #[pyo3(signature = (q, v, a, *, out = None))]
+    #[pyo3(signature = (q, v, a, out = None))]
     fn rnea<'py>(
         &mut self,
         py: Python<'py>,
@@ -247,7 +247,7 @@ impl Model {
     }
 
     /// Forward dynamics (ABA): `ddq = M(q)⁻¹ (tau − C(q, v) v − g(q))`.
-    #[pyo3(signature = (q, v, tau, *, out = None))]
+    #[pyo3(signature = (q, v, tau, out = None))]
     fn aba<'py>(
         &mut self,
         py: Python<'py>,
@@ -274,7 +274,7 @@ impl Model {
     }
 
     /// The joint-space mass matrix `M(q)` (CRBA), both triangles.
-    #[pyo3(signature = (q, *, out = None))]
+    #[pyo3(signature = (q, out = None))]
     fn crba<'py>(
         &mut self,
         py: Python<'py>,
@@ -355,7 +355,7 @@ impl Model {
     /// The 6×nv Jacobian of frame `name` at `q`, linear rows first, in
     /// `reference`: "local_world_aligned" (default), "local" or "world"
     /// (Pinocchio's `computeFrameJacobian`).
-    #[pyo3(signature = (q, name, reference = "local_world_aligned", *, out = None))]
+    #[pyo3(signature = (q, name, reference = "local_world_aligned", out = None))]
     fn frame_jacobian<'py>(
         &mut self,
         py: Python<'py>,
