@@ -12,17 +12,20 @@ which runs the forward kinematics as rodyn's `frame_jacobian` does). rodyn
 is timed twice: returning a new array, and writing into an `out=` buffer.
 
 Each round times a batch of calls of every variant in turn (interleaved,
-so that a slow moment of the machine falls on all of them); the table
-gives each variant's median over the rounds, in microseconds per call,
-Python's call overhead included, and rodyn's time over Pinocchio's.
+so that a slow moment of the machine falls on all of them alike); the
+table gives each variant's best round, in microseconds per call, Python's
+call overhead included, and rodyn's time over Pinocchio's. The best round
+rather than the median, as `timeit` advises: on a shared machine the other
+rounds measure the other processes (a median moved by 10-20x between two
+runs on a machine with a load of 11 on two cores).
 """
 
 from __future__ import annotations
 
 import argparse
 import datetime
+import os
 import platform
-import statistics
 import sys
 import sysconfig
 import time
@@ -111,8 +114,8 @@ def machine() -> str:
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--rounds", type=positive, default=41, help="interleaved rounds (median taken)")
-    parser.add_argument("--calls", type=positive, default=2000, help="calls per variant per round")
+    parser.add_argument("--rounds", type=positive, default=101, help="interleaved rounds (the best is taken)")
+    parser.add_argument("--calls", type=positive, default=300, help="calls per variant per round")
     args = parser.parse_args()
 
     rows = []
@@ -130,13 +133,14 @@ def main() -> None:
                 for v, call in calls.items():
                     samples[(f, v)].append(time_batch(call, args.calls))
         for f in table:
-            pin_us = statistics.median(samples[(f, "pinocchio")])
-            ours = statistics.median(samples[(f, "rodyn")])
-            ours_out = statistics.median(samples[(f, "rodyn out=")])
+            pin_us = min(samples[(f, "pinocchio")])
+            ours = min(samples[(f, "rodyn")])
+            ours_out = min(samples[(f, "rodyn out=")])
             rows.append((name, f, pin_us, ours, ours_out))
 
     print(f"{datetime.date.today().isoformat()}; {machine()}; "
-          f"median of {args.rounds} interleaved rounds of {args.calls} calls")
+          f"best of {args.rounds} interleaved rounds of {args.calls} calls; "
+          f"load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} CPUs")
     print()
     print("| robot | function | Pinocchio (µs) | rodyn (µs) | rodyn / Pinocchio | rodyn `out=` (µs) | `out=` / Pinocchio |")
     print("|---|---|---:|---:|---:|---:|---:|")
