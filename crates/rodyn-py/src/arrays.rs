@@ -110,6 +110,21 @@ fn not_numbers(name: &str, object: &Bound<'_, PyAny>) -> PyErr {
     ))
 }
 
+/// A shape as Python writes it: `(9, 9)`, `(9,)`.
+fn shape_text(shape: &[usize]) -> String {
+    match shape {
+        [n] => format!("({n},)"),
+        _ => format!(
+            "({})",
+            shape
+                .iter()
+                .map(ToString::to_string)
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+    }
+}
+
 fn type_name(object: &Bound<'_, PyAny>) -> String {
     object
         .get_type()
@@ -121,9 +136,9 @@ fn wrong_array(name: &str, array: &Bound<'_, PyUntypedArray>, wanted: &str) -> P
     let dtype = dtype_name(array);
     if dtype == "float64" {
         value_error(format!(
-            "{name} must be {wanted} float64 array; it has {} dimensions (shape {:?})",
+            "{name} must be {wanted} float64 array; it has {} dimensions (shape {})",
             array.ndim(),
-            array.shape()
+            shape_text(array.shape())
         ))
     } else {
         value_error(format!(
@@ -168,8 +183,9 @@ fn checked_out<'py, D: Dimension>(
     };
     if array.shape() != shape {
         return Err(value_error(format!(
-            "out has shape {:?}; this result has shape {shape:?}",
-            array.shape()
+            "out has shape {}; this result has shape {}",
+            shape_text(array.shape()),
+            shape_text(shape)
         )));
     }
     if !array.is_c_contiguous() {
@@ -188,15 +204,17 @@ fn checked_out<'py, D: Dimension>(
 fn out_of_wrong_type(object: &Bound<'_, PyAny>, shape: &[usize]) -> PyErr {
     let Ok(array) = object.cast::<PyUntypedArray>() else {
         return value_error(format!(
-            "out must be a float64 numpy array of shape {shape:?}, not {}",
+            "out must be a float64 numpy array of shape {}, not {}",
+            shape_text(shape),
             type_name(object)
         ));
     };
     let dtype = dtype_name(array);
     if dtype == "float64" {
         value_error(format!(
-            "out has shape {:?}; this result has shape {shape:?}",
-            array.shape()
+            "out has shape {}; this result has shape {}",
+            shape_text(array.shape()),
+            shape_text(shape)
         ))
     } else {
         value_error(format!("out must be a float64 array, not {dtype}"))
