@@ -282,7 +282,11 @@ fn agree<const NB: usize, const NQ: usize, const NV: usize>(
         for six_d in [false, true] {
             // Frame contacts on every foot of a point-footed robot would
             // hold more directions than it has: one is enough.
-            let contact_frames = if six_d { &contact_frames[..contact_frames.len().min(1)] } else { contact_frames };
+            let contact_frames = if six_d {
+                &contact_frames[..contact_frames.len().min(1)]
+            } else {
+                contact_frames
+            };
             let held: Vec<Contact<f64>> = contact_frames
                 .iter()
                 .map(|&k| {

@@ -18,10 +18,13 @@
 //! coordinate, endpoint and drive (see [`codegen`]). A broken file fails the
 //! build with `file:line:column: error: sentence`.
 //!
-//! On a host, [`runtime::RuntimeModel`] builds the same model at run time for
-//! the `rodyn-model tree`, `rodyn-model render` and `rodyn-model view`
-//! commands; [`view`] turns it, with the URDF's [`visual`] geometry, into a
-//! self-contained HTML page.
+//! On a host, [`runtime::RuntimeModel`] builds the same model at run time
+//! and runs every algorithm of the compiled path on it, slices in and out
+//! (for tools, notebooks and bindings that learn their robot when they
+//! run; enable the `size-classes` feature for speed); it also serves the
+//! `rodyn-model tree`, `rodyn-model render` and `rodyn-model view`
+//! commands. [`view`] turns it, with the URDF's [`visual`] geometry, into
+//! a self-contained HTML page.
 #![warn(missing_docs)]
 
 pub mod build;

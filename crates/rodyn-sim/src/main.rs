@@ -4,6 +4,7 @@
 //! ```text
 //! rodyn-sim run quadruped-trot --duration 5 --dt 1e-3 --method aba --integrator rk4 --scalar f64 -o out/
 //! rodyn-sim run quadruped-trot --html out/trot.html
+//! rodyn-sim run --model models/urdf/panda.urdf --integrator rk4 -o out/
 //! rodyn-sim chart -o docs/img/sim
 //! rodyn-sim chart --replot -o docs/img/sim
 //! rodyn-sim failures all -o docs/img/sim
@@ -12,6 +13,7 @@
 mod animate;
 mod chart;
 mod failures;
+mod file_run;
 mod models;
 mod plot;
 mod progress;
@@ -38,10 +40,20 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Run one scenario: CSV trajectory, SVG plot, GIF animation.
+    /// Run one scenario: CSV trajectory, SVG plot, GIF animation; or a
+    /// model file (--model), moving freely under gravity: CSV and plot.
     Run {
-        /// The scenario.
-        scenario: Scenario,
+        /// The scenario (or give --model).
+        #[arg(required_unless_present = "model")]
+        scenario: Option<Scenario>,
+        /// A URDF or rodyn TOML file to simulate instead of a scenario,
+        /// read at run time: free motion under gravity from its neutral
+        /// configuration, no torques, no contacts.
+        #[arg(long, value_name = "FILE", conflicts_with = "scenario")]
+        model: Option<PathBuf>,
+        /// With --model: the URDF's root on a free-flyer.
+        #[arg(long, requires = "model")]
+        floating_base: bool,
         /// Simulated time (s), positive, at most 1000 s and 10 million steps.
         // Hyphen values reach the value parser, which names the argument,
         // instead of being taken for an unknown option.
@@ -97,7 +109,9 @@ fn main() {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Run {
-            scenario,
+            scenario: None,
+            model: Some(model),
+            floating_base,
             duration,
             dt,
             method,
@@ -105,6 +119,29 @@ fn main() {
             scalar,
             out,
             html,
+        } => {
+            let run = file_run::FileRun {
+                model: &model,
+                floating_base,
+                duration: duration.get(),
+                dt: dt.map_or(1e-3, PositiveFinite::get),
+                method,
+                integrator,
+                sample_interval: 0.01,
+            };
+            check_file_run(&run, scalar, &out, html.as_deref())
+                .and_then(|()| file_run::run_file(&run, &out, html.as_deref()))
+        }
+        Command::Run {
+            scenario: Some(scenario),
+            duration,
+            dt,
+            method,
+            integrator,
+            scalar,
+            out,
+            html,
+            ..
         } => {
             let config = RunConfig {
                 scenario,
@@ -115,9 +152,10 @@ fn main() {
                 integrator,
                 sample_interval: 0.01,
             };
-            check_run(&config, &out, html.as_deref())
+            check_run(config.duration, config.dt, &out, html.as_deref())
                 .and_then(|()| run::run_command(&config, &out, html.as_deref()))
         }
+        Command::Run { .. } => Err("give a scenario or --model FILE".into()),
         Command::Chart {
             out,
             replot,
@@ -137,18 +175,19 @@ fn main() {
 /// or would take no step, and an output directory or page that cannot be
 /// written.
 fn check_run(
-    config: &RunConfig,
+    duration: f64,
+    dt: f64,
     out: &Path,
     html: Option<&Path>,
 ) -> Result<(), Box<dyn std::error::Error>> {
-    if config.duration > MAX_DURATION {
+    if duration > MAX_DURATION {
         return Err(format!(
             "--duration {} s is above the limit of {MAX_DURATION} s of simulated time",
-            shown(config.duration)
+            shown(duration)
         )
         .into());
     }
-    step_count(config.duration, config.dt, MAX_STEPS, "--duration", "--dt")?;
+    step_count(duration, dt, MAX_STEPS, "--duration", "--dt")?;
     if let Some(page) = html {
         let folder = page.parent().filter(|f| !f.as_os_str().is_empty());
         if let Some(folder) = folder {
@@ -162,6 +201,24 @@ fn check_run(
         writable_file(page).map_err(|e| format!("--html: {e}"))?;
     }
     check_output(out)
+}
+
+/// Refuses a file run's settings the run-time model cannot honour, the
+/// limits of [`check_run`], and an unreadable model file, before any work.
+fn check_file_run(
+    run: &file_run::FileRun<'_>,
+    scalar: ScalarType,
+    out: &Path,
+    html: Option<&Path>,
+) -> Result<(), Box<dyn std::error::Error>> {
+    if scalar != ScalarType::F64 {
+        return Err("--scalar: a model file runs in f64 (the run-time model's scalar)".into());
+    }
+    file_run::check_integrator(run.integrator)?;
+    if !run.model.is_file() {
+        return Err(format!("--model {}: no such file", run.model.display()).into());
+    }
+    check_run(run.duration, run.dt, out, html)
 }
 
 /// The output directory, created and checked for writing.

@@ -54,7 +54,8 @@ fn numeric(subcommand: &str) -> &'static [&'static str] {
 fn other(subcommand: &str) -> &'static [&'static str] {
     match subcommand {
         "run" => &[
-            "<SCENARIO>",
+            "[SCENARIO]",
+            "--model",
             "--method",
             "--integrator",
             "--scalar",
@@ -205,4 +206,66 @@ fn a_short_valid_run_still_succeeds_and_writes_its_files() {
     let csv = std::fs::read_to_string(out.join("arm-swing.csv")).unwrap();
     assert_eq!(csv.lines().count(), 1 + 6, "{csv}");
     assert!(out.join("arm-swing.svg").is_file() && out.join("arm-swing.gif").is_file());
+}
+
+#[test]
+fn a_model_file_runs_and_bad_ones_are_refused_by_name() {
+    let scratch = Scratch::new("model-file");
+    let out = scratch.path();
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let panda = root.join("models/urdf/panda.urdf");
+    let panda = panda.to_str().unwrap();
+    let ok = run(
+        exe(),
+        &[
+            "run",
+            "--model",
+            panda,
+            "--duration",
+            "0.05",
+            "--integrator",
+            "rk4",
+            "-o",
+            out,
+        ],
+    );
+    assert!(ok.status.success(), "{}", ok.stderr);
+    let csv = std::fs::read_to_string(Path::new(out).join("panda.csv")).unwrap();
+    assert!(csv.starts_with("t,q_panda_joint1,"), "{csv}");
+    assert_eq!(csv.lines().count(), 7, "a header and six samples");
+    assert_refused(
+        exe(),
+        &["run", "--model", "no/such.urdf", "-o", out],
+        "--model",
+    );
+    assert_refused(
+        exe(),
+        &[
+            "run",
+            "--model",
+            panda,
+            "--integrator",
+            "implicit-euler",
+            "-o",
+            out,
+        ],
+        "--integrator implicit-euler",
+    );
+    assert_refused(
+        exe(),
+        &["run", "--model", panda, "--scalar", "f32", "-o", out],
+        "--scalar",
+    );
+    assert_refused(
+        exe(),
+        &["run", "arm-swing", "--model", panda, "-o", out],
+        "--model",
+    );
+    let broken = Path::new(out).join("broken.urdf");
+    std::fs::write(&broken, "<robot name=\"x\"><link name=\"a\"/>\n<joint name=\"j\" type=\"revolute\"></joint></robot>").unwrap();
+    assert_refused(
+        exe(),
+        &["run", "--model", broken.to_str().unwrap(), "-o", out],
+        "broken.urdf:2:",
+    );
 }

@@ -13,7 +13,12 @@ use super::padded::{Padded, Scratch};
 use super::skeleton::Skeleton;
 
 /// Calls `$callback!(($args); classes…)` with every class as
-/// `(Variant, F, NB, NQ, NV)`, smallest first within one `F`.
+/// `(Variant, F, NB, NQ, NV)`, smallest first within one `F`: the
+/// geometric series with the `size-classes` feature (the tools and the
+/// bindings that time their calls), otherwise one class per `F` (every
+/// algorithm is there, at the largest class's cost: what a build script
+/// or a drawing needs, without monomorphizing the series).
+#[cfg(feature = "size-classes")]
 macro_rules! size_classes {
     ($callback:ident!($($args:tt)*)) => {
         $callback! { ($($args)*);
@@ -51,6 +56,17 @@ macro_rules! size_classes {
             (Floating96, 1, 96, 102, 101),
             (Floating124, 1, 124, 130, 129),
             (TwoFloating16, 2, 16, 30, 26),
+            (TwoFloating64, 2, 64, 78, 74),
+        }
+    };
+}
+
+#[cfg(not(feature = "size-classes"))]
+macro_rules! size_classes {
+    ($callback:ident!($($args:tt)*)) => {
+        $callback! { ($($args)*);
+            (Fixed128, 0, 128, 128, 128),
+            (Floating124, 1, 124, 130, 129),
             (TwoFloating64, 2, 64, 78, 74),
         }
     };

@@ -12,7 +12,31 @@
 //! equal the compiled model's; the cost is a few copies and the padding
 //! bodies (the design and its measured cost: `docs/sections/runtime.md`).
 //!
+//! **Speed needs the `size-classes` feature** of `rodyn-model`
+//! (`rodyn-model = { ..., features = ["size-classes"] }`): without it each
+//! call runs in the largest class (128 bodies), with the same results.
+//!
+//! # API notes (issue 41's contract)
+//!
+//! The names are the contract's. Beyond it: [`RuntimeError::kind`] tells
+//! bad input ([`RuntimeErrorKind::InvalidInput`], a `ValueError`) from a
+//! numerical failure; contacts are [`ContactSpec::point`] and
+//! [`ContactSpec::frame`] by frame name, `λ` has [`contact_rows`] entries;
+//! also [`forward_dynamics_crba`](RuntimeModel::forward_dynamics_crba),
+//! [`kinetic_energy`](RuntimeModel::kinetic_energy),
+//! [`potential_energy`](RuntimeModel::potential_energy),
+//! [`frame_jacobian_time_variation`](RuntimeModel::frame_jacobian_time_variation),
+//! [`impulse_dynamics`](RuntimeModel::impulse_dynamics),
+//! [`inverse_kinematics`](RuntimeModel::inverse_kinematics),
+//! [`integrate`](RuntimeModel::integrate) and
+//! [`set_gravity`](RuntimeModel::set_gravity) (a URDF has no gravity).
+//! Drives (motors, muscles) are not offered at run time yet.
+//!
 //! # Conventions (the same as the compiled model's)
+//!
+//! **Free-flyer `q` and `v`, matrix rows and Jacobian rows are already
+//! Pinocchio's: no copy or reordering is needed**, except for continuous
+//! joints (below).
 //!
 //! * `q` and `v` list the joints in the file's body order
 //!   ([`joint_names`](RuntimeModel::joint_names)), each joint's coordinates
