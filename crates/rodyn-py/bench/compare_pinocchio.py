@@ -118,25 +118,28 @@ def main() -> None:
     parser.add_argument("--calls", type=positive, default=300, help="calls per variant per round")
     args = parser.parse_args()
 
-    rows = []
+    tables = {}
     for name, urdf, floating, frame in ROBOTS:
         path = robots_dir() / urdf
         if not path.exists():
             sys.exit(f"compare_pinocchio: {path} is missing (pip install example-robot-data)")
-        table = variants(name, path, floating, frame)
-        samples = {(f, v): [] for f, calls in table.items() for v in calls}
-        for f, calls in table.items():  # warm-up
-            for call in calls.values():
-                time_batch(call, args.calls // 10 + 1)
-        for _ in range(args.rounds):
-            for f, calls in table.items():
-                for v, call in calls.items():
-                    samples[(f, v)].append(time_batch(call, args.calls))
+        tables[name] = variants(name, path, floating, frame)
+    samples = {(r, f, v): [] for r, table in tables.items() for f, calls in table.items() for v in calls}
+    for key in samples:  # warm-up
+        r, f, v = key
+        time_batch(tables[r][f][v], args.calls // 10 + 1)
+    # Every variant of every robot in each round.
+    for _ in range(args.rounds):
+        for key in samples:
+            r, f, v = key
+            samples[key].append(time_batch(tables[r][f][v], args.calls))
+    rows = []
+    for r, table in tables.items():
         for f in table:
-            pin_us = min(samples[(f, "pinocchio")])
-            ours = min(samples[(f, "rodyn")])
-            ours_out = min(samples[(f, "rodyn out=")])
-            rows.append((name, f, pin_us, ours, ours_out))
+            pin_us = min(samples[(r, f, "pinocchio")])
+            ours = min(samples[(r, f, "rodyn")])
+            ours_out = min(samples[(r, f, "rodyn out=")])
+            rows.append((r, f, pin_us, ours, ours_out))
 
     print(f"{datetime.date.today().isoformat()}; {machine()}; "
           f"best of {args.rounds} interleaved rounds of {args.calls} calls; "
