@@ -46,3 +46,24 @@ def test_random_configuration_without_seed_moves_on():
     first, second = m.random_configuration(), m.random_configuration()
     assert not np.array_equal(first, second)
     assert np.linalg.norm(first[3:7]) == pytest.approx(1.0, abs=1e-12)
+
+
+def _every_urdf():
+    from conftest import robots_dir
+
+    return sorted(robots_dir().rglob("*.urdf"))
+
+
+@pytest.mark.parametrize("path", _every_urdf(), ids=lambda p: p.name)
+def test_every_example_robot_data_urdf_loads_or_says_where(path):
+    """The issue's one-liner on every URDF of example-robot-data, fixed and
+    floating: the compiler refuses a file with a located ModelError, and a
+    model it builds runs ABA to finite accelerations."""
+    for floating in (False, True):
+        try:
+            m = rodyn.Model.from_urdf(path, floating_base=floating)
+        except rodyn.ModelError as error:
+            assert error.file == str(path) and error.line >= 1 and error.column >= 1
+            continue
+        ddq = m.aba(m.neutral(), [0] * m.nv, [0] * m.nv)
+        assert ddq.shape == (m.nv,) and np.all(np.isfinite(ddq))
