@@ -7,7 +7,7 @@
 //! Python `q` to rodyn's and back; for a model without continuous joints it
 //! is the identity and `q` is read in place.
 
-use rodyn::joint::{angle_from_cos_sin, cos_sin_from_angle};
+use rodyn::joint::angle_from_cos_sin;
 
 /// How a Python (Pinocchio) configuration maps to rodyn's.
 #[derive(Clone, Debug)]
@@ -87,9 +87,8 @@ impl ConfigurationLayout {
         let mut from = 0;
         for &(theta, _) in &self.continuous {
             out.extend_from_slice(&q[from..theta]);
-            // A finite angle always has a (cos, sin); rodyn's own
-            // configurations are finite.
-            let (cos, sin) = cos_sin_from_angle(q[theta]).unwrap_or((1.0, 0.0));
+            // rodyn's own configurations (neutral, random) are finite.
+            let (sin, cos) = q[theta].sin_cos();
             out.extend_from_slice(&[cos, sin]);
             from = theta + 1;
         }
