@@ -126,14 +126,14 @@ fn agree<const NB: usize, const NQ: usize, const NV: usize>(
         assert_close(
             &what("rnea"),
             &out,
-            &*rnea(model, &mut data, &q, &v, &a, None).unwrap(),
+            rnea(model, &mut data, &q, &v, &a, None).unwrap(),
             TOLERANCE,
         );
         runtime.aba(&mut ws, &q, &v, &tau, &mut out).unwrap();
         assert_close(
             &what("aba"),
             &out,
-            &*aba(model, &mut data, &q, &v, &tau, None).unwrap(),
+            aba(model, &mut data, &q, &v, &tau, None).unwrap(),
             TOLERANCE,
         );
         runtime
@@ -142,7 +142,7 @@ fn agree<const NB: usize, const NQ: usize, const NV: usize>(
         assert_close(
             &what("crba forward dynamics"),
             &out,
-            &*aba(model, &mut data, &q, &v, &tau, None).unwrap(),
+            aba(model, &mut data, &q, &v, &tau, None).unwrap(),
             1e-9,
         );
         runtime
@@ -151,14 +151,14 @@ fn agree<const NB: usize, const NQ: usize, const NV: usize>(
         assert_close(
             &what("nle"),
             &out,
-            &*nonlinear_effects(model, &mut data, &q, &v, None).unwrap(),
+            nonlinear_effects(model, &mut data, &q, &v, None).unwrap(),
             TOLERANCE,
         );
         runtime.gravity(&mut ws, &q, &mut out).unwrap();
         assert_close(
             &what("gravity"),
             &out,
-            &*gravity_torques(model, &mut data, &q).unwrap(),
+            gravity_torques(model, &mut data, &q).unwrap(),
             TOLERANCE,
         );
         let mut m = vec![0.0; NV * NV];

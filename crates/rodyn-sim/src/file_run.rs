@@ -78,7 +78,7 @@ impl Dynamics<'_> {
         integrator: IntegratorKind,
         dt: f64,
         q: &mut Vec<f64>,
-        v: &mut Vec<f64>,
+        v: &mut [f64],
     ) -> Result<(), RuntimeError> {
         let nv = v.len();
         let mut a = vec![0.0; nv];
@@ -93,8 +93,8 @@ impl Dynamics<'_> {
                 // Classical RK4 on (q, v), each stage's configuration moved
                 // along the joints' manifolds from q (a free-flyer's
                 // rates summed in its frame at q).
-                let mut stage_q = q.clone();
-                let mut stage_v = v.clone();
+                let mut stage_q = q.to_vec();
+                let mut stage_v = v.to_vec();
                 let (mut sum_v, mut sum_a) = (vec![0.0; nv], vec![0.0; nv]);
                 for (k, (weight, reach)) in [(1.0, 0.5), (2.0, 0.5), (2.0, 1.0), (1.0, 0.0)]
                     .into_iter()

@@ -103,7 +103,7 @@ impl RuntimeModel {
         dispatch!(&self.class, &mut ws.class, |m, s| {
             let s = &mut **s;
             s.set_q(q);
-            match frame_jacobian_from_q(&m.model, &s.q, f, reference.rodyn(), &mut *s.columns) {
+            match frame_jacobian_from_q(&m.model, &s.q, f, reference.rodyn(), &mut s.columns) {
                 Ok(_) => {
                     linear_first_rows(&s.columns[..], nv, out);
                     Ok(())
@@ -153,7 +153,7 @@ impl RuntimeModel {
                             &s.jacobians,
                             f,
                             reference.rodyn(),
-                            &mut *s.columns,
+                            &mut s.columns,
                         )
                     });
             match result {
