@@ -4,7 +4,7 @@
 //! | command                  | does                                                              |
 //! |--------------------------|-------------------------------------------------------------------|
 //! | `run [example]`          | builds the firmware, runs `example` (default: the arm controller) in QEMU, prints the decoded defmt log |
-//! | `test`                   | host tests (the core's and `rodyn-host-tests`' also in the in-order tuning profile), the no_std core for thumbv7em, every firmware example in QEMU against its expected output, sizes, panic sites, stack bounds, the viewer's pages in Chromium, the firmware template run from a copy outside the repository, lint |
+//! | `test`                   | host tests (the core's and `rodyn-host-tests`' also in the in-order tuning profile), the no_std core for thumbv7em, every firmware example in QEMU against its expected output, sizes, panic sites, stack bounds, the viewer's pages in Chromium, the Python bindings against Pinocchio's, the firmware template run from a copy outside the repository, lint |
 //! | `lint`                   | the core's layers (`layers`); rustfmt, clippy and rustdoc, warnings as errors, host and firmware; the core without float features stops at one error; `cargo package` of every crate, the published libraries built from their packages; their public API against `xtask/public-api/`; the core's unit tests under Miri (nightly), which stops at undefined behaviour |
 //! | `viewer`                 | the viewer's pages in headless Chromium (also a step of `test`): every model's page draws without an error, the Panda against its reference image, the trot moves when scrubbed |
 //! | `docs [--check]`         | regenerates every figure and table of the docs that a command draws the same on every run (`--check`: fails naming each committed file that differs) |
@@ -14,6 +14,7 @@
 //! | `panic-sites [image]`    | the panic call sites of one image (default: all) by source, function and line |
 //! | `layers`                 | the core's files import no file that imports them back, and each module only from its layer and those below (`xtask/src/layers.rs`) |
 //! | `public-api [--bless]`   | the public items of `rodyn` and `rodyn-model` (rustdoc JSON, nightly) against `xtask/public-api/*.txt`: a removed item fails; `--bless` rewrites the lists |
+//! | `python`                 | the Python bindings (also a step of `test`): `pip install ./crates/rodyn-py` into the venv of `python-env`, then their pytest suite against Pinocchio's bindings |
 //! | `python-env`             | makes or updates the test command's Python venv (Pinocchio 4.1, example-robot-data, numpy, pytest, matplotlib, maturin) under `target/python-venv` and prints its paths |
 //! | `bless`                  | rewrites `firmware/expected/*.log` from fresh runs, keeping `*` wildcards |
 //! | `profile [words]`        | one call of each algorithm on each model in QEMU with an instruction trace; prints where its instructions go, line by line (calls whose label contains every word) |
@@ -39,6 +40,7 @@ mod miri;
 mod panic_sites;
 mod profile;
 mod public_api;
+mod python;
 mod python_env;
 mod replay;
 mod setup;
@@ -52,7 +54,7 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 const USAGE: &str =
-    "usage: cargo xtask <run [example] [--html page.html] | test | lint | layers | docs [--check] | costs | family | stack [image [words]] | stack --frames <image> | stack --check-frames | panic-sites [image] | viewer | python-env | public-api [--bless] | bless | profile [model] [algorithm] | host-profile <algorithm> <model> [--pinocchio]>";
+    "usage: cargo xtask <run [example] [--html page.html] | test | lint | layers | docs [--check] | costs | family | stack [image [words]] | stack --frames <image> | stack --check-frames | panic-sites [image] | viewer | python | python-env | public-api [--bless] | bless | profile [model] [algorithm] | host-profile <algorithm> <model> [--pinocchio]>";
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -65,6 +67,7 @@ fn main() -> ExitCode {
         Some("family") => family::run_probes(),
         Some("viewer") => viewer::check(),
         Some("bless") => bless(),
+        Some("python") => python::check(),
         Some("python-env") => python_env::ensure().and_then(|venv| {
             println!("python: {}", venv.python().display());
             println!("example-robot-data robots: {}", venv.robots()?.display());
@@ -199,6 +202,7 @@ fn test() -> Result<()> {
     panic_sites::check()?;
     stack_bound::check()?;
     viewer::check()?;
+    python::check()?;
     template::check()?;
     lint()?;
 
