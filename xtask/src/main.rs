@@ -9,6 +9,7 @@
 //! | `viewer`                 | the viewer's pages in headless Chromium (also a step of `test`): every model's page draws without an error, the Panda against its reference image, the trot moves when scrubbed |
 //! | `docs [--check]`         | regenerates every figure and table of the docs that a command draws the same on every run (`--check`: fails naming each committed file that differs) |
 //! | `costs`                  | runs the cost probe, measures sizes and bounds the stack, rewrites the tables in `docs/sections/firmware.md` and `firmware/expected/sizes.txt`; builds and runs the probes on QEMU's Cortex-M3, M7 (f32 and f64) and M33 for `docs/sections/cortex_m_family.md` |
+//! | `boards [--bless]`       | builds the board images of `boards/` (nRF52840-DK, Nucleo-H743ZI, Pico 2) and checks their sizes against `boards/expected/sizes.txt`, their fit and their panic sites (a step of `test`; `--bless` records the sizes) |
 //! | `family`                 | builds the cost probes for QEMU's Cortex-M3, M7 (f32 and f64) and M33 and runs them (the step of `test`; `costs` writes their tables) |
 //! | `stack [image] [words]`  | worst-case stack per image and per cost-table row from a static call graph, checked against the painted figures (`--check-frames`: the frame reading against LLVM's `-Z emit-stack-sizes`) |
 //! | `panic-sites [image]`    | the panic call sites of one image (default: all) by source, function and line |
@@ -25,6 +26,7 @@
 //! command to run). `lint` adds Miri to an installed nightly toolchain
 //! through rustup; without a nightly toolchain it skips Miri and says so.
 
+mod boards;
 mod costs;
 mod defmt_log;
 mod docs;
@@ -50,7 +52,7 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 const USAGE: &str =
-    "usage: cargo xtask <run [example] [--html page.html] | test | lint | docs [--check] | costs | family | stack [image [words]] | stack --frames <image> | stack --check-frames | panic-sites [image] | viewer | python-env | public-api [--bless] | bless | profile [model] [algorithm] | host-profile <algorithm> <model> [--pinocchio]>";
+    "usage: cargo xtask <run [example] [--html page.html] | test | lint | docs [--check] | costs | family | boards [--bless] | stack [image [words]] | stack --frames <image> | stack --check-frames | panic-sites [image] | viewer | python-env | public-api [--bless] | bless | profile [model] [algorithm] | host-profile <algorithm> <model> [--pinocchio]>";
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -61,6 +63,7 @@ fn main() -> ExitCode {
         Some("docs") => docs::run(&args[1..]),
         Some("costs") => costs::regenerate(),
         Some("family") => family::run_probes(),
+        Some("boards") => boards::run(&args[1..]),
         Some("viewer") => viewer::check(),
         Some("bless") => bless(),
         Some("python-env") => python_env::ensure().and_then(|venv| {
@@ -193,6 +196,7 @@ fn test() -> Result<()> {
         family_started.elapsed().as_secs_f64()
     );
     docs::check_after_test()?;
+    boards::check()?;
     panic_sites::check()?;
     stack_bound::check()?;
     viewer::check()?;
