@@ -7,7 +7,8 @@
 //! `boards/expected/sizes.txt`, when an image does not fit its chip's flash
 //! or RAM (the `FLASH` and `RAM` lengths of the board's `memory.x`), or when
 //! rodyn has a panic call site in it (`crate::panic_sites`). `cargo xtask
-//! boards --bless` records the sizes of an intended change.
+//! boards --bless` records the sizes of an intended change; `cargo xtask
+//! lint` runs rustfmt and clippy over them ([`lint`]).
 
 use crate::{firmware, panic_sites, setup, shell};
 use anyhow::{bail, Context, Result};
@@ -311,6 +312,22 @@ pub fn check() -> Result<()> {
         BOARDS.len(),
         started.elapsed().as_secs_f64()
     );
+    Ok(())
+}
+
+/// rustfmt over the boards' workspace and clippy on each board, warnings
+/// as errors (a step of `cargo xtask lint`).
+pub fn lint() -> Result<()> {
+    setup::ensure_family_targets()?;
+    shell::cargo_in(workspace(), &["fmt", "--all", "--check"])?;
+    for board in &BOARDS {
+        let mut command = shell::cargo_command(&board.dir());
+        command
+            .args(["clippy", "--release", "--target-dir"])
+            .arg(board.target_dir())
+            .args(["--", "-D", "warnings"]);
+        shell::run(&mut command)?;
+    }
     Ok(())
 }
 

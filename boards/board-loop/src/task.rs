@@ -60,7 +60,7 @@ pub async fn run<S: Scalar>(model: &Panda<S>, cycles: CycleCounter, core_hz: u32
             if control_cycles.saturating_add(plant_cycles) > budget {
                 over_budget += 1;
             }
-            if arm.ticks() % TICK_HZ == 0 {
+            if arm.ticks().is_multiple_of(TICK_HZ) {
                 defmt::println!(
                     "t = {} ms: controller tick {} cycles (min {}, max {} over the last second)",
                     arm.ticks(),
