@@ -125,7 +125,17 @@ pub fn cargo_command() -> Command {
 /// [`cargo_command`] for another `target`, with `extra_rustflags` after the
 /// path remaps (the Cortex-M family's builds, `crate::family`).
 pub fn cargo_command_for(target: &str, extra_rustflags: &[&str]) -> Command {
-    let flags: Vec<String> = path_remaps()
+    cargo_command_in(&dir(), target, extra_rustflags)
+}
+
+/// [`cargo_command_for`] in another firmware workspace `workspace` whose
+/// `repo` links to the root (the boards', `crate::boards`).
+pub fn cargo_command_in(
+    workspace: &std::path::Path,
+    target: &str,
+    extra_rustflags: &[&str],
+) -> Command {
+    let flags: Vec<String> = path_remaps(workspace)
         .into_iter()
         .map(|(from, to)| format!("--remap-path-prefix={}={to}", from.display()))
         .chain(["--remap-path-scope=macro".to_string()])
@@ -134,7 +144,7 @@ pub fn cargo_command_for(target: &str, extra_rustflags: &[&str]) -> Command {
     // `--config` joins these to the rustflags of `firmware/.cargo/config.toml`
     // (a `RUSTFLAGS` variable would replace them).
     let list: Vec<String> = flags.iter().map(|f| toml_string(f)).collect();
-    let mut command = shell::cargo_command(&dir());
+    let mut command = shell::cargo_command(workspace);
     command
         .arg("--config")
         .arg(format!("target.{target}.rustflags = [{}]", list.join(", ")));
@@ -143,11 +153,11 @@ pub fn cargo_command_for(target: &str, extra_rustflags: &[&str]) -> Command {
 
 /// (directory, fixed name) pairs; rustc applies the last that matches, so
 /// a directory inside another comes after it.
-fn path_remaps() -> Vec<(PathBuf, &'static str)> {
+fn path_remaps(workspace: &std::path::Path) -> Vec<(PathBuf, &'static str)> {
     let root = shell::root();
     // The firmware reaches rodyn's crates through `firmware/repo`, a link
-    // to the root (see firmware/Cargo.toml).
-    let mut remaps = vec![(root.clone(), "rodyn"), (dir().join("repo"), "rodyn")];
+    // to the root (see firmware/Cargo.toml); the boards' workspace the same.
+    let mut remaps = vec![(root.clone(), "rodyn"), (workspace.join("repo"), "rodyn")];
     let target = shell::target_dir();
     if !target.starts_with(&root) {
         // Sources generated into OUT_DIR (the compiled model files).

@@ -4,11 +4,12 @@
 //! | command                  | does                                                              |
 //! |--------------------------|-------------------------------------------------------------------|
 //! | `run [example]`          | builds the firmware, runs `example` (default: the arm controller) in QEMU, prints the decoded defmt log |
-//! | `test`                   | host tests (the core's and `rodyn-host-tests`' also in the in-order tuning profile), the no_std core for thumbv7em, every firmware example in QEMU against its expected output, sizes, panic sites, stack bounds, the viewer's pages in Chromium, the Python bindings against Pinocchio's, the firmware template run from a copy outside the repository, lint |
-//! | `lint`                   | the core's layers (`layers`); rustfmt, clippy and rustdoc, warnings as errors, host and firmware; the core without float features stops at one error; `cargo package` of every crate, the published libraries built from their packages; their public API against `xtask/public-api/`; the core's unit tests under Miri (nightly), which stops at undefined behaviour |
+//! | `test`                   | host tests (the core's and `rodyn-host-tests`' also in the in-order tuning profile), the no_std core for thumbv7em, every firmware example in QEMU against its expected output, sizes, panic sites, stack bounds, the board images (sizes, fit, panic sites), the viewer's pages in Chromium, the Python bindings against Pinocchio's, the firmware template run from a copy outside the repository, lint |
+//! | `lint`                   | the core's layers (`layers`); rustfmt, clippy and rustdoc, warnings as errors, host, firmware and boards; the core without float features stops at one error; `cargo package` of every crate, the published libraries built from their packages; their public API against `xtask/public-api/`; the core's unit tests under Miri (nightly), which stops at undefined behaviour |
 //! | `viewer`                 | the viewer's pages in headless Chromium (also a step of `test`): every model's page draws without an error, the Panda against its reference image, the trot moves when scrubbed |
 //! | `docs [--check]`         | regenerates every figure and table of the docs that a command draws the same on every run (`--check`: fails naming each committed file that differs) |
 //! | `costs`                  | runs the cost probe, measures sizes and bounds the stack, rewrites the tables in `docs/sections/firmware.md` and `firmware/expected/sizes.txt`; builds and runs the probes on QEMU's Cortex-M3, M7 (f32 and f64) and M33 for `docs/sections/cortex_m_family.md` |
+//! | `boards [--bless]`       | builds the board images of `boards/` (nRF52840-DK, Nucleo-H743ZI, Pico 2) and checks their sizes against `boards/expected/sizes.txt`, their fit and their panic sites (a step of `test`; `--bless` records the sizes) |
 //! | `family`                 | builds the cost probes for QEMU's Cortex-M3, M7 (f32 and f64) and M33 and runs them (the step of `test`; `costs` writes their tables) |
 //! | `stack [image] [words]`  | worst-case stack per image and per cost-table row from a static call graph, checked against the painted figures (`--check-frames`: the frame reading against LLVM's `-Z emit-stack-sizes`) |
 //! | `panic-sites [image]`    | the panic call sites of one image (default: all) by source, function and line |
@@ -27,6 +28,7 @@
 //! command to run). `lint` adds Miri to an installed nightly toolchain
 //! through rustup; without a nightly toolchain it skips Miri and says so.
 
+mod boards;
 mod costs;
 mod defmt_log;
 mod docs;
@@ -54,7 +56,7 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 const USAGE: &str =
-    "usage: cargo xtask <run [example] [--html page.html] | test | lint | layers | docs [--check] | costs | family | stack [image [words]] | stack --frames <image> | stack --check-frames | panic-sites [image] | viewer | python | python-env | public-api [--bless] | bless | profile [model] [algorithm] | host-profile <algorithm> <model> [--pinocchio]>";
+    "usage: cargo xtask <run [example] [--html page.html] | test | lint | layers | docs [--check] | costs | family | boards [--bless] | stack [image [words]] | stack --frames <image> | stack --check-frames | panic-sites [image] | viewer | python | python-env | public-api [--bless] | bless | profile [model] [algorithm] | host-profile <algorithm> <model> [--pinocchio]>";
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -65,6 +67,7 @@ fn main() -> ExitCode {
         Some("docs") => docs::run(&args[1..]),
         Some("costs") => costs::regenerate(),
         Some("family") => family::run_probes(),
+        Some("boards") => boards::run(&args[1..]),
         Some("viewer") => viewer::check(),
         Some("bless") => bless(),
         Some("python") => python::check(),
@@ -199,6 +202,7 @@ fn test() -> Result<()> {
         family_started.elapsed().as_secs_f64()
     );
     docs::check_after_test()?;
+    boards::check()?;
     panic_sites::check()?;
     stack_bound::check()?;
     viewer::check()?;
@@ -264,6 +268,7 @@ fn lint() -> Result<()> {
     layers::run()?;
     shell::cargo(&["fmt", "--all", "--check"])?;
     shell::cargo_in(firmware::dir(), &["fmt", "--check"])?;
+    boards::lint()?;
     shell::cargo(&[
         "clippy",
         "--workspace",

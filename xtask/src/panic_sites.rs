@@ -18,7 +18,7 @@ use crate::profile::short_function;
 use crate::setup;
 use anyhow::{anyhow, bail, Context, Result};
 use std::collections::BTreeMap;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 
 /// The symbols a panic enters through (demangled prefixes).
@@ -71,15 +71,15 @@ fn ends_block(op: &str) -> bool {
 }
 
 /// The calls (`bl`, `b`, `b.w`) to a panic entry point in one image.
-fn calls(name: &str) -> Result<Vec<Call>> {
+fn calls(elf: &Path) -> Result<Vec<Call>> {
     let objdump = setup::llvm_tool("llvm-objdump")?;
     let output = Command::new(objdump)
         .args(["-d", "--no-show-raw-insn", "--demangle"])
-        .arg(firmware::elf_of(name))
+        .arg(elf)
         .output()
         .context("running llvm-objdump")?;
     if !output.status.success() {
-        bail!("llvm-objdump failed on {name}");
+        bail!("llvm-objdump failed on {}", elf.display());
     }
     let text = String::from_utf8_lossy(&output.stdout);
     // (op, operands) of the instructions since the last block end.
@@ -204,11 +204,15 @@ impl Image {
 /// comes from when the call's block loads one; otherwise the innermost
 /// frame outside the standard library of its inlined call chain does.
 pub fn sites(name: &str) -> Result<Vec<Site>> {
-    let elf = firmware::elf_of(name);
-    let image = Image::read(&elf)?;
-    let loader = addr2line::Loader::new(&elf)
+    sites_in(&firmware::elf_of(name))
+}
+
+/// [`sites`] of any firmware ELF (the boards', `crate::boards`).
+pub fn sites_in(elf: &Path) -> Result<Vec<Site>> {
+    let image = Image::read(elf)?;
+    let loader = addr2line::Loader::new(elf)
         .map_err(|e| anyhow!("{}: debug information: {e}", elf.display()))?;
-    calls(name)?
+    calls(elf)?
         .into_iter()
         .map(|call| {
             let (function, frame_line) = frame_of(&loader, call.address)?;

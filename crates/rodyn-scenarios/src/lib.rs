@@ -20,6 +20,7 @@
 //! | [`ilqr`]             |                               | iterative LQR with constant work per call, for MPC                |
 //! | [`driven_system`]    |                               | a model with drives as a discrete system, analytic linearisation  |
 //! | [`pendulum_mpc`]     | [`pendulum`]                  | model-predictive control of the pendulum by iLQR                  |
+//! | [`panda_tracking`]   | [`panda`]                     | computed torque (RNEA) tracking a trajectory against a plant stepped by ABA, one tick per call: the boards' loop |
 //!
 //! Every generated module holds `MODEL_F64` and `MODEL_F32`, the sizes
 //! `NB`, `NQ`, `NV`, `NE`, named indices (`body::`, `joint::`, `q::`, `v::`,
@@ -42,6 +43,8 @@ pub mod driven_system;
 pub mod ilqr;
 #[warn(missing_docs)]
 pub mod muscle_robot;
+#[warn(missing_docs)]
+pub mod panda_tracking;
 #[warn(missing_docs)]
 pub mod payload_estimate;
 #[warn(missing_docs)]
