@@ -387,6 +387,52 @@ enum Shading {
     Line(f64),
 }
 
+/// Markers drawn on each curve.
+const MARKERS_PER_CURVE: usize = 10;
+
+/// Marker outlines around (0, 0), in pixels: circle (an octagon),
+/// triangle, square, diamond.
+const MARKER_SHAPES: [&[(i32, i32)]; 4] = [
+    &[
+        (2, -4),
+        (4, -2),
+        (4, 2),
+        (2, 4),
+        (-2, 4),
+        (-4, 2),
+        (-4, -2),
+        (-2, -4),
+    ],
+    &[(0, -5), (5, 4), (-5, 4)],
+    &[(-4, -4), (4, -4), (4, 4), (-4, 4)],
+    &[(0, -5), (5, 0), (0, 5), (-5, 0)],
+];
+
+/// Marker `shape` (of [`MARKER_SHAPES`]) centred on its anchor, filled.
+fn marker(shape: usize, colour: RGBColor) -> Polygon<(i32, i32)> {
+    Polygon::new(
+        MARKER_SHAPES[shape % MARKER_SHAPES.len()].to_vec(),
+        colour.filled(),
+    )
+}
+
+/// The shape index of `colour` among the colours met so far (a new one
+/// gets the next shape): curves of one colour share a marker.
+fn shape_of(colour: RGBColor, met: &mut Vec<RGBColor>) -> usize {
+    met.iter().position(|c| *c == colour).unwrap_or_else(|| {
+        met.push(colour);
+        met.len() - 1
+    })
+}
+
+/// A few markers along `points`, shifted by the shape so that curves'
+/// markers do not sit on one another.
+fn sparse(points: &[(f64, f64)], shape: usize) -> impl Iterator<Item = (f64, f64)> + '_ {
+    let step = (points.len() / MARKERS_PER_CURVE).max(1);
+    let first = (shape * step / MARKER_SHAPES.len()).min(points.len().saturating_sub(1));
+    points.iter().copied().skip(first).step_by(step)
+}
+
 /// Width of the legend column to the right of the panels (px).
 const LEGEND_WIDTH: u32 = 210;
 
@@ -435,6 +481,7 @@ fn plot_panels(
             }
         }
         let font = ("sans-serif", 14).into_font().color(&BLACK);
+        let mut met = Vec::new();
         for (k, curve) in panel.curves.iter().enumerate() {
             let style = ShapeStyle::from(curve.colour).stroke_width(2);
             let points: Vec<(f64, f64)> = x
@@ -442,7 +489,12 @@ fn plot_panels(
                 .copied()
                 .zip(curve.values.iter().copied())
                 .collect();
+            let shape = shape_of(curve.colour, &mut met);
+            chart.draw_series(
+                sparse(&points, shape).map(|p| EmptyElement::at(p) + marker(shape, curve.colour)),
+            )?;
             let y = 40 + 24 * k as i32;
+            legend_area.draw(&(EmptyElement::at((15, y)) + marker(shape, curve.colour)))?;
             if curve.dashed {
                 chart.draw_series(DashedLineSeries::new(points, 6, 4, style))?;
                 legend_area.draw(&PathElement::new(vec![(4, y), (12, y)], style))?;

@@ -320,11 +320,39 @@ const MUSCLE_COLORS: [RGBColor; NU] = [
 const IDLE: f64 = 1e-3;
 const JOINT_COLORS: [RGBColor; NV] = [RGBColor(0, 0, 0), RGBColor(120, 120, 120)];
 
-/// One legend entry: a line (solid or dashed) or a dot, and its text.
+/// One legend entry: a line (solid or dashed) or a dot, its marker
+/// (index into [`MARKER_SHAPES`]) if it has one, and its text.
 struct Entry {
     color: RGBColor,
     style: Mark,
+    shape: Option<usize>,
     text: String,
+}
+
+/// Marker outlines around (0, 0), in pixels: circle (an octagon),
+/// triangle, square, diamond.
+const MARKER_SHAPES: [&[(i32, i32)]; 4] = [
+    &[
+        (2, -4),
+        (4, -2),
+        (4, 2),
+        (2, 4),
+        (-2, 4),
+        (-4, 2),
+        (-4, -2),
+        (-2, -4),
+    ],
+    &[(0, -5), (5, 4), (-5, 4)],
+    &[(-4, -4), (4, -4), (4, 4), (-4, 4)],
+    &[(0, -5), (5, 0), (0, 5), (-5, 0)],
+];
+
+/// Marker `shape` (of [`MARKER_SHAPES`]) centred on its anchor, filled.
+fn marker(shape: usize, color: RGBColor) -> Polygon<(i32, i32)> {
+    Polygon::new(
+        MARKER_SHAPES[shape % MARKER_SHAPES.len()].to_vec(),
+        color.filled(),
+    )
 }
 
 #[derive(Clone, Copy, PartialEq)]
@@ -349,7 +377,14 @@ fn legend(
                     area.draw(&PathElement::new([(x, y), (x + 6, y)], style))?;
                 }
             }
-            Mark::Dot => area.draw(&Circle::new((22, y), 3, entry.color.filled()))?,
+            Mark::Dot => {
+                if entry.shape.is_none() {
+                    area.draw(&Circle::new((22, y), 3, entry.color.filled()))?
+                }
+            }
+        }
+        if let Some(shape) = entry.shape {
+            area.draw(&(EmptyElement::at((22, y)) + marker(shape, entry.color)))?;
         }
         area.draw(&Text::new(
             entry.text.clone(),
@@ -393,25 +428,32 @@ fn plot(path: &Path, task: &Task, run: &Solved) -> Result<(), Box<dyn std::error
         .draw()?;
     let mut entries = Vec::new();
     for (j, name) in ["q1, shoulder", "q2, elbow"].into_iter().enumerate() {
+        // The elbow's line dashed and its points squares: the joints
+        // differ by more than their grey.
         let color = JOINT_COLORS[j];
-        chart.draw_series(LineSeries::new(
-            samples.iter().map(|&t| (t, task.desired(t).0[j])),
-            color.stroke_width(2),
-        ))?;
+        let desired: Vec<(f64, f64)> = samples.iter().map(|&t| (t, task.desired(t).0[j])).collect();
+        if j == 0 {
+            chart.draw_series(LineSeries::new(desired, color.stroke_width(2)))?;
+        } else {
+            chart.draw_series(dashed(desired, color))?;
+        }
+        let shape = 2 * j; // circle, square
         chart.draw_series(
             run.resimulated
                 .iter()
                 .step_by(run.resimulated.len() / 40)
-                .map(|&(t, q)| Circle::new((t, q[j]), 3, color.filled())),
+                .map(|&(t, q)| EmptyElement::at((t, q[j])) + marker(shape, color)),
         )?;
         entries.push(Entry {
             color,
-            style: Mark::Line,
+            style: if j == 0 { Mark::Line } else { Mark::Dashed },
+            shape: None,
             text: format!("{name}, desired"),
         });
         entries.push(Entry {
             color,
             style: Mark::Dot,
+            shape: Some(shape),
             text: format!("{name}, re-simulated"),
         });
     }
@@ -450,15 +492,36 @@ fn plot(path: &Path, task: &Task, run: &Solved) -> Result<(), Box<dyn std::error
         ))?;
         let activation: Vec<(f64, f64)> =
             run.nodes.iter().map(|n| (n.t, n.x[2 * NV + i])).collect();
+        // A marker per muscle every tenth of the nodes (shifted per muscle
+        // so that the idle ones' markers do not hide each other), on the
+        // excitation and the activation: muscles differ by more than their
+        // colour.
+        let step = (run.nodes.len() / 10).max(1);
+        chart.draw_series(
+            run.nodes
+                .iter()
+                .skip(i * step / 4)
+                .step_by(step)
+                .map(|n| EmptyElement::at((n.t, n.u[i])) + marker(i, color)),
+        )?;
+        chart.draw_series(
+            activation
+                .iter()
+                .skip(i * step / 4 + step / 2)
+                .step_by(step)
+                .map(|&p| EmptyElement::at(p) + marker(i, color)),
+        )?;
         chart.draw_series(dashed(activation, color))?;
         entries.push(Entry {
             color,
             style: Mark::Line,
+            shape: Some(i),
             text: format!("u{}, excitation of m{}{idle}", i + 1, i + 1),
         });
         entries.push(Entry {
             color,
             style: Mark::Dashed,
+            shape: Some(i),
             text: format!("a{}, activation of m{}{idle}", i + 1, i + 1),
         });
     }
