@@ -13,6 +13,7 @@
 //! | `stack [image] [words]`  | worst-case stack per image and per cost-table row from a static call graph, checked against the painted figures (`--check-frames`: the frame reading against LLVM's `-Z emit-stack-sizes`) |
 //! | `panic-sites [image]`    | the panic call sites of one image (default: all) by source, function and line |
 //! | `public-api [--bless]`   | the public items of `rodyn` and `rodyn-model` (rustdoc JSON, nightly) against `xtask/public-api/*.txt`: a removed item fails; `--bless` rewrites the lists |
+//! | `python-env`             | makes or updates the test command's Python venv (Pinocchio 4.1, example-robot-data, numpy, pytest, matplotlib, maturin) under `target/python-venv` and prints its paths |
 //! | `bless`                  | rewrites `firmware/expected/*.log` from fresh runs, keeping `*` wildcards |
 //! | `profile [words]`        | one call of each algorithm on each model in QEMU with an instruction trace; prints where its instructions go, line by line (calls whose label contains every word) |
 //! | `host-profile <algorithm> <model> [--pinocchio]` | the same on the host: callgrind's count per instruction of one call of the `profile` binary (or of Pinocchio's timing program), charged line by line, and its floating-point operations |
@@ -36,6 +37,7 @@ mod miri;
 mod panic_sites;
 mod profile;
 mod public_api;
+mod python_env;
 mod replay;
 mod setup;
 mod shell;
@@ -48,7 +50,7 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 const USAGE: &str =
-    "usage: cargo xtask <run [example] [--html page.html] | test | lint | docs [--check] | costs | family | stack [image [words]] | stack --frames <image> | stack --check-frames | panic-sites [image] | viewer | public-api [--bless] | bless | profile [model] [algorithm] | host-profile <algorithm> <model> [--pinocchio]>";
+    "usage: cargo xtask <run [example] [--html page.html] | test | lint | docs [--check] | costs | family | stack [image [words]] | stack --frames <image> | stack --check-frames | panic-sites [image] | viewer | python-env | public-api [--bless] | bless | profile [model] [algorithm] | host-profile <algorithm> <model> [--pinocchio]>";
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -61,6 +63,11 @@ fn main() -> ExitCode {
         Some("family") => family::run_probes(),
         Some("viewer") => viewer::check(),
         Some("bless") => bless(),
+        Some("python-env") => python_env::ensure().and_then(|venv| {
+            println!("python: {}", venv.python().display());
+            println!("example-robot-data robots: {}", venv.robots()?.display());
+            Ok(())
+        }),
         Some("public-api") => public_api::run(args.get(1).map(String::as_str) == Some("--bless")),
         Some("stack") => stack_bound::run(&args[1..]),
         Some("panic-sites") => panic_sites::run(&args[1..]),
