@@ -19,6 +19,7 @@ use gait_support::gait_planar::{v, MODEL_F32, MODEL_F64};
 use gait_support::inverse_dynamics::{gait_inverse_dynamics, GaitData, GaitFrame};
 use plotters::prelude::*;
 use rodyn_cli::writable_dir;
+use rodyn_plot_markers::{marker, sparse, ShapesByColour};
 use std::path::{Path, PathBuf};
 
 /// One curve of a figure: label, colour, values over the cycle.
@@ -26,49 +27,6 @@ type Curve = (&'static str, RGBColor, Vec<f64>);
 
 /// Markers drawn on each curve.
 const MARKERS_PER_CURVE: usize = 10;
-
-/// Marker outlines around (0, 0), in pixels: circle (an octagon),
-/// triangle, square, diamond.
-const MARKER_SHAPES: [&[(i32, i32)]; 4] = [
-    &[
-        (2, -4),
-        (4, -2),
-        (4, 2),
-        (2, 4),
-        (-2, 4),
-        (-4, 2),
-        (-4, -2),
-        (-2, -4),
-    ],
-    &[(0, -5), (5, 4), (-5, 4)],
-    &[(-4, -4), (4, -4), (4, 4), (-4, 4)],
-    &[(0, -5), (5, 0), (0, 5), (-5, 0)],
-];
-
-/// Marker `shape` (of [`MARKER_SHAPES`]) centred on its anchor, filled.
-fn marker(shape: usize, colour: RGBColor) -> Polygon<(i32, i32)> {
-    Polygon::new(
-        MARKER_SHAPES[shape % MARKER_SHAPES.len()].to_vec(),
-        colour.filled(),
-    )
-}
-
-/// The shape index of `colour` among the colours met so far (a new one
-/// gets the next shape): curves of one colour share a marker.
-fn shape_of(colour: RGBColor, met: &mut Vec<RGBColor>) -> usize {
-    met.iter().position(|c| *c == colour).unwrap_or_else(|| {
-        met.push(colour);
-        met.len() - 1
-    })
-}
-
-/// A few markers along `points`, shifted by the shape so that curves'
-/// markers do not sit on one another.
-fn sparse(points: &[(f64, f64)], shape: usize) -> impl Iterator<Item = (f64, f64)> + '_ {
-    let step = (points.len() / MARKERS_PER_CURVE).max(1);
-    let first = (shape * step / MARKER_SHAPES.len()).min(points.len().saturating_sub(1));
-    points.iter().copied().skip(first).step_by(step)
-}
 
 /// Width of the legend column right of the plot (px).
 const LEGEND_WIDTH: u32 = 250;
@@ -103,7 +61,7 @@ fn plot(
         .y_desc(y_label)
         .draw()?;
     let font = ("sans-serif", 14).into_font().color(&BLACK);
-    let mut met = Vec::new();
+    let mut shapes = ShapesByColour::default();
     for (k, (label, colour, values)) in curves.iter().enumerate() {
         let n = values.len() - 1;
         let style = ShapeStyle::from(colour).stroke_width(2);
@@ -112,12 +70,12 @@ fn plot(
             .enumerate()
             .map(|(k, &y)| (100.0 * k as f64 / n as f64, y))
             .collect();
-        let shape = shape_of(*colour, &mut met);
+        let shape = shapes.shape(*colour);
         chart.draw_series(
-            sparse(&points, shape).map(|p| EmptyElement::at(p) + marker(shape, *colour)),
+            sparse(&points, shape, MARKERS_PER_CURVE)
+                .map(|p| EmptyElement::at(p) + marker(shape, *colour, (0, 0))),
         )?;
         let y = 30 + 22 * k as i32;
-        legend_area.draw(&(EmptyElement::at((15, y)) + marker(shape, *colour)))?;
         if label.starts_with("left") {
             chart.draw_series(DashedLineSeries::new(points, 6, 4, style))?;
             legend_area.draw(&PathElement::new(vec![(4, y), (12, y)], style))?;
@@ -126,6 +84,7 @@ fn plot(
             chart.draw_series(LineSeries::new(points, style))?;
             legend_area.draw(&PathElement::new(vec![(4, y), (26, y)], style))?;
         }
+        legend_area.draw(&marker(shape, *colour, (15, y)))?;
         legend_area.draw(&Text::new(*label, (32, y - 8), font.clone()))?;
     }
     root.present()?;

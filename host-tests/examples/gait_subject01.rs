@@ -19,6 +19,7 @@ use rodyn_host_tests::subject_gait::{
     check_coverage, data_dir, inverse_dynamics, model_torques, opensim_loads, read_inputs,
     with_prosthesis, Frame, GRAVITY, LOAD_COLUMNS, MODEL,
 };
+use rodyn_plot_markers::{marker, sparse, ShapesByColour};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -390,49 +391,6 @@ enum Shading {
 /// Markers drawn on each curve.
 const MARKERS_PER_CURVE: usize = 10;
 
-/// Marker outlines around (0, 0), in pixels: circle (an octagon),
-/// triangle, square, diamond.
-const MARKER_SHAPES: [&[(i32, i32)]; 4] = [
-    &[
-        (2, -4),
-        (4, -2),
-        (4, 2),
-        (2, 4),
-        (-2, 4),
-        (-4, 2),
-        (-4, -2),
-        (-2, -4),
-    ],
-    &[(0, -5), (5, 4), (-5, 4)],
-    &[(-4, -4), (4, -4), (4, 4), (-4, 4)],
-    &[(0, -5), (5, 0), (0, 5), (-5, 0)],
-];
-
-/// Marker `shape` (of [`MARKER_SHAPES`]) centred on its anchor, filled.
-fn marker(shape: usize, colour: RGBColor) -> Polygon<(i32, i32)> {
-    Polygon::new(
-        MARKER_SHAPES[shape % MARKER_SHAPES.len()].to_vec(),
-        colour.filled(),
-    )
-}
-
-/// The shape index of `colour` among the colours met so far (a new one
-/// gets the next shape): curves of one colour share a marker.
-fn shape_of(colour: RGBColor, met: &mut Vec<RGBColor>) -> usize {
-    met.iter().position(|c| *c == colour).unwrap_or_else(|| {
-        met.push(colour);
-        met.len() - 1
-    })
-}
-
-/// A few markers along `points`, shifted by the shape so that curves'
-/// markers do not sit on one another.
-fn sparse(points: &[(f64, f64)], shape: usize) -> impl Iterator<Item = (f64, f64)> + '_ {
-    let step = (points.len() / MARKERS_PER_CURVE).max(1);
-    let first = (shape * step / MARKER_SHAPES.len()).min(points.len().saturating_sub(1));
-    points.iter().copied().skip(first).step_by(step)
-}
-
 /// Width of the legend column to the right of the panels (px).
 const LEGEND_WIDTH: u32 = 210;
 
@@ -481,7 +439,7 @@ fn plot_panels(
             }
         }
         let font = ("sans-serif", 14).into_font().color(&BLACK);
-        let mut met = Vec::new();
+        let mut shapes = ShapesByColour::default();
         for (k, curve) in panel.curves.iter().enumerate() {
             let style = ShapeStyle::from(curve.colour).stroke_width(2);
             let points: Vec<(f64, f64)> = x
@@ -489,12 +447,12 @@ fn plot_panels(
                 .copied()
                 .zip(curve.values.iter().copied())
                 .collect();
-            let shape = shape_of(curve.colour, &mut met);
+            let shape = shapes.shape(curve.colour);
             chart.draw_series(
-                sparse(&points, shape).map(|p| EmptyElement::at(p) + marker(shape, curve.colour)),
+                sparse(&points, shape, MARKERS_PER_CURVE)
+                    .map(|p| EmptyElement::at(p) + marker(shape, curve.colour, (0, 0))),
             )?;
             let y = 40 + 24 * k as i32;
-            legend_area.draw(&(EmptyElement::at((15, y)) + marker(shape, curve.colour)))?;
             if curve.dashed {
                 chart.draw_series(DashedLineSeries::new(points, 6, 4, style))?;
                 legend_area.draw(&PathElement::new(vec![(4, y), (12, y)], style))?;
@@ -503,6 +461,7 @@ fn plot_panels(
                 chart.draw_series(LineSeries::new(points, style))?;
                 legend_area.draw(&PathElement::new(vec![(4, y), (26, y)], style))?;
             }
+            legend_area.draw(&marker(shape, curve.colour, (15, y)))?;
             legend_area.draw(&Text::new(curve.label, (32, y - 8), font.clone()))?;
         }
     }

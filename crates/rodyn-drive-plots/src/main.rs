@@ -11,6 +11,7 @@ use plotters::prelude::*;
 use rodyn::algorithm::forward_dynamics::Aba;
 use rodyn::sim::{Integrator, Rk4};
 use rodyn_cli::writable_dir;
+use rodyn_plot_markers::{marker, sparse, ShapesByColour};
 use rodyn_scenarios::muscle_robot::{
     self as robot, example_excitation, RobotForces, RobotLoads, INITIAL_ACTIVATION, NU, NV,
 };
@@ -81,35 +82,6 @@ type Series = (String, RGBColor, bool, Vec<(f64, f64)>);
 /// Markers drawn on each curve.
 const MARKERS_PER_CURVE: usize = 10;
 
-/// Marker outlines around (0, 0), in pixels: circle (an octagon),
-/// triangle, square, diamond.
-const MARKER_SHAPES: [&[(i32, i32)]; 4] = [
-    &[
-        (2, -4),
-        (4, -2),
-        (4, 2),
-        (2, 4),
-        (-2, 4),
-        (-4, 2),
-        (-4, -2),
-        (-2, -4),
-    ],
-    &[(0, -5), (5, 4), (-5, 4)],
-    &[(-4, -4), (4, -4), (4, 4), (-4, 4)],
-    &[(0, -5), (5, 0), (0, 5), (-5, 0)],
-];
-
-/// Marker `shape` (of [`MARKER_SHAPES`]) centred at `at`, filled.
-fn marker(shape: usize, color: RGBColor, at: (i32, i32)) -> Polygon<(i32, i32)> {
-    let corners = MARKER_SHAPES[shape % MARKER_SHAPES.len()].iter();
-    Polygon::new(
-        corners
-            .map(|&(x, y)| (at.0 + x, at.1 + y))
-            .collect::<Vec<_>>(),
-        color.filled(),
-    )
-}
-
 /// Width of the legend column right of each panel (px).
 const LEGEND_WIDTH: i32 = 150;
 
@@ -148,24 +120,15 @@ where
     let font = ("sans-serif", 14).into_font().color(&BLACK);
     // Each colour also gets a marker shape, a few per curve, so that the
     // curves part without their colours.
-    let mut colours: Vec<RGBColor> = Vec::new();
+    let mut shapes = ShapesByColour::default();
     for (k, (name, color, dashed, points)) in series.iter().enumerate() {
-        let shape = colours.iter().position(|c| c == color).unwrap_or_else(|| {
-            colours.push(*color);
-            colours.len() - 1
-        });
-        let step = (points.len() / MARKERS_PER_CURVE).max(1);
-        let first = (shape * step / MARKER_SHAPES.len()).min(points.len().saturating_sub(1));
+        let shape = shapes.shape(*color);
         chart.draw_series(
-            points
-                .iter()
-                .skip(first)
-                .step_by(step)
-                .map(|&p| EmptyElement::at(p) + marker(shape, *color, (0, 0))),
+            sparse(points, shape, MARKERS_PER_CURVE)
+                .map(|p| EmptyElement::at(p) + marker(shape, *color, (0, 0))),
         )?;
         let style = color.stroke_width(2);
         let y = 50 + 22 * k as i32;
-        legend_area.draw(&(EmptyElement::at((15, y)) + marker(shape, *color, (0, 0))))?;
         if *dashed {
             chart.draw_series(DashedLineSeries::new(points.iter().copied(), 6, 4, style))?;
             legend_area.draw(&PathElement::new(vec![(4, y), (12, y)], style))?;
@@ -174,6 +137,7 @@ where
             chart.draw_series(LineSeries::new(points.iter().copied(), style))?;
             legend_area.draw(&PathElement::new(vec![(4, y), (26, y)], style))?;
         }
+        legend_area.draw(&marker(shape, *color, (15, y)))?;
         legend_area.draw(&Text::new(name.clone(), (32, y - 8), font.clone()))?;
     }
     Ok(())

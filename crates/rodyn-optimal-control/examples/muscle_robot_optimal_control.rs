@@ -35,6 +35,7 @@ use rodyn_optimal_control::muscle_robot::{Derivatives, Task, EXCITATION_RATE_WEI
 use rodyn_optimal_control::smooth_muscle_robot::{
     effort_shares, solve_smooth, solve_thelen, Solved, MAX_DEFECT, MAX_TRACKING_RMS,
 };
+use rodyn_plot_markers::{marker, sparse};
 use rodyn_scenarios::muscle_robot::{NU, NV};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -318,41 +319,17 @@ const MUSCLE_COLORS: [RGBColor; NU] = [
 ];
 /// Largest excitation and activation of a muscle the figure calls idle.
 const IDLE: f64 = 1e-3;
+/// Markers on each muscle's curves.
+const MARKERS_PER_CURVE: usize = 10;
 const JOINT_COLORS: [RGBColor; NV] = [RGBColor(0, 0, 0), RGBColor(120, 120, 120)];
 
 /// One legend entry: a line (solid or dashed) or a dot, its marker
-/// (index into [`MARKER_SHAPES`]) if it has one, and its text.
+/// (index into [`rodyn_plot_markers::SHAPES`]) if it has one, and its text.
 struct Entry {
     color: RGBColor,
     style: Mark,
     shape: Option<usize>,
     text: String,
-}
-
-/// Marker outlines around (0, 0), in pixels: circle (an octagon),
-/// triangle, square, diamond.
-const MARKER_SHAPES: [&[(i32, i32)]; 4] = [
-    &[
-        (2, -4),
-        (4, -2),
-        (4, 2),
-        (2, 4),
-        (-2, 4),
-        (-4, 2),
-        (-4, -2),
-        (-2, -4),
-    ],
-    &[(0, -5), (5, 4), (-5, 4)],
-    &[(-4, -4), (4, -4), (4, 4), (-4, 4)],
-    &[(0, -5), (5, 0), (0, 5), (-5, 0)],
-];
-
-/// Marker `shape` (of [`MARKER_SHAPES`]) centred on its anchor, filled.
-fn marker(shape: usize, color: RGBColor) -> Polygon<(i32, i32)> {
-    Polygon::new(
-        MARKER_SHAPES[shape % MARKER_SHAPES.len()].to_vec(),
-        color.filled(),
-    )
 }
 
 #[derive(Clone, Copy, PartialEq)]
@@ -384,7 +361,7 @@ fn legend(
             }
         }
         if let Some(shape) = entry.shape {
-            area.draw(&(EmptyElement::at((22, y)) + marker(shape, entry.color)))?;
+            area.draw(&marker(shape, entry.color, (22, y)))?;
         }
         area.draw(&Text::new(
             entry.text.clone(),
@@ -442,7 +419,7 @@ fn plot(path: &Path, task: &Task, run: &Solved) -> Result<(), Box<dyn std::error
             run.resimulated
                 .iter()
                 .step_by(run.resimulated.len() / 40)
-                .map(|&(t, q)| EmptyElement::at((t, q[j])) + marker(shape, color)),
+                .map(|&(t, q)| EmptyElement::at((t, q[j])) + marker(shape, color, (0, 0))),
         )?;
         entries.push(Entry {
             color,
@@ -486,30 +463,21 @@ fn plot(path: &Path, task: &Task, run: &Solved) -> Result<(), Box<dyn std::error
         } else {
             String::new()
         };
-        chart.draw_series(LineSeries::new(
-            run.nodes.iter().map(|n| (n.t, n.u[i])),
-            color.stroke_width(2),
-        ))?;
+        let excitation: Vec<(f64, f64)> = run.nodes.iter().map(|n| (n.t, n.u[i])).collect();
         let activation: Vec<(f64, f64)> =
             run.nodes.iter().map(|n| (n.t, n.x[2 * NV + i])).collect();
-        // A marker per muscle every tenth of the nodes (shifted per muscle
-        // so that the idle ones' markers do not hide each other), on the
-        // excitation and the activation: muscles differ by more than their
-        // colour.
-        let step = (run.nodes.len() / 10).max(1);
+        chart.draw_series(LineSeries::new(
+            excitation.iter().copied(),
+            color.stroke_width(2),
+        ))?;
+        // Markers on the excitation and (half a spacing on) the activation,
+        // shifted per muscle so that the idle ones' do not hide each other:
+        // muscles differ by more than their colour.
+        let half_spacing = run.nodes.len() / (2 * MARKERS_PER_CURVE);
         chart.draw_series(
-            run.nodes
-                .iter()
-                .skip(i * step / 4)
-                .step_by(step)
-                .map(|n| EmptyElement::at((n.t, n.u[i])) + marker(i, color)),
-        )?;
-        chart.draw_series(
-            activation
-                .iter()
-                .skip(i * step / 4 + step / 2)
-                .step_by(step)
-                .map(|&p| EmptyElement::at(p) + marker(i, color)),
+            sparse(&excitation, i, MARKERS_PER_CURVE)
+                .chain(sparse(&activation[half_spacing..], i, MARKERS_PER_CURVE))
+                .map(|p| EmptyElement::at(p) + marker(i, color, (0, 0))),
         )?;
         chart.draw_series(dashed(activation, color))?;
         entries.push(Entry {
