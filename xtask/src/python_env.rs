@@ -40,9 +40,10 @@ impl Venv {
         let path = std::env::var_os("PATH").unwrap_or_default();
         let mut paths = vec![self.root.join("bin")];
         paths.extend(std::env::split_paths(&path));
-        command
-            .env("VIRTUAL_ENV", &self.root)
-            .env("PATH", std::env::join_paths(paths).expect("paths without ':'"));
+        command.env("VIRTUAL_ENV", &self.root).env(
+            "PATH",
+            std::env::join_paths(paths).expect("paths without ':'"),
+        );
         command
     }
 
@@ -69,16 +70,28 @@ pub fn ensure() -> Result<Venv> {
     let venv = Venv { root };
     if !venv.python().exists() {
         let python = find_python()?;
-        println!("set-up: a Python venv in {} (Pinocchio's bindings are the reference)", venv.root.display());
+        println!(
+            "set-up: a Python venv in {} (Pinocchio's bindings are the reference)",
+            venv.root.display()
+        );
         shell::run(Command::new(&python).arg("-m").arg("venv").arg(&venv.root))?;
     }
     let stamp = venv.root.join("rodyn-requirements.txt");
     let wanted = REQUIREMENTS.join("\n");
     if std::fs::read_to_string(&stamp).ok().as_deref() != Some(wanted.as_str()) {
-        println!("set-up: pip install {} (into the venv)", REQUIREMENTS.join(" "));
+        println!(
+            "set-up: pip install {} (into the venv)",
+            REQUIREMENTS.join(" ")
+        );
         shell::run(
             venv.command()
-                .args(["-m", "pip", "install", "--quiet", "--disable-pip-version-check"])
+                .args([
+                    "-m",
+                    "pip",
+                    "install",
+                    "--quiet",
+                    "--disable-pip-version-check",
+                ])
                 .args(REQUIREMENTS),
         )?;
         std::fs::write(&stamp, wanted).context("cannot record the venv's requirements")?;
@@ -90,7 +103,10 @@ pub fn ensure() -> Result<Venv> {
 fn find_python() -> Result<PathBuf> {
     for name in ["python3", "python"] {
         let ok = Command::new(name)
-            .args(["-c", "import sys, venv, ensurepip; sys.exit(sys.version_info < (3, 9))"])
+            .args([
+                "-c",
+                "import sys, venv, ensurepip; sys.exit(sys.version_info < (3, 9))",
+            ])
             .status()
             .is_ok_and(|s| s.success());
         if ok {
