@@ -133,7 +133,7 @@ fn check(scene: &Scene) -> Result<(), HtmlError> {
             ));
         }
         if let Some([lower, upper]) = b.limits {
-            if b.joint.nq() != 1 || !(lower < upper) || !lower.is_finite() || !upper.is_finite() {
+            if b.joint.nq() != 1 || !lower.is_finite() || !upper.is_finite() || lower >= upper {
                 return err(format!(
                     "joint `{}` has limits [{lower}, {upper}]: limits need a revolute or prismatic joint and finite bounds, the lower below the upper",
                     b.joint_name
