@@ -19,10 +19,14 @@ use gait_support::gait_planar::{v, MODEL_F32, MODEL_F64};
 use gait_support::inverse_dynamics::{gait_inverse_dynamics, GaitData, GaitFrame};
 use plotters::prelude::*;
 use rodyn_cli::writable_dir;
+use rodyn_plot_markers::{marker, sparse, ShapesByColour};
 use std::path::{Path, PathBuf};
 
 /// One curve of a figure: label, colour, values over the cycle.
 type Curve = (&'static str, RGBColor, Vec<f64>);
+
+/// Markers drawn on each curve.
+const MARKERS_PER_CURVE: usize = 10;
 
 /// Width of the legend column right of the plot (px).
 const LEGEND_WIDTH: u32 = 250;
@@ -57,13 +61,20 @@ fn plot(
         .y_desc(y_label)
         .draw()?;
     let font = ("sans-serif", 14).into_font().color(&BLACK);
+    let mut shapes = ShapesByColour::default();
     for (k, (label, colour, values)) in curves.iter().enumerate() {
         let n = values.len() - 1;
         let style = ShapeStyle::from(colour).stroke_width(2);
-        let points = values
+        let points: Vec<(f64, f64)> = values
             .iter()
             .enumerate()
-            .map(|(k, &y)| (100.0 * k as f64 / n as f64, y));
+            .map(|(k, &y)| (100.0 * k as f64 / n as f64, y))
+            .collect();
+        let shape = shapes.shape(*colour);
+        chart.draw_series(
+            sparse(&points, shape, MARKERS_PER_CURVE)
+                .map(|p| EmptyElement::at(p) + marker(shape, *colour, (0, 0))),
+        )?;
         let y = 30 + 22 * k as i32;
         if label.starts_with("left") {
             chart.draw_series(DashedLineSeries::new(points, 6, 4, style))?;
@@ -73,6 +84,7 @@ fn plot(
             chart.draw_series(LineSeries::new(points, style))?;
             legend_area.draw(&PathElement::new(vec![(4, y), (26, y)], style))?;
         }
+        legend_area.draw(&marker(shape, *colour, (15, y)))?;
         legend_area.draw(&Text::new(*label, (32, y - 8), font.clone()))?;
     }
     root.present()?;

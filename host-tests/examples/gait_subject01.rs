@@ -19,6 +19,7 @@ use rodyn_host_tests::subject_gait::{
     check_coverage, data_dir, inverse_dynamics, model_torques, opensim_loads, read_inputs,
     with_prosthesis, Frame, GRAVITY, LOAD_COLUMNS, MODEL,
 };
+use rodyn_plot_markers::{marker, sparse, ShapesByColour};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
@@ -387,6 +388,9 @@ enum Shading {
     Line(f64),
 }
 
+/// Markers drawn on each curve.
+const MARKERS_PER_CURVE: usize = 10;
+
 /// Width of the legend column to the right of the panels (px).
 const LEGEND_WIDTH: u32 = 210;
 
@@ -435,6 +439,7 @@ fn plot_panels(
             }
         }
         let font = ("sans-serif", 14).into_font().color(&BLACK);
+        let mut shapes = ShapesByColour::default();
         for (k, curve) in panel.curves.iter().enumerate() {
             let style = ShapeStyle::from(curve.colour).stroke_width(2);
             let points: Vec<(f64, f64)> = x
@@ -442,6 +447,11 @@ fn plot_panels(
                 .copied()
                 .zip(curve.values.iter().copied())
                 .collect();
+            let shape = shapes.shape(curve.colour);
+            chart.draw_series(
+                sparse(&points, shape, MARKERS_PER_CURVE)
+                    .map(|p| EmptyElement::at(p) + marker(shape, curve.colour, (0, 0))),
+            )?;
             let y = 40 + 24 * k as i32;
             if curve.dashed {
                 chart.draw_series(DashedLineSeries::new(points, 6, 4, style))?;
@@ -451,6 +461,7 @@ fn plot_panels(
                 chart.draw_series(LineSeries::new(points, style))?;
                 legend_area.draw(&PathElement::new(vec![(4, y), (26, y)], style))?;
             }
+            legend_area.draw(&marker(shape, curve.colour, (15, y)))?;
             legend_area.draw(&Text::new(curve.label, (32, y - 8), font.clone()))?;
         }
     }

@@ -5,16 +5,16 @@
 #
 #     tools/viewer/screenshots.sh
 #
-# Needs python3 (example-robot-data goes into a venv under /tmp) and
+# Needs python3 (example-robot-data comes from the test command's venv,
+# `cargo xtask python-env`, pinned to the version the tests use) and
 # chromium (Debian: apt-get install --no-install-recommends chromium).
 set -eu
 out=docs/img/viewer
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-venv=/tmp/rodyn-example-robot-data
-[ -x "$venv/bin/python" ] || python3 -m venv "$venv"
-"$venv/bin/pip" install -q example-robot-data
-share=$("$venv/bin/python" -c "import sysconfig; print(sysconfig.get_paths()['purelib'])")/cmeel.prefix/share
+robots=$(cargo xtask python-env | sed -n 's/^example-robot-data robots: //p')
+[ -n "$robots" ] || { echo "cargo xtask python-env did not name the robots folder" >&2; exit 1; }
+share=${robots%/example-robot-data/robots}
 cargo build -q -p rodyn-model -p rodyn-sim --bins
 target/debug/rodyn-model view "$share/example-robot-data/robots/panda_description/urdf/panda.urdf" \
     --package-path "$share" --silence all -o "$work/panda.html"

@@ -10,6 +10,9 @@
 //!   the robot layer hidden over at least [`MIN_ROBOT_PIXELS`] of the 3-D
 //!   view, and from the committed reference image over at most
 //!   [`MAX_REFERENCE_PIXELS`];
+//! - example-robot-data's robots with meshes ([`MESH_ROBOTS`]: the Panda's
+//!   COLLADA, Solo12's STL, Talos's STL), from the test command's Python
+//!   venv, load without an error and are drawn, as above;
 //! - scrubbing moves the trot, and the firmware's arm controller and
 //!   quadruped replayed from their pose logs (`cargo xtask run EXAMPLE
 //!   --html`): screenshots at two times differ over at least
@@ -18,7 +21,7 @@
 //! A reference image that is missing is written (commit it); delete it to
 //! take a new one after a deliberate change of the page.
 
-use crate::{firmware, replay, setup, shell};
+use crate::{firmware, python_env, replay, setup, shell};
 use anyhow::{bail, ensure, Context, Result};
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -45,6 +48,30 @@ const MIN_MOTION_PIXELS: f64 = 0.005;
 /// trotting.
 const FIRMWARE_REPLAYS: [(&str, &str, &str); 2] =
     [("arm_control", "0.2", "1.2"), ("quadruped", "1", "4.5")];
+
+/// example-robot-data's robots with meshes: page name, URDF under the
+/// package share folder, whether the base floats, and the URL fragment of
+/// the screenshots (the Panda's elbow bent).
+const MESH_ROBOTS: [(&str, &str, bool, &str); 3] = [
+    (
+        "erd-panda",
+        "example-robot-data/robots/panda_description/urdf/panda.urdf",
+        false,
+        "q=0.3,-0.4,0,-2.0,0,1.6,0.8,0.02,0.02",
+    ),
+    (
+        "erd-solo12",
+        "example-robot-data/robots/solo_description/robots/solo12.urdf",
+        true,
+        "",
+    ),
+    (
+        "erd-talos",
+        "example-robot-data/robots/talos_data/robots/talos_reduced.urdf",
+        true,
+        "",
+    ),
+];
 
 /// The Panda's pose for the screenshots (rad): elbow bent, wrist turned.
 const PANDA_Q: &str = "0.3,-0.4,0,-2.0,0,1.6,0.8";
@@ -76,6 +103,22 @@ pub fn check() -> Result<()> {
         view.args(["--silence", "all"]);
         run_quietly(&mut view)?;
         pages.push(name);
+    }
+    // example-robot-data's robots with their meshes.
+    let share = python_env::ensure()?.package_share()?;
+    for (name, urdf, floating, fragment) in MESH_ROBOTS {
+        let mut view = Command::new(bin.join("rodyn-model"));
+        view.arg("view")
+            .arg(share.join(urdf))
+            .arg("--package-path")
+            .arg(&share);
+        if floating {
+            view.arg("--floating-base");
+        }
+        view.args(["--silence", "all", "-o"])
+            .arg(work.join(format!("{name}.html")));
+        run_quietly(&mut view)?;
+        pages.push(format!("{name}.html#{fragment}"));
     }
     let trot = work.join("trot.html");
     let mut sim = Command::new(bin.join("rodyn-sim"));
@@ -152,6 +195,33 @@ pub fn check() -> Result<()> {
         println!(
             "viewer: wrote the reference image {} (commit it)",
             reference.display()
+        );
+    }
+
+    // example-robot-data's robots are drawn: their meshes cover the view.
+    for (name, _, _, fragment) in MESH_ROBOTS {
+        let page = work.join(format!("{name}.html"));
+        let hide = if fragment.is_empty() {
+            "hide=robot".to_string()
+        } else {
+            format!("{fragment}&hide=robot")
+        };
+        let shots = [
+            (work.join(format!("{name}.png")), url(&page, fragment)),
+            (work.join(format!("{name}-hidden.png")), url(&page, &hide)),
+        ];
+        let images = parallel(&shots, |(png, url)| screenshot(&chromium, url, png))?;
+        let robot = differing_share(&images[0], &images[1]);
+        ensure!(
+            robot >= MIN_ROBOT_PIXELS,
+            "{name}: the robot covers {:.2} % of the 3-D view in {} (at least {:.0} % expected): are its meshes drawn?",
+            100.0 * robot,
+            shots[0].0.display(),
+            100.0 * MIN_ROBOT_PIXELS
+        );
+        println!(
+            "viewer: {name} (example-robot-data, meshes) covers {:.1} % of the view",
+            100.0 * robot
         );
     }
 

@@ -11,6 +11,7 @@ use plotters::prelude::*;
 use rodyn::algorithm::forward_dynamics::Aba;
 use rodyn::sim::{Integrator, Rk4};
 use rodyn_cli::writable_dir;
+use rodyn_plot_markers::{marker, sparse, ShapesByColour};
 use rodyn_scenarios::muscle_robot::{
     self as robot, example_excitation, RobotForces, RobotLoads, INITIAL_ACTIVATION, NU, NV,
 };
@@ -78,6 +79,9 @@ const MUSCLE_COLORS: [RGBColor; NU] = [
 /// One curve: legend label, colour, dashed or not, points (t, y).
 type Series = (String, RGBColor, bool, Vec<(f64, f64)>);
 
+/// Markers drawn on each curve.
+const MARKERS_PER_CURVE: usize = 10;
+
 /// Width of the legend column right of each panel (px).
 const LEGEND_WIDTH: i32 = 150;
 
@@ -114,7 +118,15 @@ where
         .light_line_style(WHITE)
         .draw()?;
     let font = ("sans-serif", 14).into_font().color(&BLACK);
+    // Each colour also gets a marker shape, a few per curve, so that the
+    // curves part without their colours.
+    let mut shapes = ShapesByColour::default();
     for (k, (name, color, dashed, points)) in series.iter().enumerate() {
+        let shape = shapes.shape(*color);
+        chart.draw_series(
+            sparse(points, shape, MARKERS_PER_CURVE)
+                .map(|p| EmptyElement::at(p) + marker(shape, *color, (0, 0))),
+        )?;
         let style = color.stroke_width(2);
         let y = 50 + 22 * k as i32;
         if *dashed {
@@ -125,6 +137,7 @@ where
             chart.draw_series(LineSeries::new(points.iter().copied(), style))?;
             legend_area.draw(&PathElement::new(vec![(4, y), (26, y)], style))?;
         }
+        legend_area.draw(&marker(shape, *color, (15, y)))?;
         legend_area.draw(&Text::new(name.clone(), (32, y - 8), font.clone()))?;
     }
     Ok(())

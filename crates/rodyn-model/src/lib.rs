@@ -32,6 +32,7 @@ pub mod codegen;
 pub mod description;
 pub mod diagnostic;
 pub mod geometry;
+pub mod joint_limits;
 pub mod names;
 pub mod neutral;
 mod options;

@@ -12,6 +12,7 @@
 //! ```
 
 use rodyn_model::description::JointType;
+use rodyn_model::joint_limits::read_joint_limits;
 use rodyn_model::names::module_name;
 use rodyn_model::render::{render_svg, View};
 use rodyn_model::runtime::RuntimeModel;
@@ -243,8 +244,12 @@ fn run(args: &[String]) -> Result<(), String> {
             for w in &visuals.warnings {
                 eprintln!("{w}");
             }
+            let limits = read_joint_limits(&model).map_err(|d| d.to_string())?;
             let runtime = RuntimeModel::new(model).map_err(|d| d.to_string())?;
             let mut scene = view::scene(&runtime, visuals, &q);
+            for (body, limits) in scene.bodies.iter_mut().zip(limits) {
+                body.limits = limits;
+            }
             if let Some(csv) = &trajectory {
                 let text = std::fs::read_to_string(csv)
                     .map_err(|e| format!("--trajectory {}: {e}", csv.display()))?;

@@ -5,10 +5,12 @@
 use crate::description::JointType;
 use crate::runtime::RuntimeModel;
 use crate::visual::Visuals;
-use rodyn_viewer::{Body, ContactPoint, Endpoint, Joint, Pose, Scene, Trajectory};
+use rodyn_viewer::{Body, ContactPoint, Endpoint, Joint, Mimic, Pose, Scene, Trajectory};
 
 /// The scene of `model` with `visuals`, its sliders starting at `q` (the
-/// file's layout; empty: zeros).
+/// file's layout; empty: zeros), mimic joints following their leaders.
+/// The sliders' ranges are unlimited: set [`Body::limits`] from
+/// [`crate::joint_limits::read_joint_limits`].
 #[must_use]
 pub fn scene(model: &RuntimeModel, visuals: Visuals, q: &[f64]) -> Scene {
     let d = model.description();
@@ -40,6 +42,17 @@ pub fn scene(model: &RuntimeModel, visuals: Visuals, q: &[f64]) -> Scene {
             mass: b.inertia.mass,
             com: b.inertia.com,
             inertia: b.inertia.inertia,
+            limits: None,
+        })
+        .collect();
+    scene.mimics = d
+        .mimics
+        .iter()
+        .map(|m| Mimic {
+            follower: m.follower,
+            leader: m.leader,
+            multiplier: m.multiplier,
+            offset: m.offset,
         })
         .collect();
     scene.endpoints = d

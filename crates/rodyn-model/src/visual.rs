@@ -33,10 +33,7 @@ pub struct Visuals {
 /// # Errors
 /// The URDF cannot be read again, or a `<visual>` has a malformed number.
 pub fn read_visuals(model: &ModelDescription, package_path: &[PathBuf]) -> Result<Visuals> {
-    let Some(urdf) = model.included_files.iter().find(|f| {
-        f.extension()
-            .is_some_and(|e| e.eq_ignore_ascii_case("urdf"))
-    }) else {
+    let Some(urdf) = model_urdf(model) else {
         return Ok(Visuals::default());
     };
     let text = crate::read_model_file(urdf)
@@ -50,6 +47,19 @@ pub fn read_visuals(model: &ModelDescription, package_path: &[PathBuf]) -> Resul
         package_path,
     };
     reader.read(&doc, model)
+}
+
+/// The URDF a model was read from: the model file itself, or the one a
+/// rodyn file includes.
+pub(crate) fn model_urdf(model: &ModelDescription) -> Option<&Path> {
+    model
+        .included_files
+        .iter()
+        .find(|f| {
+            f.extension()
+                .is_some_and(|e| e.eq_ignore_ascii_case("urdf"))
+        })
+        .map(PathBuf::as_path)
 }
 
 struct Reader<'a> {

@@ -2,6 +2,7 @@
 //! at the right poses, mesh files found and read once, and a trajectory's
 //! poses from rodyn's forward kinematics.
 
+use rodyn_model::joint_limits::read_joint_limits;
 use rodyn_model::runtime::RuntimeModel;
 use rodyn_model::{load, view, visual::read_visuals, LoadOptions};
 use rodyn_viewer::{Geometry, Joint};
@@ -131,4 +132,64 @@ fn a_trajectory_holds_rodyns_forward_kinematics() {
         assert!((got - want).abs() < 1e-15, "{z_axis:?}");
     }
     std::fs::remove_dir_all(share).unwrap();
+}
+
+/// A gripper: a wrist without limits, two fingers, the second a mimic of
+/// the first, and a joint whose `<limit>` states only effort and velocity.
+const GRIPPER: &str = r#"<?xml version="1.0"?>
+<robot name="gripper">
+  <link name="palm"/>
+  <link name="hand"><inertial><mass value="0.5"/><inertia ixx="1e-3" iyy="1e-3" izz="1e-3" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <link name="left"><inertial><mass value="0.1"/><inertia ixx="1e-5" iyy="1e-5" izz="1e-5" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <link name="right"><inertial><mass value="0.1"/><inertia ixx="1e-5" iyy="1e-5" izz="1e-5" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <link name="thumb"><inertial><mass value="0.1"/><inertia ixx="1e-5" iyy="1e-5" izz="1e-5" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <joint name="wrist" type="continuous"><parent link="palm"/><child link="hand"/><axis xyz="0 0 1"/></joint>
+  <joint name="left_finger" type="prismatic"><parent link="hand"/><child link="left"/><axis xyz="0 1 0"/>
+    <limit lower="0.0" upper="0.04" effort="20" velocity="0.2"/></joint>
+  <joint name="right_finger" type="prismatic"><parent link="hand"/><child link="right"/><axis xyz="0 -1 0"/>
+    <limit lower="0.0" upper="0.04" effort="20" velocity="0.2"/><mimic joint="left_finger" multiplier="1" offset="0.001"/></joint>
+  <joint name="thumb_joint" type="revolute"><parent link="hand"/><child link="thumb"/><axis xyz="1 0 0"/>
+    <limit effort="1" velocity="1"/></joint>
+</robot>
+"#;
+
+#[test]
+fn sliders_get_the_urdf_limits_and_mimic_joints_follow() {
+    let dir = std::env::temp_dir().join(format!("rodyn-model-view-limits-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let urdf = dir.join("gripper.urdf");
+    std::fs::write(&urdf, GRIPPER).unwrap();
+    let model = load(&urdf, LoadOptions::default()).unwrap();
+    let limits = read_joint_limits(&model).unwrap();
+    let names: Vec<&str> = model.bodies.iter().map(|b| b.joint_name.as_str()).collect();
+    assert_eq!(
+        names,
+        ["wrist", "left_finger", "right_finger", "thumb_joint"]
+    );
+    assert_eq!(
+        limits,
+        [None, Some([0.0, 0.04]), Some([0.0, 0.04]), None],
+        "continuous: none; lower = upper = 0 (URDF's defaults): none"
+    );
+    let scene = view::scene(&RuntimeModel::new(model).unwrap(), Default::default(), &[]);
+    assert_eq!(scene.mimics.len(), 1);
+    let mimic = scene.mimics[0];
+    assert_eq!((mimic.follower, mimic.leader), (2, 1));
+    assert_eq!((mimic.multiplier, mimic.offset), (1.0, 0.001));
+    // A malformed bound names the joint and the line.
+    std::fs::write(
+        &urdf,
+        GRIPPER.replace(
+            "upper=\"0.04\" effort=\"20\" velocity=\"0.2\"/></joint>",
+            "upper=\"wide\" effort=\"20\" velocity=\"0.2\"/></joint>",
+        ),
+    )
+    .unwrap();
+    let model = load(&urdf, LoadOptions::default()).unwrap();
+    let e = read_joint_limits(&model).unwrap_err().to_string();
+    assert!(
+        e.contains("gripper.urdf:10:") && e.contains("joint `left_finger`: <limit upper=\"wide\">"),
+        "{e}"
+    );
+    std::fs::remove_dir_all(dir).unwrap();
 }

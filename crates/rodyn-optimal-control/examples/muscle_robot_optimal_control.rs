@@ -35,6 +35,7 @@ use rodyn_optimal_control::muscle_robot::{Derivatives, Task, EXCITATION_RATE_WEI
 use rodyn_optimal_control::smooth_muscle_robot::{
     effort_shares, solve_smooth, solve_thelen, Solved, MAX_DEFECT, MAX_TRACKING_RMS,
 };
+use rodyn_plot_markers::{marker, sparse};
 use rodyn_scenarios::muscle_robot::{NU, NV};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -318,12 +319,16 @@ const MUSCLE_COLORS: [RGBColor; NU] = [
 ];
 /// Largest excitation and activation of a muscle the figure calls idle.
 const IDLE: f64 = 1e-3;
+/// Markers on each muscle's curves.
+const MARKERS_PER_CURVE: usize = 10;
 const JOINT_COLORS: [RGBColor; NV] = [RGBColor(0, 0, 0), RGBColor(120, 120, 120)];
 
-/// One legend entry: a line (solid or dashed) or a dot, and its text.
+/// One legend entry: a line (solid or dashed) or a dot, its marker
+/// (index into [`rodyn_plot_markers::SHAPES`]) if it has one, and its text.
 struct Entry {
     color: RGBColor,
     style: Mark,
+    shape: Option<usize>,
     text: String,
 }
 
@@ -349,7 +354,14 @@ fn legend(
                     area.draw(&PathElement::new([(x, y), (x + 6, y)], style))?;
                 }
             }
-            Mark::Dot => area.draw(&Circle::new((22, y), 3, entry.color.filled()))?,
+            Mark::Dot => {
+                if entry.shape.is_none() {
+                    area.draw(&Circle::new((22, y), 3, entry.color.filled()))?
+                }
+            }
+        }
+        if let Some(shape) = entry.shape {
+            area.draw(&marker(shape, entry.color, (22, y)))?;
         }
         area.draw(&Text::new(
             entry.text.clone(),
@@ -393,25 +405,32 @@ fn plot(path: &Path, task: &Task, run: &Solved) -> Result<(), Box<dyn std::error
         .draw()?;
     let mut entries = Vec::new();
     for (j, name) in ["q1, shoulder", "q2, elbow"].into_iter().enumerate() {
+        // The elbow's line dashed and its points squares: the joints
+        // differ by more than their grey.
         let color = JOINT_COLORS[j];
-        chart.draw_series(LineSeries::new(
-            samples.iter().map(|&t| (t, task.desired(t).0[j])),
-            color.stroke_width(2),
-        ))?;
+        let desired: Vec<(f64, f64)> = samples.iter().map(|&t| (t, task.desired(t).0[j])).collect();
+        if j == 0 {
+            chart.draw_series(LineSeries::new(desired, color.stroke_width(2)))?;
+        } else {
+            chart.draw_series(dashed(desired, color))?;
+        }
+        let shape = 2 * j; // circle, square
         chart.draw_series(
             run.resimulated
                 .iter()
                 .step_by(run.resimulated.len() / 40)
-                .map(|&(t, q)| Circle::new((t, q[j]), 3, color.filled())),
+                .map(|&(t, q)| EmptyElement::at((t, q[j])) + marker(shape, color, (0, 0))),
         )?;
         entries.push(Entry {
             color,
-            style: Mark::Line,
+            style: if j == 0 { Mark::Line } else { Mark::Dashed },
+            shape: None,
             text: format!("{name}, desired"),
         });
         entries.push(Entry {
             color,
             style: Mark::Dot,
+            shape: Some(shape),
             text: format!("{name}, re-simulated"),
         });
     }
@@ -444,21 +463,33 @@ fn plot(path: &Path, task: &Task, run: &Solved) -> Result<(), Box<dyn std::error
         } else {
             String::new()
         };
-        chart.draw_series(LineSeries::new(
-            run.nodes.iter().map(|n| (n.t, n.u[i])),
-            color.stroke_width(2),
-        ))?;
+        let excitation: Vec<(f64, f64)> = run.nodes.iter().map(|n| (n.t, n.u[i])).collect();
         let activation: Vec<(f64, f64)> =
             run.nodes.iter().map(|n| (n.t, n.x[2 * NV + i])).collect();
+        chart.draw_series(LineSeries::new(
+            excitation.iter().copied(),
+            color.stroke_width(2),
+        ))?;
+        // Markers on the excitation and (half a spacing on) the activation,
+        // shifted per muscle so that the idle ones' do not hide each other:
+        // muscles differ by more than their colour.
+        let half_spacing = run.nodes.len() / (2 * MARKERS_PER_CURVE);
+        chart.draw_series(
+            sparse(&excitation, i, MARKERS_PER_CURVE)
+                .chain(sparse(&activation[half_spacing..], i, MARKERS_PER_CURVE))
+                .map(|p| EmptyElement::at(p) + marker(i, color, (0, 0))),
+        )?;
         chart.draw_series(dashed(activation, color))?;
         entries.push(Entry {
             color,
             style: Mark::Line,
+            shape: Some(i),
             text: format!("u{}, excitation of m{}{idle}", i + 1, i + 1),
         });
         entries.push(Entry {
             color,
             style: Mark::Dashed,
+            shape: Some(i),
             text: format!("a{}, activation of m{}{idle}", i + 1, i + 1),
         });
     }

@@ -22,8 +22,6 @@ pub enum Mark {
     ThinLine,
     /// A thin dotted line (a second kind of reference).
     Dotted,
-    /// Points only.
-    Points,
     /// Hollow circles, large enough to show a cross or point drawn at the
     /// same place.
     Rings,
@@ -359,12 +357,6 @@ where
                     }
                 }
             }
-            Mark::Points => {
-                chart
-                    .draw_series(points.iter().map(|&p| Circle::new(p, 3, c.filled())))?
-                    .label(&s.name)
-                    .legend(move |(x, y)| Circle::new((x + 9, y), 3, legend_color.filled()));
-            }
             Mark::Rings => {
                 chart
                     .draw_series(points.iter().map(|&p| Circle::new(p, 6, c.stroke_width(2))))?
@@ -627,7 +619,6 @@ where
                     )?,
                 }
             }
-            Mark::Points => panel.draw(&Circle::new((17, y), 3, c.filled()))?,
             Mark::Rings => panel.draw(&Circle::new((17, y), 5, c.stroke_width(2)))?,
             Mark::Crosses => panel.draw(&Cross::new((17, y), 5, c.stroke_width(2)))?,
             Mark::Triangles => panel.draw(&TriangleMarker::new((17, y), 5, c.filled()))?,

@@ -2,7 +2,7 @@
 
 use crate::animate::{planar_stick_figure_gif, stick_figure_gif};
 use crate::models::arm7;
-use crate::plot::{plot, Curve, Figure, Mark, Scale, Series};
+use crate::plot::{plot, plot_panels, Curve, Figure, Mark, Panel, Scale, Series};
 use crate::progress::Progress;
 use crate::scenario::{run, RunConfig, Scenario};
 use crate::trajectory::Trajectory;
@@ -90,26 +90,35 @@ pub fn run_command(
                 ),
                 &series,
             )?;
-            let marks = [Mark::Line, Mark::ThinLine, Mark::LinePoints, Mark::Points];
-            let series = forces
-                .into_iter()
-                .enumerate()
-                .map(|(leg, f)| {
-                    Series::new(
-                        format!("{} foot", LEG_NAMES[leg]),
-                        f,
-                        marks[leg % marks.len()],
-                        2 + leg,
-                    )
+            // A trot moves diagonal legs together: one panel per diagonal
+            // pair, so that each foot's force can be followed (four spiky
+            // curves on one axis hide one another).
+            let diagonals = [(0, 3), (1, 2)];
+            let panels = diagonals
+                .iter()
+                .map(|&(a, b)| Panel {
+                    title: format!("{} and {} feet", LEG_NAMES[a], LEG_NAMES[b]),
+                    series: [(a, Mark::Line), (b, Mark::ThinLine)]
+                        .into_iter()
+                        .map(|(leg, mark)| {
+                            Series::new(
+                                format!("{} foot", LEG_NAMES[leg]),
+                                forces[leg].clone(),
+                                mark,
+                                2 + leg,
+                            )
+                        })
+                        .collect(),
                 })
                 .collect::<Vec<_>>();
-            plot(
+            plot_panels(
                 &forces_path,
                 &figure(
                     &format!("quadruped: {name}, ground's normal force on each foot"),
                     "normal force (N)",
                 ),
-                &series,
+                &panels,
+                3,
             )?;
             let model = quadruped::model::<f64>()?;
             stick_figure_gif(

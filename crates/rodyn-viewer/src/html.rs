@@ -4,7 +4,11 @@
 use crate::ellipsoid::inertia_ellipsoid;
 use crate::scene::{round_micro, Geometry, Joint, Scene};
 use base64::Engine as _;
+use flate2::write::GzEncoder;
+use flate2::Compression;
 use serde_json::{json, Value};
+use std::io::Write as _;
+use std::sync::OnceLock;
 
 const TEMPLATE: &str = include_str!("../page/viewer.html");
 const STYLE: &str = include_str!("../page/viewer.css");
@@ -29,10 +33,13 @@ impl std::error::Error for HtmlError {}
 /// A body whose parent does not come before it, a visual or endpoint on a
 /// body or mesh that does not exist, a trajectory whose samples do not give
 /// one pose per body or whose times decrease, a number that is not finite,
-/// or a starting configuration of the wrong length.
+/// joint limits whose lower bound is not below the upper, a mimic joint
+/// that is not a one-coordinate joint following another, or a starting
+/// configuration of the wrong length.
 pub fn write_html(scene: &Scene) -> Result<String, HtmlError> {
     check(scene)?;
-    let data = page_data(scene);
+    let data = page_data(scene)?;
+    let three = compressed_three()?;
     // `<` only occurs inside JSON strings, where \u003c means the same; so
     // no name can close the <script> element that holds the JSON.
     let json = serde_json::to_string(&data)
@@ -47,10 +54,32 @@ pub fn write_html(scene: &Scene) -> Result<String, HtmlError> {
             ),
             ("{{STYLE}}", STYLE),
             ("{{SCENE}}", &json),
-            ("{{THREE}}", THREE),
+            ("{{THREE}}", three),
             ("{{SCRIPT}}", SCRIPT),
         ],
     ))
+}
+
+/// `bytes` gzip-compressed, as base64 text, which the page inflates with
+/// the browser's `DecompressionStream`: meshes (COLLADA's XML above all)
+/// and three.js shrink to a fraction of their size.
+fn gzip_base64(bytes: &[u8]) -> Result<String, HtmlError> {
+    let mut gzip = GzEncoder::new(Vec::with_capacity(bytes.len() / 4), Compression::default());
+    let compressed = gzip
+        .write_all(bytes)
+        .and_then(|()| gzip.finish())
+        .map_err(|e| HtmlError(format!("cannot compress a block of the page: {e}")))?;
+    Ok(base64::engine::general_purpose::STANDARD.encode(compressed))
+}
+
+/// three.js, compressed once per process.
+fn compressed_three() -> Result<&'static str, HtmlError> {
+    static COMPRESSED: OnceLock<String> = OnceLock::new();
+    if let Some(done) = COMPRESSED.get() {
+        return Ok(done);
+    }
+    let compressed = gzip_base64(THREE.as_bytes())?;
+    Ok(COMPRESSED.get_or_init(|| compressed))
 }
 
 /// `template` with each key replaced by its value, once, in one pass (so
@@ -101,6 +130,38 @@ fn check(scene: &Scene) -> Result<(), HtmlError> {
             return err(format!(
                 "body `{}` has a placement, mass or inertia that is not finite",
                 b.name
+            ));
+        }
+        if let Some([lower, upper]) = b.limits {
+            if b.joint.nq() != 1 || !lower.is_finite() || !upper.is_finite() || lower >= upper {
+                return err(format!(
+                    "joint `{}` has limits [{lower}, {upper}]: limits need a revolute or prismatic joint and finite bounds, the lower below the upper",
+                    b.joint_name
+                ));
+            }
+        }
+    }
+    for (k, m) in scene.mimics.iter().enumerate() {
+        let one_coordinate = |i: usize| scene.bodies.get(i).is_some_and(|b| b.joint.nq() == 1);
+        if m.follower == m.leader || !one_coordinate(m.follower) || !one_coordinate(m.leader) {
+            return err(format!(
+                "mimic {k} makes body {} follow body {} (of {nb}): both must be revolute or prismatic joints, and differ",
+                m.follower, m.leader
+            ));
+        }
+        if !m.multiplier.is_finite() || !m.offset.is_finite() {
+            return err(format!(
+                "mimic {k} (body {} following body {}) has a multiplier or offset that is not finite",
+                m.follower, m.leader
+            ));
+        }
+        if scene.mimics[..k]
+            .iter()
+            .any(|earlier| earlier.follower == m.follower)
+        {
+            return err(format!(
+                "body {} follows two joints (mimic {k})",
+                m.follower
             ));
         }
     }
@@ -180,7 +241,7 @@ fn check(scene: &Scene) -> Result<(), HtmlError> {
     Ok(())
 }
 
-fn page_data(scene: &Scene) -> Value {
+fn page_data(scene: &Scene) -> Result<Value, HtmlError> {
     let bodies: Vec<Value> = scene
         .bodies
         .iter()
@@ -207,6 +268,7 @@ fn page_data(scene: &Scene) -> Value {
                 "mass": b.mass,
                 "com": b.com.map(round_micro),
                 "ellipsoid": ellipsoid,
+                "limits": b.limits,
             })
         })
         .collect();
@@ -231,13 +293,13 @@ fn page_data(scene: &Scene) -> Value {
         .meshes
         .iter()
         .map(|m| {
-            json!({
+            Ok(json!({
                 "name": m.name,
                 "format": m.format.name(),
-                "data": base64::engine::general_purpose::STANDARD.encode(&m.bytes),
-            })
+                "gzip": gzip_base64(&m.bytes)?,
+            }))
         })
-        .collect();
+        .collect::<Result<_, HtmlError>>()?;
     let endpoints: Vec<Value> = scene
         .endpoints
         .iter()
@@ -270,17 +332,30 @@ fn page_data(scene: &Scene) -> Value {
             .collect();
         json!({"t": t.t, "poses": poses, "contacts": contacts})
     });
-    json!({
+    let mimics: Vec<Value> = scene
+        .mimics
+        .iter()
+        .map(|m| {
+            json!({
+                "follower": m.follower,
+                "leader": m.leader,
+                "multiplier": m.multiplier,
+                "offset": m.offset,
+            })
+        })
+        .collect();
+    Ok(json!({
         "name": scene.name,
         "up": scene.up,
         "nq": scene.nq(),
         "q": q,
         "bodies": bodies,
+        "mimics": mimics,
         "visuals": visuals,
         "meshes": meshes,
         "endpoints": endpoints,
         "trajectory": trajectory,
-    })
+    }))
 }
 
 #[cfg(test)]
@@ -301,14 +376,121 @@ mod tests {
             mass: 1.0,
             com: [0.0, 0.0, -0.5],
             inertia: [[0.08, 0.0, 0.0], [0.0, 0.08, 0.0], [0.0, 0.0, 1e-3]],
+            limits: None,
         });
         scene
     }
 
+    /// A pendulum hanging from the first one.
+    fn double_pendulum() -> Scene {
+        let mut scene = pendulum();
+        let mut lower = scene.bodies[0].clone();
+        lower.name = "lower rod".into();
+        lower.joint_name = "knee".into();
+        lower.parent = Some(0);
+        lower.placement.trans = [0.0, 0.0, -1.0];
+        scene.bodies.push(lower);
+        scene
+    }
+
+    /// The page's JSON block, parsed.
+    fn page_json(html: &str) -> Value {
+        let start = html.find("type=\"application/json\">").unwrap() + 24;
+        let end = start + html[start..].find("</script>").unwrap();
+        serde_json::from_str(&html[start..end]).unwrap()
+    }
+
+    /// The bytes of a gzip-compressed base64 block.
+    fn inflate(text: &str) -> Vec<u8> {
+        use std::io::Read as _;
+        let gzip = base64::engine::general_purpose::STANDARD
+            .decode(text)
+            .unwrap();
+        let mut out = Vec::new();
+        flate2::read::GzDecoder::new(&gzip[..])
+            .read_to_end(&mut out)
+            .unwrap();
+        out
+    }
+
     #[test]
-    fn the_vendored_script_cannot_close_its_element() {
-        assert!(!THREE.contains("</script"));
+    fn the_scripts_cannot_close_their_elements() {
         assert!(!SCRIPT.contains("</script"));
+        let three = compressed_three().unwrap();
+        assert!(three
+            .bytes()
+            .all(|c| c.is_ascii_alphanumeric() || b"+/=".contains(&c)));
+    }
+
+    #[test]
+    fn three_and_meshes_inflate_to_their_bytes() {
+        let mut scene = pendulum();
+        let stl = b"solid part\nendsolid part\n".repeat(50);
+        scene.meshes.push(crate::scene::Mesh {
+            name: "part.stl".into(),
+            format: crate::scene::MeshFormat::Stl,
+            bytes: stl.clone(),
+        });
+        let html = write_html(&scene).unwrap();
+        let data = page_json(&html);
+        let packed = data["meshes"][0]["gzip"].as_str().unwrap();
+        assert_eq!(inflate(packed), stl);
+        assert!(
+            packed.len() < stl.len() / 4,
+            "{} base64 bytes for {}",
+            packed.len(),
+            stl.len()
+        );
+        assert_eq!(inflate(compressed_three().unwrap()), THREE.as_bytes());
+        assert!(
+            html.len() < THREE.len() / 2,
+            "the page holds three.js compressed"
+        );
+    }
+
+    #[test]
+    fn limits_and_mimics_reach_the_page() {
+        let mut scene = double_pendulum();
+        scene.bodies[1].limits = Some([-0.5, 2.0]);
+        scene.mimics.push(crate::scene::Mimic {
+            follower: 1,
+            leader: 0,
+            multiplier: -2.0,
+            offset: 0.1,
+        });
+        let data = page_json(&write_html(&scene).unwrap());
+        assert_eq!(data["bodies"][0]["limits"], Value::Null);
+        assert_eq!(data["bodies"][1]["limits"], json!([-0.5, 2.0]));
+        assert_eq!(
+            data["mimics"],
+            json!([{"follower": 1, "leader": 0, "multiplier": -2.0, "offset": 0.1}])
+        );
+    }
+
+    #[test]
+    fn bad_limits_and_mimics_are_refused_with_the_joint() {
+        let mut scene = double_pendulum();
+        scene.bodies[1].limits = Some([1.0, -1.0]);
+        let e = write_html(&scene).unwrap_err();
+        assert!(e.0.contains("joint `knee` has limits [1, -1]"), "{e}");
+        let mut scene = double_pendulum();
+        scene.bodies[0].joint = Joint::FreeFlyer;
+        scene.mimics.push(crate::scene::Mimic {
+            follower: 1,
+            leader: 0,
+            multiplier: 1.0,
+            offset: 0.0,
+        });
+        let e = write_html(&scene).unwrap_err();
+        assert!(e.0.contains("mimic 0 makes body 1 follow body 0"), "{e}");
+        let mut scene = double_pendulum();
+        scene.mimics.push(crate::scene::Mimic {
+            follower: 1,
+            leader: 0,
+            multiplier: f64::NAN,
+            offset: 0.0,
+        });
+        assert!(write_html(&scene).unwrap_err().0.contains("not finite"));
     }
 
     #[test]
@@ -333,10 +515,7 @@ mod tests {
             poses: vec![vec![Pose::IDENTITY], vec![turned]],
             contacts: vec![],
         });
-        let html = write_html(&scene).unwrap();
-        let start = html.find("type=\"application/json\">").unwrap() + 24;
-        let end = start + html[start..].find("</script>").unwrap();
-        let data: Value = serde_json::from_str(&html[start..end]).unwrap();
+        let data = page_json(&write_html(&scene).unwrap());
         assert_eq!(data["nq"], 1);
         assert_eq!(data["q"], json!([0.0]));
         let second = &data["trajectory"]["poses"][1];

@@ -5,7 +5,9 @@
 //! files, and optionally a recorded trajectory — into one self-contained
 //! HTML page. three.js (vendored, unmodified; see `vendor/three/README.md`)
 //! and the page's own small script are inlined, the scene is a JSON block,
-//! meshes are base64 inside it: the file opens from `file://` offline.
+//! meshes are inside it: the file opens from `file://` offline. three.js
+//! and the mesh files are gzip-compressed (base64 text), and the browser
+//! inflates them with its `DecompressionStream`.
 //!
 //! The producer writes data, the page only renders: world poses of every
 //! body at every sample of a trajectory come from the producer (rodyn's
@@ -24,6 +26,7 @@
 //!     mass: 1.0,
 //!     com: [0.0, 0.0, -0.5],
 //!     inertia: [[0.08, 0.0, 0.0], [0.0, 0.08, 0.0], [0.0, 0.0, 1e-3]],
+//!     limits: Some([-2.0, 2.0]),
 //! });
 //! let html = write_html(&scene).unwrap();
 //! assert!(html.starts_with("<!DOCTYPE html>"));
@@ -37,6 +40,6 @@ mod scene;
 pub use ellipsoid::{inertia_ellipsoid, Ellipsoid};
 pub use html::{write_html, HtmlError};
 pub use scene::{
-    Body, ContactPoint, Endpoint, Geometry, Joint, Mesh, MeshFormat, Pose, Scene, Trajectory,
-    Visual,
+    Body, ContactPoint, Endpoint, Geometry, Joint, Mesh, MeshFormat, Mimic, Pose, Scene,
+    Trajectory, Visual,
 };

@@ -88,6 +88,25 @@ pub struct Body {
     pub com: [f64; 3],
     /// Rotational inertia about the centre of mass, body axes, kg m².
     pub inertia: [[f64; 3]; 3],
+    /// The joint coordinate's range `[lower, upper]` (rad or m) for its
+    /// slider, from the URDF's `<limit>`; `None`: unlimited (a slider of
+    /// ±π for an angle, about the robot's size for a length).
+    pub limits: Option<[f64; 2]>,
+}
+
+/// A joint that follows another (URDF `<mimic>`):
+/// `q_follower = multiplier q_leader + offset`. Its slider follows the
+/// leader's.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Mimic {
+    /// The follower's body, a revolute or prismatic joint.
+    pub follower: usize,
+    /// The leader's body, a revolute or prismatic joint.
+    pub leader: usize,
+    /// Multiplier.
+    pub multiplier: f64,
+    /// Offset, rad or m.
+    pub offset: f64,
 }
 
 /// The shape of a piece of visual geometry.
@@ -215,6 +234,8 @@ pub struct Scene {
     pub up: [f64; 3],
     /// Bodies, parents before children.
     pub bodies: Vec<Body>,
+    /// Joints that follow others.
+    pub mimics: Vec<Mimic>,
     /// Visual geometry; with none, the page draws each body as capsules
     /// from its joint to its children's joints and to its endpoints.
     pub visuals: Vec<Visual>,
@@ -237,6 +258,7 @@ impl Scene {
             name: name.into(),
             up: [0.0, 0.0, 1.0],
             bodies: Vec::new(),
+            mimics: Vec::new(),
             visuals: Vec::new(),
             meshes: Vec::new(),
             endpoints: Vec::new(),

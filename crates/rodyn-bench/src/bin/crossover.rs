@@ -23,6 +23,7 @@ use rodyn_bench::models::{planar_chain, planar_chain_3d};
 use rodyn_bench::timing::median;
 use rodyn_bench::Algorithm;
 use rodyn_cli::writable_file;
+use rodyn_plot_markers::marker;
 use std::io::Write as _;
 
 const STATES: usize = 32;
@@ -336,31 +337,4 @@ fn draw(
         .draw()?;
     root.present()?;
     Ok(())
-}
-
-/// Variant `v`'s marker around its anchor: circle, triangle, square,
-/// diamond (the circle an octagon, so that every marker is one polygon).
-fn marker(v: usize, colour: RGBColor, at: (i32, i32)) -> Polygon<(i32, i32)> {
-    const SHAPES: [&[(i32, i32)]; 4] = [
-        &[
-            (2, -4),
-            (4, -2),
-            (4, 2),
-            (2, 4),
-            (-2, 4),
-            (-4, 2),
-            (-4, -2),
-            (-2, -4),
-        ],
-        &[(0, -5), (5, 4), (-5, 4)],
-        &[(-4, -4), (4, -4), (4, 4), (-4, 4)],
-        &[(0, -5), (5, 0), (0, 5), (-5, 0)],
-    ];
-    let corners = SHAPES[v % SHAPES.len()].iter();
-    Polygon::new(
-        corners
-            .map(|&(x, y)| (at.0 + x, at.1 + y))
-            .collect::<Vec<_>>(),
-        colour.filled(),
-    )
 }
