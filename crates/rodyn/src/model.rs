@@ -87,6 +87,7 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, 
             constrained_configuration |= joints[i].const_constrains_configuration();
             i += 1;
         }
+        // The topology's counts are the joints' own: no mismatch possible.
         Self {
             topology: Topology::new(parents, nq, nv, NQ),
             joints,
@@ -96,6 +97,54 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, 
             armature: [S::ZERO; NV],
             constrained_configuration,
         }
+    }
+
+    /// [`Model::new`] for a tree known only at run time (read from a file):
+    /// the same checks, reported instead of panicking.
+    ///
+    /// # Errors
+    /// [`Error::InvalidModel`] with [`ModelProblem::Topology`] naming what
+    /// is inconsistent (a parent after its child, counts that do not add up
+    /// to `NQ`/`NV`, a joint with too many degrees of freedom); `body` is
+    /// the body the topology error names, or 0 for a count.
+    pub fn try_new(
+        parents: [Option<usize>; NB],
+        joints: [Joint<S>; NB],
+        placements: [Transform<S>; NB],
+        inertias: [Inertia<S>; NB],
+        gravity: Motion<S>,
+    ) -> Result<Self> {
+        let topology = Topology::try_new(
+            parents,
+            joints.map(|j| j.const_nq()),
+            joints.map(|j| j.const_nv()),
+            NQ,
+        )
+        .map_err(topology_error)?;
+        let constrained_configuration = joints.iter().any(|j| j.const_constrains_configuration());
+        Ok(Self {
+            topology,
+            joints,
+            placements,
+            inertias,
+            gravity,
+            armature: [S::ZERO; NV],
+            constrained_configuration,
+        })
+    }
+}
+
+/// A topology error as the model's, naming its body when it has one.
+#[cold]
+fn topology_error(error: crate::topology::TopologyError) -> Error {
+    use crate::topology::TopologyError as E;
+    let body = match error {
+        E::ParentAfterChild { body } | E::TooManyJointDofs { body } => body,
+        E::ConfigurationCount { .. } | E::VelocityCount { .. } => 0,
+    };
+    Error::InvalidModel {
+        body,
+        problem: ModelProblem::Topology(error),
     }
 }
 
@@ -122,7 +171,8 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, 
             i += 1;
         }
         // Planar joints are angles and displacements: any finite q is valid.
-        Self::from_parts(
+        // The topology's counts are the joints' own (the loop above).
+        Self::assemble(
             Topology::new(parents, nq, nv, NQ),
             joints,
             placements,
@@ -136,22 +186,80 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, 
 impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
     Model<S, NB, NQ, NV, G>
 {
-    /// Assembles a model from a checked topology (used by the per-geometry
-    /// `const` constructors).
+    /// Assembles a model from a checked topology and the joints it was laid
+    /// out for, panicking where [`Self::try_from_parts`] returns an error.
     ///
     /// # Panics
-    /// When the topology was laid out for another `NQ` than the model's; in
-    /// a `const` this is a compile error.
+    /// When the topology was laid out for another `NQ` than the model's, or
+    /// when a joint's `nq`/`nv` differ from the topology's for its body.
     #[must_use]
-    pub const fn from_parts(
+    pub fn from_parts(
         topology: Topology<NB, NV>,
         joints: [G::Joint<S>; NB],
         placements: [G::Transform<S>; NB],
         inertias: [G::Inertia<S>; NB],
         gravity: G::Motion<S>,
     ) -> Self {
-        // The algorithms index `q: &[S; NQ]` by the topology's ranges
-        // (`Model::configuration_range`).
+        match Self::try_from_parts(topology, joints, placements, inertias, gravity) {
+            Ok(model) => model,
+            Err(error) => panic!("rodyn model: {}", error),
+        }
+    }
+
+    /// Assembles a model from a checked topology and its joints, for trees
+    /// built at run time.
+    ///
+    /// The algorithms index `q: &[S; NQ]` and `v: &[S; NV]` by the
+    /// topology's ranges and hand each joint the coordinates there, so the
+    /// topology must be laid out for `NQ` and for these joints' counts.
+    ///
+    /// # Errors
+    /// [`Error::InvalidModel`] with [`ModelProblem::Topology`]
+    /// ([`TopologyError::ConfigurationCount`](crate::topology::TopologyError::ConfigurationCount))
+    /// when the topology was laid out for another `NQ`, or with
+    /// [`ModelProblem::JointCoordinateMismatch`] naming the first body whose
+    /// joint's `nq` or `nv` differ from the topology's.
+    pub fn try_from_parts(
+        topology: Topology<NB, NV>,
+        joints: [G::Joint<S>; NB],
+        placements: [G::Transform<S>; NB],
+        inertias: [G::Inertia<S>; NB],
+        gravity: G::Motion<S>,
+    ) -> Result<Self> {
+        let nq_total = topology.tables().nq_total;
+        if nq_total != NQ {
+            return Err(topology_error(
+                crate::topology::TopologyError::ConfigurationCount {
+                    declared: NQ,
+                    found: nq_total,
+                },
+            ));
+        }
+        if let Some(body) = (0..NB).find(|&i| {
+            joints[i].nq() != topology.tables().nq[i] || joints[i].nv() != topology.tables().nv[i]
+        }) {
+            return Err(Error::InvalidModel {
+                body,
+                problem: ModelProblem::JointCoordinateMismatch,
+            });
+        }
+        Ok(Self::assemble(
+            topology, joints, placements, inertias, gravity,
+        ))
+    }
+
+    /// Assembles a model whose topology the caller laid out for `NQ` and
+    /// for these joints' counts (the geometry constructors, which read the
+    /// counts from the joints themselves).
+    const fn assemble(
+        topology: Topology<NB, NV>,
+        joints: [G::Joint<S>; NB],
+        placements: [G::Transform<S>; NB],
+        inertias: [G::Inertia<S>; NB],
+        gravity: G::Motion<S>,
+    ) -> Self {
+        // `Topology::new` lays the tree out for the `nq_total` it is given;
+        // the callers give `NQ` (a compile error in a `const` otherwise).
         assert!(
             topology.tables().nq_total == NQ,
             "rodyn model: the topology's configuration coordinates do not add up to the model's NQ"
