@@ -223,3 +223,35 @@ fn try_new_builds_what_new_builds() {
     assert!(built.check_configuration(&q).is_err());
     assert!(reference.check_configuration(&q).is_err());
 }
+
+#[test]
+fn try_new_planar_names_the_body_whose_parent_comes_after_it() {
+    let body = PlanarInertia::new(1.0, Vec2::new(0.5, 0.0), 0.01);
+    let joints = [PlanarJoint::Floating, PlanarJoint::Revolute];
+    let placements = [PlanarTransform::from_translation(Vec2::ZERO); 2];
+    let gravity = PlanarMotion::new(0.0, Vec2::new(0.0, -9.81));
+    let result = Model::<f64, 2, 4, 4, Planar>::try_new_planar(
+        [Some(1), None],
+        joints,
+        placements,
+        [body; 2],
+        gravity,
+    );
+    assert_eq!(
+        result.err(),
+        Some(Error::InvalidModel {
+            body: 0,
+            problem: ModelProblem::Topology(TopologyError::ParentAfterChild { body: 0 }),
+        })
+    );
+    let built = Model::<f64, 2, 4, 4, Planar>::try_new_planar(
+        [None, Some(0)],
+        joints,
+        placements,
+        [body; 2],
+        gravity,
+    )
+    .expect("a consistent tree");
+    assert_eq!(built.configuration_range(1), (3, 1));
+    assert_eq!(built.topology().idx_v, [0, 3]);
+}

@@ -31,6 +31,10 @@ use crate::Scalar;
 #[derive(Clone, Copy, Debug)]
 pub struct Model<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space = Spatial> {
     topology: Topology<NB, NV>,
+    /// Invariant: `joints[i]`'s `nq`/`nv` are the topology's `nq[i]`/`nv[i]`
+    /// (the algorithms hand each joint the coordinates of its range):
+    /// `new`, `try_new` and `new_planar` read the counts from the joints,
+    /// `try_from_parts` compares them, `cast` keeps each joint's kind.
     joints: [G::Joint<S>; NB],
     placements: [G::Transform<S>; NB],
     inertias: [G::Inertia<S>; NB],
@@ -55,7 +59,8 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, 
     ///
     /// # Panics
     /// When the topology is inconsistent (see [`Topology::new`]); in a `const`
-    /// this is a compile error.
+    /// this is a compile error. For a tree read at run time, use
+    /// [`Model::try_new`], which returns the error instead.
     ///
     /// ```
     /// use rodyn::{Model, joint::{Axis, Joint}, spatial::*};
@@ -153,7 +158,8 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, 
     /// arguments as for the 3-D [`Model::new`](crate::Model::new).
     ///
     /// # Panics
-    /// When the topology is inconsistent; in a `const` a compile error.
+    /// When the topology is inconsistent; in a `const` a compile error. For
+    /// a tree read at run time, use [`Model::try_new_planar`].
     #[must_use]
     pub const fn new_planar(
         parents: [Option<usize>; NB],
@@ -180,6 +186,31 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, 
             gravity,
         )
         .with_unconstrained_configuration()
+    }
+
+    /// [`Model::new_planar`] for a tree known only at run time: the same
+    /// checks, reported instead of panicking.
+    ///
+    /// # Errors
+    /// As [`Model::try_new`].
+    pub fn try_new_planar(
+        parents: [Option<usize>; NB],
+        joints: [PlanarJoint<S>; NB],
+        placements: [PlanarTransform<S>; NB],
+        inertias: [PlanarInertia<S>; NB],
+        gravity: PlanarMotion<S>,
+    ) -> Result<Self> {
+        let topology = Topology::try_new(
+            parents,
+            joints.map(|j| j.const_nq()),
+            joints.map(|j| j.const_nv()),
+            NQ,
+        )
+        .map_err(topology_error)?;
+        Ok(
+            Self::assemble(topology, joints, placements, inertias, gravity)
+                .with_unconstrained_configuration(),
+        )
     }
 }
 
@@ -308,8 +339,10 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
     pub const fn configuration_range(&self, i: usize) -> (usize, usize) {
         let (iq, nq) = self.topology.configuration_range(i);
         // SAFETY: every constructor makes the topology's `nq_total` equal
-        // `NQ` (`new` lays it out for `NQ`, `from_parts` refuses another,
+        // `NQ` (`new`, `try_new` and `new_planar` lay it out for `NQ`;
+        // `try_from_parts`, `from_parts` and `assemble` refuse another;
         // `cast` copies it) and the model never replaces its topology.
+        // Tested in host-tests/tests/model_invariants.rs.
         unsafe { core::hint::assert_unchecked(self.topology.tables().nq_total == NQ) };
         (iq, nq)
     }
