@@ -849,6 +849,54 @@ pub(crate) fn check_matrix_result<S: Scalar>(x: &[S], quantity: Quantity) -> Res
 mod tests {
     use super::*;
 
+    /// A model assembled at run time reaches the hinted ranges only when
+    /// its joints match the topology (Miri checks each hint it reaches).
+    #[test]
+    fn run_time_assembly_checks_what_the_hints_assume() {
+        use crate::joint::Axis;
+        use crate::spatial::Vec3;
+        let body = Inertia::point_mass(1.0, Vec3::new(0.5, 0.0, 0.0));
+        let gravity = Motion::new(Vec3::ZERO, Vec3::new(0.0, 0.0, -9.81));
+        let joints = [Joint::free_flyer(), Joint::revolute(Axis::Z)];
+        let swapped = Topology::new([None, Some(0)], [1, 7], [1, 6], 8);
+        let refused = Model::<f64, 2, 8, 7>::try_from_parts(
+            swapped,
+            joints,
+            [Transform::IDENTITY; 2],
+            [body; 2],
+            gravity,
+        );
+        assert_eq!(
+            refused.err(),
+            Some(Error::InvalidModel {
+                body: 0,
+                problem: ModelProblem::JointCoordinateMismatch,
+            })
+        );
+        let model = Model::<f64, 2, 8, 7>::try_from_parts(
+            Topology::new([None, Some(0)], [7, 1], [6, 1], 8),
+            joints,
+            [Transform::IDENTITY; 2],
+            [body; 2],
+            gravity,
+        )
+        .expect("the joints match the layout");
+        assert_eq!(model.configuration_range(0), (0, 7));
+        assert_eq!(model.configuration_range(1), (7, 1));
+        assert_eq!(model.topology().velocity_range(1), (6, 1));
+        let q = model.neutral_configuration();
+        assert_eq!(q[3..7], [0.0, 0.0, 0.0, 1.0]);
+        assert!(model.check_configuration(&q).is_ok());
+        assert!(Model::<f64, 2, 8, 7>::try_new(
+            [Some(1), None],
+            joints,
+            [Transform::IDENTITY; 2],
+            [body; 2],
+            gravity,
+        )
+        .is_err());
+    }
+
     /// The vectorised test passes finite entries whose sum overflows (after
     /// the search finds none) and names the first non-finite entry, also
     /// when infinities of both signs would cancel to NaN in the sum.
