@@ -273,7 +273,7 @@ fn a_tree_built_at_run_time_reports_its_inconsistency() {
 /// and `Model::from_parts` refuses one laid out for another `NQ`: the
 /// algorithms index the model's vectors by these tables without checks.
 #[test]
-#[should_panic(expected = "do not add up to the model's NQ")]
+#[should_panic(expected = "do not add up to NQ")]
 fn from_parts_refuses_a_topology_for_another_nq() {
     use rodyn::topology::Topology;
     let topology = Topology::<2, 2>::new([None, Some(0)], [1; 2], [1; 2], 2);

@@ -137,6 +137,15 @@ pub enum ModelProblem {
     /// tables cannot be written; kept for the model's checks that test
     /// the ranges in safe code and for compatibility.
     InconsistentTopology,
+    /// The joint's coordinate counts (`nq`, `nv`) differ from those the
+    /// topology lays out for its body: the algorithms would index the
+    /// joint's coordinates outside its range.
+    JointCoordinateMismatch,
+    /// The tree's layout is inconsistent (reported by
+    /// [`Model::try_new`](crate::Model::try_new) for a tree read at run
+    /// time); the body is the one the [`TopologyError`](crate::topology::TopologyError)
+    /// names, or 0 for a count that does not add up.
+    Topology(crate::topology::TopologyError),
 }
 
 impl From<ParameterProblem> for ModelProblem {
@@ -461,6 +470,17 @@ impl fmt::Display for Error {
                 f,
                 "mass matrix is not positive definite at dof {dof} \
                  (pivot / its diagonal entry = {relative_pivot:e})"
+            ),
+            Self::InvalidModel {
+                body,
+                problem: ModelProblem::Topology(error),
+            } => write!(f, "body {body}: {}", error.message()),
+            Self::InvalidModel {
+                body,
+                problem: ModelProblem::JointCoordinateMismatch,
+            } => write!(
+                f,
+                "body {body}: its joint's coordinate counts (nq, nv) differ from the topology's"
             ),
             Self::InvalidModel { body, problem } => {
                 write!(f, "body {body}: invalid model parameter: {problem:?}")

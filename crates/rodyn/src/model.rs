@@ -31,6 +31,10 @@ use crate::Scalar;
 #[derive(Clone, Copy, Debug)]
 pub struct Model<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space = Spatial> {
     topology: Topology<NB, NV>,
+    /// Invariant: `joints[i]`'s `nq`/`nv` are the topology's `nq[i]`/`nv[i]`
+    /// (the algorithms hand each joint the coordinates of its range):
+    /// `new`, `try_new` and `new_planar` read the counts from the joints,
+    /// `try_from_parts` compares them, `cast` keeps each joint's kind.
     joints: [G::Joint<S>; NB],
     placements: [G::Transform<S>; NB],
     inertias: [G::Inertia<S>; NB],
@@ -55,7 +59,8 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, 
     ///
     /// # Panics
     /// When the topology is inconsistent (see [`Topology::new`]); in a `const`
-    /// this is a compile error.
+    /// this is a compile error. For a tree read at run time, use
+    /// [`Model::try_new`], which returns the error instead.
     ///
     /// ```
     /// use rodyn::{Model, joint::{Axis, Joint}, spatial::*};
@@ -87,6 +92,7 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, 
             constrained_configuration |= joints[i].const_constrains_configuration();
             i += 1;
         }
+        // The topology's counts are the joints' own: no mismatch possible.
         Self {
             topology: Topology::new(parents, nq, nv, NQ),
             joints,
@@ -97,6 +103,54 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, 
             constrained_configuration,
         }
     }
+
+    /// [`Model::new`] for a tree known only at run time (read from a file):
+    /// the same checks, reported instead of panicking.
+    ///
+    /// # Errors
+    /// [`Error::InvalidModel`] with [`ModelProblem::Topology`] naming what
+    /// is inconsistent (a parent after its child, counts that do not add up
+    /// to `NQ`/`NV`, a joint with too many degrees of freedom); `body` is
+    /// the body the topology error names, or 0 for a count.
+    pub fn try_new(
+        parents: [Option<usize>; NB],
+        joints: [Joint<S>; NB],
+        placements: [Transform<S>; NB],
+        inertias: [Inertia<S>; NB],
+        gravity: Motion<S>,
+    ) -> Result<Self> {
+        let topology = Topology::try_new(
+            parents,
+            joints.map(|j| j.const_nq()),
+            joints.map(|j| j.const_nv()),
+            NQ,
+        )
+        .map_err(topology_error)?;
+        let constrained_configuration = joints.iter().any(|j| j.const_constrains_configuration());
+        Ok(Self {
+            topology,
+            joints,
+            placements,
+            inertias,
+            gravity,
+            armature: [S::ZERO; NV],
+            constrained_configuration,
+        })
+    }
+}
+
+/// A topology error as the model's, naming its body when it has one.
+#[cold]
+fn topology_error(error: crate::topology::TopologyError) -> Error {
+    use crate::topology::TopologyError as E;
+    let body = match error {
+        E::ParentAfterChild { body } | E::TooManyJointDofs { body } => body,
+        E::ConfigurationCount { .. } | E::VelocityCount { .. } => 0,
+    };
+    Error::InvalidModel {
+        body,
+        problem: ModelProblem::Topology(error),
+    }
 }
 
 impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, NQ, NV, Planar> {
@@ -104,7 +158,8 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, 
     /// arguments as for the 3-D [`Model::new`](crate::Model::new).
     ///
     /// # Panics
-    /// When the topology is inconsistent; in a `const` a compile error.
+    /// When the topology is inconsistent; in a `const` a compile error. For
+    /// a tree read at run time, use [`Model::try_new_planar`].
     #[must_use]
     pub const fn new_planar(
         parents: [Option<usize>; NB],
@@ -122,7 +177,8 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, 
             i += 1;
         }
         // Planar joints are angles and displacements: any finite q is valid.
-        Self::from_parts(
+        // The topology's counts are the joints' own (the loop above).
+        Self::assemble(
             Topology::new(parents, nq, nv, NQ),
             joints,
             placements,
@@ -131,27 +187,110 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, 
         )
         .with_unconstrained_configuration()
     }
+
+    /// [`Model::new_planar`] for a tree known only at run time: the same
+    /// checks, reported instead of panicking.
+    ///
+    /// # Errors
+    /// As [`Model::try_new`].
+    pub fn try_new_planar(
+        parents: [Option<usize>; NB],
+        joints: [PlanarJoint<S>; NB],
+        placements: [PlanarTransform<S>; NB],
+        inertias: [PlanarInertia<S>; NB],
+        gravity: PlanarMotion<S>,
+    ) -> Result<Self> {
+        let topology = Topology::try_new(
+            parents,
+            joints.map(|j| j.const_nq()),
+            joints.map(|j| j.const_nv()),
+            NQ,
+        )
+        .map_err(topology_error)?;
+        Ok(
+            Self::assemble(topology, joints, placements, inertias, gravity)
+                .with_unconstrained_configuration(),
+        )
+    }
 }
 
 impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
     Model<S, NB, NQ, NV, G>
 {
-    /// Assembles a model from a checked topology (used by the per-geometry
-    /// `const` constructors).
+    /// Assembles a model from a checked topology and the joints it was laid
+    /// out for, panicking where [`Self::try_from_parts`] returns an error.
     ///
     /// # Panics
-    /// When the topology was laid out for another `NQ` than the model's; in
-    /// a `const` this is a compile error.
+    /// When the topology was laid out for another `NQ` than the model's, or
+    /// when a joint's `nq`/`nv` differ from the topology's for its body.
     #[must_use]
-    pub const fn from_parts(
+    pub fn from_parts(
         topology: Topology<NB, NV>,
         joints: [G::Joint<S>; NB],
         placements: [G::Transform<S>; NB],
         inertias: [G::Inertia<S>; NB],
         gravity: G::Motion<S>,
     ) -> Self {
-        // The algorithms index `q: &[S; NQ]` by the topology's ranges
-        // (`Model::configuration_range`).
+        match Self::try_from_parts(topology, joints, placements, inertias, gravity) {
+            Ok(model) => model,
+            Err(error) => panic!("rodyn model: {}", error),
+        }
+    }
+
+    /// Assembles a model from a checked topology and its joints, for trees
+    /// built at run time.
+    ///
+    /// The algorithms index `q: &[S; NQ]` and `v: &[S; NV]` by the
+    /// topology's ranges and hand each joint the coordinates there, so the
+    /// topology must be laid out for `NQ` and for these joints' counts.
+    ///
+    /// # Errors
+    /// [`Error::InvalidModel`] with [`ModelProblem::Topology`]
+    /// ([`TopologyError::ConfigurationCount`](crate::topology::TopologyError::ConfigurationCount))
+    /// when the topology was laid out for another `NQ`, or with
+    /// [`ModelProblem::JointCoordinateMismatch`] naming the first body whose
+    /// joint's `nq` or `nv` differ from the topology's.
+    pub fn try_from_parts(
+        topology: Topology<NB, NV>,
+        joints: [G::Joint<S>; NB],
+        placements: [G::Transform<S>; NB],
+        inertias: [G::Inertia<S>; NB],
+        gravity: G::Motion<S>,
+    ) -> Result<Self> {
+        let nq_total = topology.tables().nq_total;
+        if nq_total != NQ {
+            return Err(topology_error(
+                crate::topology::TopologyError::ConfigurationCount {
+                    declared: NQ,
+                    found: nq_total,
+                },
+            ));
+        }
+        if let Some(body) = (0..NB).find(|&i| {
+            joints[i].nq() != topology.tables().nq[i] || joints[i].nv() != topology.tables().nv[i]
+        }) {
+            return Err(Error::InvalidModel {
+                body,
+                problem: ModelProblem::JointCoordinateMismatch,
+            });
+        }
+        Ok(Self::assemble(
+            topology, joints, placements, inertias, gravity,
+        ))
+    }
+
+    /// Assembles a model whose topology the caller laid out for `NQ` and
+    /// for these joints' counts (the geometry constructors, which read the
+    /// counts from the joints themselves).
+    const fn assemble(
+        topology: Topology<NB, NV>,
+        joints: [G::Joint<S>; NB],
+        placements: [G::Transform<S>; NB],
+        inertias: [G::Inertia<S>; NB],
+        gravity: G::Motion<S>,
+    ) -> Self {
+        // `Topology::new` lays the tree out for the `nq_total` it is given;
+        // the callers give `NQ` (a compile error in a `const` otherwise).
         assert!(
             topology.tables().nq_total == NQ,
             "rodyn model: the topology's configuration coordinates do not add up to the model's NQ"
@@ -200,8 +339,10 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
     pub const fn configuration_range(&self, i: usize) -> (usize, usize) {
         let (iq, nq) = self.topology.configuration_range(i);
         // SAFETY: every constructor makes the topology's `nq_total` equal
-        // `NQ` (`new` lays it out for `NQ`, `from_parts` refuses another,
+        // `NQ` (`new`, `try_new` and `new_planar` lay it out for `NQ`;
+        // `try_from_parts`, `from_parts` and `assemble` refuse another;
         // `cast` copies it) and the model never replaces its topology.
+        // Tested in host-tests/tests/model_invariants.rs.
         unsafe { core::hint::assert_unchecked(self.topology.tables().nq_total == NQ) };
         (iq, nq)
     }
@@ -707,6 +848,54 @@ pub(crate) fn check_matrix_result<S: Scalar>(x: &[S], quantity: Quantity) -> Res
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A model assembled at run time reaches the hinted ranges only when
+    /// its joints match the topology (Miri checks each hint it reaches).
+    #[test]
+    fn run_time_assembly_checks_what_the_hints_assume() {
+        use crate::joint::Axis;
+        use crate::spatial::Vec3;
+        let body = Inertia::point_mass(1.0, Vec3::new(0.5, 0.0, 0.0));
+        let gravity = Motion::new(Vec3::ZERO, Vec3::new(0.0, 0.0, -9.81));
+        let joints = [Joint::free_flyer(), Joint::revolute(Axis::Z)];
+        let swapped = Topology::new([None, Some(0)], [1, 7], [1, 6], 8);
+        let refused = Model::<f64, 2, 8, 7>::try_from_parts(
+            swapped,
+            joints,
+            [Transform::IDENTITY; 2],
+            [body; 2],
+            gravity,
+        );
+        assert_eq!(
+            refused.err(),
+            Some(Error::InvalidModel {
+                body: 0,
+                problem: ModelProblem::JointCoordinateMismatch,
+            })
+        );
+        let model = Model::<f64, 2, 8, 7>::try_from_parts(
+            Topology::new([None, Some(0)], [7, 1], [6, 1], 8),
+            joints,
+            [Transform::IDENTITY; 2],
+            [body; 2],
+            gravity,
+        )
+        .expect("the joints match the layout");
+        assert_eq!(model.configuration_range(0), (0, 7));
+        assert_eq!(model.configuration_range(1), (7, 1));
+        assert_eq!(model.topology().velocity_range(1), (6, 1));
+        let q = model.neutral_configuration();
+        assert_eq!(q[3..7], [0.0, 0.0, 0.0, 1.0]);
+        assert!(model.check_configuration(&q).is_ok());
+        assert!(Model::<f64, 2, 8, 7>::try_new(
+            [Some(1), None],
+            joints,
+            [Transform::IDENTITY; 2],
+            [body; 2],
+            gravity,
+        )
+        .is_err());
+    }
 
     /// The vectorised test passes finite entries whose sum overflows (after
     /// the search finds none) and names the first non-finite entry, also
