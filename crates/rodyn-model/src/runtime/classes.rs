@@ -85,12 +85,13 @@ macro_rules! define_classes {
         }
 
         impl ClassModel {
-            /// The smallest class that holds `skeleton`, `None` when none does.
-            pub fn new(skeleton: &Skeleton) -> Option<Self> {
+            /// The smallest class that holds `skeleton`, `None` when none
+            /// does; inside it, the core's checked constructor's verdict.
+            pub fn new(skeleton: &Skeleton) -> Option<rodyn::Result<Self>> {
                 let (nb, f) = (skeleton.nb(), skeleton.free_flyers);
                 $(
                     if f == $f && nb <= $nb {
-                        return Some(Self::$name(Padded::new(skeleton)));
+                        return Some(Padded::new(skeleton).map(Self::$name));
                     }
                 )*
                 None

@@ -124,13 +124,21 @@ impl PaddedRuntimeModel {
             };
         }
         let g = vec3(&description.gravity);
-        let model = Box::new(Model::new(
+        let model = Model::try_new(
             parents,
             joints,
             placements,
             inertias,
             Motion::new(Vec3::ZERO, g),
-        ));
+        )
+        .map_err(|e| {
+            let location = description.bodies.first().map_or_else(
+                || Location::start_of(std::path::Path::new("")),
+                |b| b.location.clone(),
+            );
+            Diagnostic::error(location, format!("rodyn refuses the model's tree: {e}"))
+        })?;
+        let model = Box::new(model);
         Ok(Self { model, description })
     }
 

@@ -192,6 +192,18 @@ impl RuntimeModel {
             };
             return Err(Diagnostic::error(location, message));
         };
+        let class = class.map_err(|e| {
+            let body = match e {
+                rodyn::Error::InvalidModel { body, .. } => body,
+                _ => 0,
+            };
+            let location = description
+                .bodies
+                .get(body)
+                .or(description.bodies.first())
+                .map_or_else(|| Location::start_of(Path::new("")), |b| b.location.clone());
+            Diagnostic::error(location, format!("rodyn refuses the model's tree: {e}"))
+        })?;
         let nv = skeleton.one_dof + 6 * skeleton.free_flyers;
         let nq = nv + skeleton.free_flyers;
         let joint_names = description

@@ -42,7 +42,12 @@ impl<const NB: usize, const NQ: usize, const NV: usize> Padded<NB, NQ, NV> {
     /// The class model of `skeleton`, which must fit (checked by the class
     /// choice: `skeleton.nb() <= NB`, and the coordinates left over are
     /// one per padding body).
-    pub fn new(skeleton: &Skeleton) -> Box<Self> {
+    ///
+    /// # Errors
+    /// The core's checked constructor refuses the tree (a parent after its
+    /// child: the model compiler orders bodies, so this names a bug there
+    /// rather than panicking).
+    pub fn new(skeleton: &Skeleton) -> rodyn::Result<Box<Self>> {
         let nb = skeleton.nb();
         let mut parents = [None; NB];
         let mut joints = [Joint::revolute(Axis::Z); NB];
@@ -52,13 +57,13 @@ impl<const NB: usize, const NQ: usize, const NV: usize> Padded<NB, NQ, NV> {
         joints[..nb].copy_from_slice(&skeleton.joints);
         placements[..nb].copy_from_slice(&skeleton.placements);
         inertias[..nb].copy_from_slice(&skeleton.inertias);
-        let mut model = Model::new(parents, joints, placements, inertias, skeleton.gravity);
+        let mut model = Model::try_new(parents, joints, placements, inertias, skeleton.gravity)?;
         let nv_file = NV - (NB - nb);
         let mut armature = [0.0; NV];
         armature[nv_file..].fill(PADDING_ARMATURE);
         model = model.with_armature(armature);
         let plan = CrbaPlan::new(&model);
-        Box::new(Self { model, plan })
+        Ok(Box::new(Self { model, plan }))
     }
 }
 
