@@ -1,6 +1,7 @@
 //! Inverse and forward dynamics, the mass matrix, energies.
 
 use super::check::Input;
+use super::padded::{Padded, Scratch};
 use super::{copy_matrix, RuntimeError, RuntimeModel, Workspace};
 use rodyn::algorithm::aba::aba;
 use rodyn::algorithm::crba::crba_planned;
@@ -176,15 +177,7 @@ impl RuntimeModel {
         self.check_matrix("m_out", m_out, self.nv)?;
         let nv = self.nv;
         dispatch!(&self.class, &mut ws.class, |m, s| {
-            let s = &mut **s;
-            s.set_q(q);
-            match crba_planned(&m.model, &m.plan, &mut s.data, &s.q) {
-                Ok(mass) => {
-                    copy_matrix(&mass[..nv], nv, m_out);
-                    Ok(())
-                }
-                Err(e) => Err(self.explain("crba", &e, &[q_input(q)])),
-            }
+            class_crba(m, s, q, nv, m_out).map_err(|e| self.explain("crba", &e, &[q_input(q)]))
         })
     }
 
@@ -298,4 +291,22 @@ impl RuntimeModel {
                 .map_err(|e| self.explain("potential energy", &e, &[q_input(q)]))
         })
     }
+}
+
+/// One class's CRBA, `q` in and the file's `nv × nv` block of `M` out
+/// (`m_out` holds `nv²` entries). A function of its own per class rather than
+/// code inlined into the dispatch: each class's pass is then optimised as
+/// a unit, as the compiled model's is.
+#[inline(never)]
+fn class_crba<const NB: usize, const NQ: usize, const NV: usize>(
+    m: &Padded<NB, NQ, NV>,
+    s: &mut Scratch<NB, NQ, NV>,
+    q: &[f64],
+    nv: usize,
+    m_out: &mut [f64],
+) -> rodyn::Result<()> {
+    s.set_q(q);
+    let mass = crba_planned(&m.model, &m.plan, &mut s.data, &s.q)?;
+    copy_matrix(&mass[..nv], nv, m_out);
+    Ok(())
 }

@@ -341,6 +341,12 @@ impl RuntimeModel {
 
 /// `rows × nv` of a padded row-major matrix `m` (`NV` columns) into `out`.
 fn copy_matrix<const NV: usize>(m: &[[f64; NV]], nv: usize, out: &mut [f64]) {
+    // A file that fills its class (no padding coordinate) has rows as long
+    // as the class's: one copy of the block instead of one per row.
+    if nv == NV && out.len() == m.len() * NV {
+        out.copy_from_slice(m.as_flattened());
+        return;
+    }
     for (row, out_row) in m.iter().zip(out.chunks_exact_mut(nv)) {
         out_row.copy_from_slice(&row[..nv]);
     }
