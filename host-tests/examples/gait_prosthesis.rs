@@ -114,6 +114,7 @@ fn output_dir() -> Result<PathBuf, String> {
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
+    rodyn_plot_markers::register_sans_serif();
     let img = output_dir()?;
     writable_dir(&img)?;
     let cycle = GaitCycle::read(&data_dir().join("joint_fourier.csv"))?;

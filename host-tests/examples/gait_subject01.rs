@@ -82,6 +82,7 @@ fn arguments() -> Result<Option<Arguments>, String> {
 }
 
 fn main() {
+    rodyn_plot_markers::register_sans_serif();
     if let Err(e) = run() {
         eprintln!("gait_subject01: {e}");
         std::process::exit(1);

@@ -156,6 +156,7 @@ fn output_dir() -> Result<PathBuf, String> {
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
+    rodyn_plot_markers::register_sans_serif();
     let out = output_dir()?;
     writable_dir(&out)?;
     let samples = simulate()?;

@@ -115,6 +115,7 @@ fn report(name: &str, run: &Solved) {
 }
 
 fn main() -> ExitCode {
+    rodyn_plot_markers::register_sans_serif();
     match run(&Arguments::parse()) {
         Ok(()) => ExitCode::SUCCESS,
         Err(error) => {

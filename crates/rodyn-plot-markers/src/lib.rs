@@ -20,6 +20,9 @@
 //! ```
 #![warn(missing_docs)]
 
+mod font;
+
+pub use font::register_sans_serif;
 use plotters::element::Polygon;
 use plotters::style::{Color, RGBColor};
 

@@ -143,9 +143,41 @@ pub enum ModelProblem {
     JointCoordinateMismatch,
     /// The tree's layout is inconsistent (reported by
     /// [`Model::try_new`](crate::Model::try_new) for a tree read at run
-    /// time); the body is the one the [`TopologyError`](crate::topology::TopologyError)
-    /// names, or 0 for a count that does not add up.
-    Topology(crate::topology::TopologyError),
+    /// time); the body is the one the check names, or 0 for a count that
+    /// does not add up.
+    Topology(TopologyProblem),
+}
+
+/// Which check of a tree's layout failed (the detail of
+/// [`ModelProblem::Topology`]; [`TopologyError`](crate::topology::TopologyError)
+/// carries the counts). Fieldless, so that [`Error`] stays as small as the
+/// control tick's results need.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum TopologyProblem {
+    /// A body's parent does not come before it (`parent[i] < i` fails).
+    ParentAfterChild,
+    /// A joint with more than six degrees of freedom.
+    TooManyJointDofs,
+    /// The joints' configuration coordinates do not add up to `NQ`.
+    ConfigurationCount,
+    /// The joints' velocity coordinates do not add up to `NV`.
+    VelocityCount,
+}
+
+impl TopologyProblem {
+    /// A one-sentence explanation.
+    #[must_use]
+    pub const fn message(self) -> &'static str {
+        match self {
+            Self::ParentAfterChild => {
+                "every body's parent must come before it (parent[i] < i); reorder the bodies"
+            }
+            Self::TooManyJointDofs => "a joint has more than 6 degrees of freedom",
+            Self::ConfigurationCount => "the joints' configuration coordinates do not add up to NQ",
+            Self::VelocityCount => "the joints' velocity coordinates do not add up to NV",
+        }
+    }
 }
 
 impl From<ParameterProblem> for ModelProblem {
@@ -473,8 +505,8 @@ impl fmt::Display for Error {
             ),
             Self::InvalidModel {
                 body,
-                problem: ModelProblem::Topology(error),
-            } => write!(f, "body {body}: {}", error.message()),
+                problem: ModelProblem::Topology(problem),
+            } => write!(f, "body {body}: {}", problem.message()),
             Self::InvalidModel {
                 body,
                 problem: ModelProblem::JointCoordinateMismatch,

@@ -149,7 +149,7 @@ fn topology_error(error: crate::topology::TopologyError) -> Error {
     };
     Error::InvalidModel {
         body,
-        problem: ModelProblem::Topology(error),
+        problem: ModelProblem::Topology(error.problem()),
     }
 }
 

@@ -39,6 +39,19 @@ pub enum TopologyError {
 }
 
 impl TopologyError {
+    /// Which check failed, without the counts (for
+    /// [`ModelProblem::Topology`](crate::error::ModelProblem::Topology)).
+    #[must_use]
+    pub const fn problem(&self) -> crate::error::TopologyProblem {
+        use crate::error::TopologyProblem as P;
+        match self {
+            Self::ParentAfterChild { .. } => P::ParentAfterChild,
+            Self::TooManyJointDofs { .. } => P::TooManyJointDofs,
+            Self::ConfigurationCount { .. } => P::ConfigurationCount,
+            Self::VelocityCount { .. } => P::VelocityCount,
+        }
+    }
+
     /// A one-sentence explanation; also the compile error of a `const` model.
     #[must_use]
     pub const fn message(&self) -> &'static str {

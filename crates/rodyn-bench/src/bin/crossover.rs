@@ -84,6 +84,7 @@ fn crossover(lengths: &[usize], ratio: &[f64]) -> Option<usize> {
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
+    rodyn_plot_markers::register_sans_serif();
     let opts = Options::parse();
     // The chart is written after minutes of timing: check its place first.
     writable_file(std::path::Path::new(&opts.out)).map_err(|e| format!("--out: {e}"))?;
