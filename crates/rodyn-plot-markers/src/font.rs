@@ -18,7 +18,7 @@ const CANDIDATES: [&str; 4] = [
     "/Library/Fonts/Arial.ttf",
 ];
 
-/// Registers the first system font of [`CANDIDATES`] as plotters'
+/// Registers the first of a few system fonts (DejaVu Sans, Liberation Sans, Arial) as plotters'
 /// "sans-serif"; without one, warns once (labels will be missing).
 pub fn register_sans_serif() {
     static ONCE: Once = Once::new();
