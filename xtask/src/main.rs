@@ -147,77 +147,129 @@ fn run(args: &[String]) -> Result<()> {
 
 /// Everything CI checks.
 fn test() -> Result<()> {
-    let started = Instant::now();
-    setup::ensure_target()?;
-    setup::ensure_qemu()?;
-    setup::ensure_ipopt()?;
+    let mut steps = Steps::new("test");
+    steps.run("set-up (target, QEMU, IPOPT)", || {
+        setup::ensure_target()?;
+        setup::ensure_qemu()?;
+        setup::ensure_ipopt()
+    })?;
+    steps.run("host tests", || shell::cargo(&["test", "--workspace"]))?;
+    steps.run("host tests, in-order profile", test_in_order_profile)?;
+    steps.run("no_std core for thumbv7em", || {
+        shell::cargo(&[
+            "build",
+            "-p",
+            "rodyn",
+            "-p",
+            "rodyn-scenarios",
+            "--no-default-features",
+            "--features",
+            "libm",
+            "--target",
+            "thumbv7em-none-eabihf",
+        ])?;
+        // The interop features stay no_std.
+        shell::cargo(&[
+            "build",
+            "-p",
+            "rodyn",
+            "--no-default-features",
+            "--features",
+            "libm,nalgebra",
+            "--target",
+            "thumbv7em-none-eabihf",
+        ])
+    })?;
 
-    shell::cargo(&["test", "--workspace"])?;
-    test_in_order_profile()?;
-    shell::cargo(&[
-        "build",
-        "-p",
-        "rodyn",
-        "-p",
-        "rodyn-scenarios",
-        "--no-default-features",
-        "--features",
-        "libm",
-        "--target",
-        "thumbv7em-none-eabihf",
-    ])?;
-    // The interop features stay no_std.
-    shell::cargo(&[
-        "build",
-        "-p",
-        "rodyn",
-        "--no-default-features",
-        "--features",
-        "libm,nalgebra",
-        "--target",
-        "thumbv7em-none-eabihf",
-    ])?;
-
-    firmware::build()?;
     let mut failures = Vec::new();
-    for example in firmware::EXAMPLES {
-        firmware::check_no_allocator(example)?;
-        match firmware::run_and_compare(example) {
-            Ok(()) => println!("firmware {}: ok", example.name),
-            Err(e) => {
-                println!("firmware {}: FAILED: {e:#}", example.name);
-                failures.push(example.name);
+    steps.run("firmware in QEMU", || {
+        firmware::build()?;
+        for example in firmware::EXAMPLES {
+            firmware::check_no_allocator(example)?;
+            match firmware::run_and_compare(example) {
+                Ok(()) => println!("firmware {}: ok", example.name),
+                Err(e) => {
+                    println!("firmware {}: FAILED: {e:#}", example.name);
+                    failures.push(example.name);
+                }
             }
         }
-    }
-    firmware::agreement_against_fresh_run()?;
-    firmware::check_panic_reentry()?;
-    costs::check_sizes()?;
-    costs::check_goals_of_last_run()?;
+        firmware::agreement_against_fresh_run()?;
+        firmware::check_panic_reentry()?;
+        costs::check_sizes()?;
+        costs::check_goals_of_last_run()
+    })?;
     // The Cortex-M family's probes, whose logs the docs check reads.
-    let family_started = Instant::now();
-    family::run_probes()?;
-    println!(
-        "xtask test: the Cortex-M family's probes built and ran in {:.0} s",
-        family_started.elapsed().as_secs_f64()
-    );
-    docs::check_after_test()?;
-    boards::check()?;
-    panic_sites::check()?;
-    stack_bound::check()?;
-    viewer::check()?;
-    python::check()?;
-    template::check()?;
-    lint()?;
+    steps.run("Cortex-M family probes", family::run_probes)?;
+    steps.run("docs check", docs::check_after_test)?;
+    steps.run("board images", boards::check)?;
+    steps.run("panic sites", panic_sites::check)?;
+    steps.run("stack bounds", stack_bound::check)?;
+    steps.run("viewer in Chromium", viewer::check)?;
+    steps.run("Python bindings", python::check)?;
+    steps.run("firmware template", template::check)?;
+    steps.run("lint", lint)?;
 
     if !failures.is_empty() {
         bail!("firmware examples failed: {}", failures.join(", "));
     }
-    println!(
-        "xtask test: all checks passed in {:.0} s",
-        started.elapsed().as_secs_f64()
-    );
+    steps.finish();
     Ok(())
+}
+
+/// Runs a command's steps one after another and says how long each took,
+/// so that a user (or CI's time budget) sees where the minutes go; the
+/// table is printed when the last step passes and when one fails.
+struct Steps {
+    command: &'static str,
+    started: Instant,
+    done: Vec<(&'static str, f64)>,
+}
+
+impl Steps {
+    fn new(command: &'static str) -> Self {
+        Steps {
+            command,
+            started: Instant::now(),
+            done: Vec::new(),
+        }
+    }
+
+    fn run<T>(&mut self, name: &'static str, step: impl FnOnce() -> Result<T>) -> Result<T> {
+        println!("xtask {}: {name} ...", self.command);
+        let started = Instant::now();
+        let outcome = step();
+        let seconds = started.elapsed().as_secs_f64();
+        self.done.push((name, seconds));
+        match &outcome {
+            Ok(_) => println!("xtask {}: {name}: passed in {seconds:.0} s", self.command),
+            Err(_) => {
+                println!(
+                    "xtask {}: {name}: FAILED after {seconds:.0} s",
+                    self.command
+                );
+                self.print_table();
+            }
+        }
+        outcome
+    }
+
+    fn print_table(&self) {
+        println!("xtask {}: time per step", self.command);
+        for (name, seconds) in &self.done {
+            println!("  {seconds:>6.0} s  {name}");
+        }
+        println!("  {:>6.0} s  in all", self.started.elapsed().as_secs_f64());
+    }
+
+    fn finish(&self) {
+        self.print_table();
+        println!(
+            "xtask {}: all checks passed in {:.0} s",
+            self.command,
+            self.started.elapsed().as_secs_f64()
+        );
+    }
 }
 
 /// The tuning profile that hosts do not compile by default
@@ -263,50 +315,60 @@ fn test_in_order_profile() -> Result<()> {
 
 /// Formatting, clippy and rustdoc with warnings as errors.
 fn lint() -> Result<()> {
-    let started = Instant::now();
-    setup::ensure_ipopt()?;
-    layers::run()?;
-    shell::cargo(&["fmt", "--all", "--check"])?;
-    shell::cargo_in(firmware::dir(), &["fmt", "--check"])?;
-    boards::lint()?;
-    shell::cargo(&[
-        "clippy",
-        "--workspace",
-        "--all-targets",
-        "--",
-        "-D",
-        "warnings",
-    ])?;
-    // The core's host build in the other profile (the firmware's clippy
-    // below covers it without `std`).
-    let in_order_dir = in_order_target_dir();
-    shell::cargo_env(
-        &[
+    let mut steps = Steps::new("lint");
+    steps.run("IPOPT", setup::ensure_ipopt)?;
+    steps.run("layers", layers::run)?;
+    steps.run("rustfmt", || {
+        shell::cargo(&["fmt", "--all", "--check"])?;
+        shell::cargo_in(firmware::dir(), &["fmt", "--check"])
+    })?;
+    steps.run("boards: rustfmt and clippy", boards::lint)?;
+    steps.run("clippy", || {
+        shell::cargo(&[
             "clippy",
-            "-p",
-            "rodyn",
+            "--workspace",
             "--all-targets",
             "--",
             "-D",
             "warnings",
-        ],
-        &[IN_ORDER, ("CARGO_TARGET_DIR", &in_order_dir)],
+        ])?;
+        // The core's host build in the other profile (the firmware's clippy
+        // below covers it without `std`).
+        let in_order_dir = in_order_target_dir();
+        shell::cargo_env(
+            &[
+                "clippy",
+                "-p",
+                "rodyn",
+                "--all-targets",
+                "--",
+                "-D",
+                "warnings",
+            ],
+            &[IN_ORDER, ("CARGO_TARGET_DIR", &in_order_dir)],
+        )?;
+        shell::cargo_in(
+            firmware::dir(),
+            &["clippy", "--release", "--", "-D", "warnings"],
+        )
+    })?;
+    steps.run("rustdoc", || {
+        shell::cargo_env(
+            &["doc", "--workspace", "--no-deps"],
+            &[("RUSTDOCFLAGS", "-D warnings")],
+        )
+    })?;
+    steps.run(
+        "core without float features",
+        no_float_features_is_one_error,
     )?;
-    shell::cargo_in(
-        firmware::dir(),
-        &["clippy", "--release", "--", "-D", "warnings"],
-    )?;
-    shell::cargo_env(
-        &["doc", "--workspace", "--no-deps"],
-        &[("RUSTDOCFLAGS", "-D warnings")],
-    )?;
-    no_float_features_is_one_error()?;
-    packages()?;
-    public_api::run(false)?;
-    miri::run()?;
+    steps.run("packages", packages)?;
+    steps.run("public API", || public_api::run(false))?;
+    steps.run("Miri", miri::run)?;
+    steps.print_table();
     println!(
         "xtask lint: clean in {:.0} s",
-        started.elapsed().as_secs_f64()
+        steps.started.elapsed().as_secs_f64()
     );
     Ok(())
 }
