@@ -7,8 +7,10 @@
 //! `boards/expected/sizes.txt`, when an image does not fit its chip's flash
 //! or RAM (the `FLASH` and `RAM` lengths of the board's `memory.x`), or when
 //! rodyn has a panic call site in it (`crate::panic_sites`). `cargo xtask
-//! boards --bless` records the sizes of an intended change; `cargo xtask
-//! lint` runs rustfmt and clippy over them ([`lint`]).
+//! boards --bless` records the sizes of an intended change. The build lints
+//! the boards' crates with clippy as it compiles them, warnings as errors
+//! ([`shell::lint_while_building`]); `cargo xtask lint` adds rustfmt
+//! ([`lint`]).
 
 use crate::{firmware, panic_sites, setup, shell};
 use anyhow::{bail, Context, Result};
@@ -90,13 +92,15 @@ impl Board {
     }
 
     /// Builds the image in release mode, with the source paths that reach
-    /// flash remapped as the firmware's are (`firmware::cargo_command_in`).
+    /// flash remapped as the firmware's are (`firmware::cargo_command_in`),
+    /// and clippy's lints on the boards' crates.
     fn build(&self) -> Result<()> {
         let mut command = firmware::cargo_command_in(&workspace(), self.target, &[]);
         command
             .current_dir(self.dir())
             .args(["build", "--release", "--target-dir"])
             .arg(self.target_dir());
+        shell::lint_while_building(&mut command)?;
         shell::run(&mut command)
     }
 }
@@ -315,20 +319,12 @@ pub fn check() -> Result<()> {
     Ok(())
 }
 
-/// rustfmt over the boards' workspace and clippy on each board, warnings
+/// rustfmt over the boards' workspace, and clippy on each board through
+/// its build (nothing to compile when `test` built them already), warnings
 /// as errors (a step of `cargo xtask lint`).
 pub fn lint() -> Result<()> {
-    setup::ensure_family_targets()?;
     shell::cargo_in(workspace(), &["fmt", "--all", "--check"])?;
-    for board in &BOARDS {
-        let mut command = shell::cargo_command(&board.dir());
-        command
-            .args(["clippy", "--release", "--target-dir"])
-            .arg(board.target_dir())
-            .args(["--", "-D", "warnings"]);
-        shell::run(&mut command)?;
-    }
-    Ok(())
+    build_all()
 }
 
 /// Rewrites `boards/expected/sizes.txt` from fresh builds.

@@ -398,12 +398,16 @@ impl Drop for Scratch {
     }
 }
 
-/// `cargo run --release --quiet -p PACKAGE [--bin|--example NAME] -- ARGS`
-/// at the repository root; its standard output.
+/// `cargo run --release --quiet -p PACKAGE --no-default-features
+/// [--bin|--example NAME] -- ARGS` at the repository root; its standard
+/// output. Without default features: the only ones (rodyn-sim's and the
+/// host tests') add the run-time model's size classes, minutes of release
+/// compiling that no figure needs.
 fn cargo_run(package: &str, target: &[&str], args: &[&str]) -> Result<String> {
     let mut command = shell::cargo_command(&shell::root());
     command
         .args(["run", "--release", "--quiet", "-p", package])
+        .arg("--no-default-features")
         .args(target)
         .arg("--")
         .args(args);

@@ -57,6 +57,26 @@ pub fn cargo_command(dir: &Path) -> Command {
     command
 }
 
+/// Makes a `cargo build` lint the workspace's own crates as `cargo clippy
+/// -- -D warnings` would, while it compiles them: clippy's driver stands in
+/// for rustc on the members (cargo's `RUSTC_WORKSPACE_WRAPPER`, as `cargo
+/// clippy` sets it), so one build gives the image and the lints instead of
+/// a second, check-only compile of every dependency.
+pub fn lint_while_building(command: &mut Command) -> Result<()> {
+    let cargo = PathBuf::from(std::env::var_os("CARGO").unwrap_or_else(|| "cargo".into()));
+    let driver = cargo
+        .parent()
+        .map(|bin| bin.join("clippy-driver"))
+        .filter(|driver| driver.is_file())
+        .context("clippy-driver is not beside cargo: `rustup component add clippy` installs it")?;
+    // How cargo-clippy hands its arguments to the driver.
+    command.env("RUSTC_WORKSPACE_WRAPPER", driver).env(
+        "CLIPPY_ARGS",
+        "-D__CLIPPY_HACKERY__warnings__CLIPPY_HACKERY__",
+    );
+    Ok(())
+}
+
 /// `[VAR=value ...] program arg arg ...` for messages (the variables set
 /// for this command, such as the tuning profile's).
 pub fn describe(command: &Command) -> String {
