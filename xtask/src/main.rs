@@ -153,6 +153,9 @@ fn test() -> Result<()> {
         setup::ensure_qemu()?;
         setup::ensure_ipopt()
     })?;
+    // Miri interprets on one core for minutes: beside the other steps it
+    // takes the time the second core would idle.
+    let miri = miri::start_in_background()?;
     steps.run("host tests", || shell::cargo(&["test", "--workspace"]))?;
     steps.run("host tests, in-order profile", test_in_order_profile)?;
     steps.run("no_std core for thumbv7em", || {
@@ -208,7 +211,7 @@ fn test() -> Result<()> {
     steps.run("viewer in Chromium", viewer::check)?;
     steps.run("Python bindings", python::check)?;
     steps.run("firmware template", template::check)?;
-    steps.run("lint", lint)?;
+    steps.run("lint", || lint_with(Miri::Started(miri)))?;
 
     if !failures.is_empty() {
         bail!("firmware examples failed: {}", failures.join(", "));
@@ -313,8 +316,21 @@ fn test_in_order_profile() -> Result<()> {
     Ok(())
 }
 
-/// Formatting, clippy and rustdoc with warnings as errors.
+/// How `lint` gets the core's tests under Miri.
+enum Miri {
+    /// Runs them as its last step.
+    Inline,
+    /// Collects the run `test` started in the background (`None`: skipped,
+    /// and said so).
+    Started(Option<miri::Background>),
+}
+
+/// Formatting, clippy and rustdoc with warnings as errors; Miri.
 fn lint() -> Result<()> {
+    lint_with(Miri::Inline)
+}
+
+fn lint_with(miri: Miri) -> Result<()> {
     let mut steps = Steps::new("lint");
     steps.run("IPOPT", setup::ensure_ipopt)?;
     steps.run("layers", layers::run)?;
@@ -364,7 +380,13 @@ fn lint() -> Result<()> {
     )?;
     steps.run("packages", packages)?;
     steps.run("public API", || public_api::run(false))?;
-    steps.run("Miri", miri::run)?;
+    match miri {
+        Miri::Inline => steps.run("Miri", miri::run)?,
+        Miri::Started(Some(run)) => {
+            steps.run("Miri (waiting for its background run)", || run.finish())?
+        }
+        Miri::Started(None) => {}
+    }
     steps.print_table();
     println!(
         "xtask lint: clean in {:.0} s",

@@ -16,7 +16,10 @@
 //! nothing here downloads a whole toolchain).
 
 use anyhow::{bail, Context, Result};
-use std::process::Command;
+use std::fs::File;
+use std::path::PathBuf;
+use std::process::{Child, Command};
+use std::time::Instant;
 
 use crate::shell;
 
@@ -28,14 +31,91 @@ const MIRIFLAGS: &str = "-Zmiri-deterministic-floats";
 /// Runs the core's unit tests under Miri, in a target folder of their own
 /// (`target/miri`) so the normal build is left as it is.
 pub fn run() -> Result<()> {
+    if !ready()? {
+        return Ok(());
+    }
+    shell::run(&mut command()).context("the core's tests under Miri")
+}
+
+/// Miri's run started beside the other steps of `cargo xtask test`: it
+/// interprets on one core for minutes, while the steps that run QEMU, the
+/// tests and the browser leave the second one mostly idle. Its output goes
+/// to `target/miri.log`, printed when [`Self::finish`] collects it.
+pub struct Background {
+    child: Child,
+    log: PathBuf,
+    started: Instant,
+}
+
+/// Starts [`run`]'s command in the background, or says why not (no nightly
+/// toolchain) and returns `None`.
+pub fn start_in_background() -> Result<Option<Background>> {
+    if !ready()? {
+        return Ok(None);
+    }
+    let log = shell::target_dir().join("miri.log");
+    std::fs::create_dir_all(shell::target_dir())?;
+    let file = File::create(&log).with_context(|| format!("cannot write {}", log.display()))?;
+    let mut command = command();
+    command.stdout(file.try_clone()?).stderr(file);
+    println!(
+        "$ {} > {} (in the background)",
+        shell::describe(&command),
+        log.display()
+    );
+    let child = command
+        .spawn()
+        .with_context(|| format!("cannot start {}", shell::describe(&command)))?;
+    Ok(Some(Background {
+        child,
+        log,
+        started: Instant::now(),
+    }))
+}
+
+impl Background {
+    /// Waits for Miri, prints its log, and fails when it failed.
+    pub fn finish(mut self) -> Result<()> {
+        let status = self.child.wait().context("waiting for Miri")?;
+        let log = std::fs::read_to_string(&self.log).unwrap_or_default();
+        println!("{log}");
+        println!(
+            "miri: ran in the background for {:.0} s (log: {})",
+            self.started.elapsed().as_secs_f64(),
+            self.log.display()
+        );
+        if !status.success() {
+            bail!("the core's tests under Miri failed with {status} (log above)");
+        }
+        Ok(())
+    }
+}
+
+impl Drop for Background {
+    /// A step that failed before Miri was collected stops it.
+    fn drop(&mut self) {
+        if matches!(self.child.try_wait(), Ok(None)) {
+            let _ = self.child.kill();
+            let _ = self.child.wait();
+        }
+    }
+}
+
+/// Whether Miri can run here (adding its components to an installed
+/// nightly toolchain); says so when it cannot.
+fn ready() -> Result<bool> {
     if !nightly_installed() {
         println!(
             "miri: skipped, no nightly toolchain (Miri needs one: \
              `rustup toolchain install nightly`, then run this command again)"
         );
-        return Ok(());
+        return Ok(false);
     }
     ensure_components()?;
+    Ok(true)
+}
+
+fn command() -> Command {
     let mut command = Command::new("rustup");
     command
         .current_dir(shell::root())
@@ -44,7 +124,7 @@ pub fn run() -> Result<()> {
         ])
         .env("MIRIFLAGS", MIRIFLAGS)
         .env("CARGO_TARGET_DIR", shell::target_dir().join("miri"));
-    shell::run(&mut command).context("the core's tests under Miri")
+    command
 }
 
 /// Whether rustup has a nightly toolchain (nothing is downloaded).
