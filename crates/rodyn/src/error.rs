@@ -61,6 +61,24 @@ pub enum Quantity {
     /// `index` is the point's place along the path, from 0), or the path's
     /// length and rate formed from the points.
     PathPoint,
+    /// An argument of a muscle curve or of the activation dynamics (a
+    /// normalised fibre length or velocity, a tendon length or force, a
+    /// force-velocity multiplier, an excitation or activation; `index` is
+    /// the argument's place, from 0), or the curve's value (`index` 0) and
+    /// slopes (1, 2).
+    MuscleCurve,
+    /// A Jacobian's column (`index` is the column) given to
+    /// [`mul_rates`](crate::algorithm::jacobian::mul_rates), or its product
+    /// with the joint rates (`index` 0).
+    Jacobian,
+    /// A dense linear system solved by
+    /// [`cholesky_solve`](crate::algorithm::dense::cholesky_solve): a row of
+    /// its factor `L` or an entry of its right-hand side (`index` is the
+    /// row), or of its solution.
+    LinearSystem,
+    /// A world pose given to a reader (`index` is the body whose pose it
+    /// is; 0 for a frame's pose given alone).
+    WorldPose,
 }
 
 impl Quantity {
@@ -92,6 +110,10 @@ impl Quantity {
             Self::Target => "target pose",
             Self::Drive => "drive element",
             Self::PathPoint => "drive path point",
+            Self::MuscleCurve => "muscle curve argument",
+            Self::Jacobian => "Jacobian",
+            Self::LinearSystem => "linear system",
+            Self::WorldPose => "world pose",
         }
     }
 
@@ -104,6 +126,10 @@ impl Quantity {
             Self::Contact => "contact",
             Self::PathLength | Self::PathVelocity => "muscle input",
             Self::PathPoint => "point",
+            Self::MuscleCurve => "argument",
+            Self::Jacobian => "column",
+            Self::LinearSystem => "row",
+            Self::WorldPose => "body",
             _ => "entry",
         }
     }
@@ -625,6 +651,10 @@ impl defmt::Format for Quantity {
             Self::Target => defmt::write!(f, "Target"),
             Self::Drive => defmt::write!(f, "Drive"),
             Self::PathPoint => defmt::write!(f, "PathPoint"),
+            Self::MuscleCurve => defmt::write!(f, "MuscleCurve"),
+            Self::Jacobian => defmt::write!(f, "Jacobian"),
+            Self::LinearSystem => defmt::write!(f, "LinearSystem"),
+            Self::WorldPose => defmt::write!(f, "WorldPose"),
         }
     }
 }
