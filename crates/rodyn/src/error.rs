@@ -137,7 +137,6 @@ impl Quantity {
 
 /// What is wrong with a model parameter.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum ModelProblem {
     /// Negative or non-finite mass.
     InvalidMass,
@@ -655,6 +654,30 @@ impl defmt::Format for Quantity {
             Self::Jacobian => defmt::write!(f, "Jacobian"),
             Self::LinearSystem => defmt::write!(f, "LinearSystem"),
             Self::WorldPose => defmt::write!(f, "WorldPose"),
+        }
+    }
+}
+
+/// Written out rather than derived: with its one variant that carries a
+/// field ([`ModelProblem::Topology`]) the derived `format` stops being a
+/// table lookup and became the pendulum image's largest formatting
+/// function (the performance notebook, "Where the pendulum's 212 bytes
+/// went").
+#[cfg(feature = "defmt")]
+impl defmt::Format for ModelProblem {
+    #[inline(never)]
+    fn format(&self, f: defmt::Formatter<'_>) {
+        match self {
+            Self::InvalidMass => defmt::write!(f, "InvalidMass"),
+            Self::InvalidInertia => defmt::write!(f, "InvalidInertia"),
+            Self::AxisNotUnit => defmt::write!(f, "AxisNotUnit"),
+            Self::RotationNotOrthonormal => defmt::write!(f, "RotationNotOrthonormal"),
+            Self::NonFiniteParameter => defmt::write!(f, "NonFiniteParameter"),
+            Self::Reflection => defmt::write!(f, "Reflection"),
+            Self::Overflow => defmt::write!(f, "Overflow"),
+            Self::InconsistentTopology => defmt::write!(f, "InconsistentTopology"),
+            Self::JointCoordinateMismatch => defmt::write!(f, "JointCoordinateMismatch"),
+            Self::Topology(problem) => defmt::write!(f, "Topology({})", problem),
         }
     }
 }
