@@ -1,9 +1,9 @@
 //! Endpoints: named points on bodies (or in the world) where forces,
 //! contacts and muscle paths attach.
 
+use crate::error::{Error, Quantity, Result};
 use crate::space::{RigidTransform, Space};
 use crate::spatial::Spatial;
-use crate::error::{Error, Quantity, Result};
 use crate::Scalar;
 
 /// A point fixed on a body, or fixed in the world when `body` is `None`.

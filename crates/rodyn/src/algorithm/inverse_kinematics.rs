@@ -28,11 +28,11 @@ use crate::data::Data;
 use crate::error::{Error, ModelProblem, Quantity, Result, Setting};
 use crate::frame::Frame;
 use crate::model::Model;
+use crate::space::VectorOps;
 /// The rotation vector of a rotation (moved to [`crate::spatial`], where
 /// the frame contacts' `log6` uses it too; kept here for existing paths).
 pub use crate::spatial::log3;
 use crate::spatial::{Motion, Spatial, Transform, Vec3};
-use crate::space::VectorOps;
 use crate::Scalar;
 
 /// Settings of [`solve`].

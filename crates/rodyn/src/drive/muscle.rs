@@ -189,9 +189,10 @@ impl<S: Scalar> ThelenParameters<S> {
     /// length `l̃`.
     ///
     /// # Errors
+    /// The error of [`validate`](Self::validate) for a bad parameter;
     /// [`Error::NonFinite`] with [`Quantity::MuscleCurve`] (argument 0) for
-    /// a non-finite `l̃`; the error of [`validate`](Self::validate), or
-    /// [`Error::NonFiniteResult`], when the value comes out non-finite.
+    /// a non-finite `l̃`; [`Error::NonFiniteResult`] when the value
+    /// overflows.
     pub fn active_force_length(&self, normalized_length: S) -> Result<S> {
         let [f] = self.checked_curve(
             [normalized_length],
@@ -240,10 +241,9 @@ impl<S: Scalar> ThelenParameters<S> {
         Ok((f, slope))
     }
 
-    /// A curve's `values` at `arguments`, checked: the arguments finite
-    /// ([`Error::NonFinite`]), then the values (the parameters'
-    /// [`validate`](Self::validate) error when they are to blame,
-    /// [`Error::NonFiniteResult`] otherwise).
+    /// A curve's `values` at `arguments`, checked: the parameters
+    /// ([`validate`](Self::validate)), the arguments finite
+    /// ([`Error::NonFinite`]), then the values ([`Error::NonFiniteResult`]).
     fn checked_curve<const A: usize, const N: usize>(
         &self,
         arguments: [S; A],
@@ -313,10 +313,10 @@ impl<S: Scalar> ThelenParameters<S> {
     /// (both clamped to `[0, 1]` in the time constant's shape).
     ///
     /// # Errors
+    /// The error of [`validate`](Self::validate) for a bad parameter;
     /// [`Error::NonFinite`] with [`Quantity::MuscleCurve`] naming `u`
-    /// (argument 0) or `a` (argument 1); the error of
-    /// [`validate`](Self::validate), or [`Error::NonFiniteResult`], when the
-    /// rate comes out non-finite.
+    /// (argument 0) or `a` (argument 1); [`Error::NonFiniteResult`] when
+    /// the rate overflows.
     pub fn activation_rate(&self, excitation: S, activation: S) -> Result<S> {
         let [rate] = self.checked_curve(
             [excitation, activation],
@@ -340,21 +340,18 @@ impl<S: Scalar> ThelenParameters<S> {
 }
 
 /// A muscle curve's `values` at `arguments`, as its checked public form
-/// returns them: [`Error::NonFinite`] naming the first non-finite argument;
-/// for non-finite values, the error of `parameters_error` (the parameters'
-/// own check) or, when the parameters are valid, [`Error::NonFiniteResult`]
-/// naming the value (0) or slope (1, 2). One finiteness test per value when
-/// all is well.
+/// returns them: the error of `parameters` (the parameters' own check),
+/// then [`Error::NonFinite`] naming the first non-finite argument, then
+/// [`Error::NonFiniteResult`] naming the first non-finite value (0) or
+/// slope (1, 2).
 pub(crate) fn checked_curve<S: Scalar, const A: usize, const N: usize>(
     arguments: [S; A],
     values: [S; N],
-    parameters_error: impl FnOnce() -> Result<()>,
+    parameters: impl FnOnce() -> Result<()>,
 ) -> Result<[S; N]> {
+    parameters()?;
     check_finite(&arguments, Quantity::MuscleCurve)?;
-    if check_result(&values, Quantity::MuscleCurve).is_err() {
-        parameters_error()?;
-        check_result(&values, Quantity::MuscleCurve)?;
-    }
+    check_result(&values, Quantity::MuscleCurve)?;
     Ok(values)
 }
 

@@ -226,9 +226,10 @@ impl<S: Scalar> DeGrooteParameters<S> {
     /// at the normalised fibre length `l̃`.
     ///
     /// # Errors
+    /// The error of [`validate`](Self::validate) for a bad parameter;
     /// [`Error::NonFinite`] with [`Quantity::MuscleCurve`] (argument 0) for
-    /// a non-finite `l̃`; the error of [`validate`](Self::validate), or
-    /// [`Error::NonFiniteResult`], when a value comes out non-finite.
+    /// a non-finite `l̃`; [`Error::NonFiniteResult`] when a value
+    /// overflows.
     pub fn active_force_length(&self, normalized_length: S) -> Result<(S, S)> {
         let (f, slope) = self.active_force_length_unchecked(normalized_length);
         let [f, slope] = self.checked_curve([normalized_length], [f, slope])?;
@@ -313,10 +314,10 @@ impl<S: Scalar> DeGrooteParameters<S> {
     /// its partial derivatives `∂ȧ/∂u`, `∂ȧ/∂a` (neither input clamped).
     ///
     /// # Errors
+    /// The error of [`validate`](Self::validate) for a bad parameter;
     /// [`Error::NonFinite`] with [`Quantity::MuscleCurve`] naming `u`
-    /// (argument 0) or `a` (argument 1); the error of
-    /// [`validate`](Self::validate), or [`Error::NonFiniteResult`] naming
-    /// the rate (0) or a partial (1, 2), when one comes out non-finite.
+    /// (argument 0) or `a` (argument 1); [`Error::NonFiniteResult`] naming
+    /// the rate (0) or a partial (1, 2) when one overflows.
     pub fn activation_rate_partials(&self, excitation: S, activation: S) -> Result<(S, S, S)> {
         let (rate, d_du, d_da) = self.activation_rate_partials_unchecked(excitation, activation);
         let [rate, d_du, d_da] =
@@ -354,7 +355,9 @@ impl<S: Scalar> DeGrooteParameters<S> {
     /// # Errors
     /// As [`activation_rate_partials`](Self::activation_rate_partials).
     pub fn activation_rate(&self, excitation: S, activation: S) -> Result<S> {
-        let rate = self.activation_rate_partials_unchecked(excitation, activation).0;
+        let rate = self
+            .activation_rate_partials_unchecked(excitation, activation)
+            .0;
         let [rate] = self.checked_curve([excitation, activation], [rate])?;
         Ok(rate)
     }

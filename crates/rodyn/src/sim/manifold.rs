@@ -22,8 +22,8 @@
 //!   configuration with [`Error::InvalidConfiguration`](crate::Error::InvalidConfiguration):
 //!   the drift is reported, not integrated into garbage.
 
-use crate::joint::{Joint, JointModel};
 use crate::error::{Quantity, Result};
+use crate::joint::{Joint, JointModel};
 use crate::model::{check_finite, check_result, Model};
 use crate::planar::{Planar, PlanarJoint};
 use crate::space::Space;
