@@ -15,7 +15,7 @@
 //! ```
 
 use crate::error::{Error, Quantity, Result};
-use crate::model::{check_finite, check_result};
+use crate::model::check_result;
 use crate::Scalar;
 
 /// The lower Cholesky factor `L` (`A = L Lᵀ`) of the leading `n × n` block
@@ -89,11 +89,13 @@ pub fn cholesky_solve<S: Scalar, const N: usize>(
             capacity: N,
         });
     }
-    let b_finite = check_finite(&b[..n], Quantity::LinearSystem);
+    // Where `b` is bad, kept as an index (the solve overwrites `b`, and an
+    // index is lighter on the stack than an error).
+    let bad_b = b[..n].iter().position(|x| !x.is_finite());
     cholesky_solve_unchecked(l, n, b);
     if check_result(&b[..n], Quantity::LinearSystem).is_err() {
-        b_finite?;
-        if let Some(row) = (0..n).find(|&i| l[i][..=i].iter().any(|x| !x.is_finite())) {
+        let bad_l = (0..n).find(|&i| l[i][..=i].iter().any(|x| !x.is_finite()));
+        if let Some(row) = bad_b.or(bad_l) {
             return Err(Error::NonFinite {
                 quantity: Quantity::LinearSystem,
                 index: row,
