@@ -258,7 +258,7 @@ fn for_each_supporting_coordinate<
 /// [`joint_jacobians_time_variation`]); changes neither.
 ///
 /// # Errors
-/// [`Error::FrameBodyOutOfRange`](crate::Error::FrameBodyOutOfRange) when
+/// [`Error::FrameBodyOutOfRange`] when
 /// `frame.body` is not below `NB`; those of
 /// [`frame_placement`] for a frame whose
 /// placement is not finite.
@@ -300,7 +300,7 @@ pub fn frame_jacobian<
 /// [`joint_jacobians_time_variation`].
 ///
 /// # Errors
-/// [`Error::FrameBodyOutOfRange`](crate::Error::FrameBodyOutOfRange) when
+/// [`Error::FrameBodyOutOfRange`] when
 /// `frame.body` is not below `NB`; those of
 /// [`frame_placement`] for a frame whose
 /// placement is not finite.
