@@ -212,7 +212,7 @@ fn place_pelvis(coordinates: &mut [FourierSeries]) -> f64 {
             }
             forward_kinematics(&model, &mut data, &q).expect("finite joint angles");
             feet.map(|e| {
-                let p = ENDPOINTS_F64[e].world_position(&data.o_m_i);
+                let p = ENDPOINTS_F64[e].world_position(&data.o_m_i).unwrap();
                 [p.x, p.y]
             })
         })

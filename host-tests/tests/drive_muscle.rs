@@ -22,41 +22,58 @@ fn muscle(params: ThelenParameters<f64>) -> ThelenMuscle<f64, Spatial, 2> {
 #[test]
 fn curves_pass_through_their_defining_points() {
     // f_L = 1 at optimal length and e⁻¹ at l̃ = 1 ± √γ.
-    assert_eq!(P.active_force_length(1.0), 1.0);
+    assert_eq!(P.active_force_length(1.0).unwrap(), 1.0);
     let e_inv = (-1.0f64).exp();
     approx::assert_relative_eq!(
-        P.active_force_length(1.0 + 0.45f64.sqrt()),
+        P.active_force_length(1.0 + 0.45f64.sqrt()).unwrap(),
         e_inv,
         max_relative = 1e-14
     );
     approx::assert_relative_eq!(
-        P.active_force_length(1.0 - 0.45f64.sqrt()),
+        P.active_force_length(1.0 - 0.45f64.sqrt()).unwrap(),
         e_inv,
         max_relative = 1e-14
     );
     // f_PE = 0 at and below optimal length, 1 at strain ε₀ᴹ = 0.6.
-    assert_eq!(P.passive_force_length(1.0), 0.0);
-    assert_eq!(P.passive_force_length(0.7), 0.0);
-    approx::assert_relative_eq!(P.passive_force_length(1.6), 1.0, max_relative = 1e-14);
+    assert_eq!(P.passive_force_length(1.0).unwrap(), 0.0);
+    assert_eq!(P.passive_force_length(0.7).unwrap(), 0.0);
+    approx::assert_relative_eq!(
+        P.passive_force_length(1.6).unwrap(),
+        1.0,
+        max_relative = 1e-14
+    );
     // f_V: 1 isometric, 0 at maximum shortening, toward F̃_len = 1.4 lengthening.
-    assert_eq!(P.force_velocity(0.0).0, 1.0);
-    assert_eq!(P.force_velocity(-1.0).0, 0.0);
-    assert_eq!(P.force_velocity(-3.0), (0.0, 0.0));
-    approx::assert_relative_eq!(P.force_velocity(1e6).0, 1.4, max_relative = 1e-5);
+    assert_eq!(P.force_velocity(0.0).unwrap().0, 1.0);
+    assert_eq!(P.force_velocity(-1.0).unwrap().0, 0.0);
+    assert_eq!(P.force_velocity(-3.0).unwrap(), (0.0, 0.0));
+    approx::assert_relative_eq!(P.force_velocity(1e6).unwrap().0, 1.4, max_relative = 1e-5);
     // Hill's hyperbola at half the maximum shortening speed: (1 - ½)/(1 + ½/A_f) = 0.5/3.
-    approx::assert_relative_eq!(P.force_velocity(-0.5).0, 0.5 / 3.0, max_relative = 1e-14);
+    approx::assert_relative_eq!(
+        P.force_velocity(-0.5).unwrap().0,
+        0.5 / 3.0,
+        max_relative = 1e-14
+    );
 }
 
 #[test]
 fn force_velocity_slope_matches_central_differences_on_both_branches() {
     let h = 1e-6;
     for v in [-0.9, -0.5, -0.1, 0.1, 0.5, 3.0] {
-        let fd = (P.force_velocity(v + h).0 - P.force_velocity(v - h).0) / (2.0 * h);
-        approx::assert_relative_eq!(P.force_velocity(v).1, fd, max_relative = 1e-7);
+        let fd =
+            (P.force_velocity(v + h).unwrap().0 - P.force_velocity(v - h).unwrap().0) / (2.0 * h);
+        approx::assert_relative_eq!(P.force_velocity(v).unwrap().1, fd, max_relative = 1e-7);
     }
     // Thelen's curve has a kink at ṽ = 0: slope 1 + 1/A_f = 5 below, 2 + 2/A_f = 10 above.
-    approx::assert_relative_eq!(P.force_velocity(-1e-12).1, 5.0, max_relative = 1e-9);
-    approx::assert_relative_eq!(P.force_velocity(1e-12).1, 10.0, max_relative = 1e-9);
+    approx::assert_relative_eq!(
+        P.force_velocity(-1e-12).unwrap().1,
+        5.0,
+        max_relative = 1e-9
+    );
+    approx::assert_relative_eq!(
+        P.force_velocity(1e-12).unwrap().1,
+        10.0,
+        max_relative = 1e-9
+    );
 }
 
 #[test]
@@ -134,17 +151,17 @@ fn singular_regions_are_guarded() {
 fn activation_dynamics_follow_thelens_time_constants() {
     // Rising from a = 0 with u = 1: τ = τ_act (0.5 + 1.5·0) = 7.5 ms.
     approx::assert_relative_eq!(
-        P.activation_rate(1.0, 0.0),
+        P.activation_rate(1.0, 0.0).unwrap(),
         1.0 / 0.0075,
         max_relative = 1e-14
     );
     // Falling from a = 1 with u = 0: τ = τ_deact / (0.5 + 1.5) = 25 ms.
     approx::assert_relative_eq!(
-        P.activation_rate(0.0, 1.0),
+        P.activation_rate(0.0, 1.0).unwrap(),
         -1.0 / 0.025,
         max_relative = 1e-14
     );
     // At equilibrium nothing moves; excitation is clamped to [0, 1].
-    assert_eq!(P.activation_rate(0.4, 0.4), 0.0);
-    assert_eq!(P.activation_rate(3.0, 1.0), 0.0);
+    assert_eq!(P.activation_rate(0.4, 0.4).unwrap(), 0.0);
+    assert_eq!(P.activation_rate(3.0, 1.0).unwrap(), 0.0);
 }

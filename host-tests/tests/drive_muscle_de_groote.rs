@@ -28,39 +28,53 @@ fn curves_pass_near_their_defining_points() {
     // Active force-length: 1 at the optimal length (0.99933 with the
     // published constants; the peak, 1.0005, lies at l̃ = 1.014), small at
     // 0.4 and 1.8 optimal lengths.
-    let (f_l, slope) = P.active_force_length(1.0);
+    let (f_l, slope) = P.active_force_length(1.0).unwrap();
     assert!((f_l - 1.0).abs() < 1e-3, "f_L(1) = {f_l}");
     assert!(
-        slope > 0.0 && P.active_force_length(1.02).1 < 0.0,
+        slope > 0.0 && P.active_force_length(1.02).unwrap().1 < 0.0,
         "peak not near 1.014"
     );
-    assert!(P.active_force_length(1.014).0 < 1.001);
-    assert!(P.active_force_length(0.4).0 < 0.05);
-    assert!(P.active_force_length(1.8).0 < 0.05);
+    assert!(P.active_force_length(1.014).unwrap().0 < 1.001);
+    assert!(P.active_force_length(0.4).unwrap().0 < 0.05);
+    assert!(P.active_force_length(1.8).unwrap().0 < 0.05);
     // Passive force-length: 0 at l̃ = 1, 1 at the strain ε₀ᴹ = 0.6, and
     // never below −1/(e⁴ − 1) when short.
-    assert_eq!(P.passive_force_length(1.0).0, 0.0);
-    approx::assert_relative_eq!(P.passive_force_length(1.6).0, 1.0, max_relative = 1e-14);
+    assert_eq!(P.passive_force_length(1.0).unwrap().0, 0.0);
+    approx::assert_relative_eq!(
+        P.passive_force_length(1.6).unwrap().0,
+        1.0,
+        max_relative = 1e-14
+    );
     let floor = -1.0 / (4.0f64.exp() - 1.0);
-    assert!(P.passive_force_length(0.3).0 > floor);
+    assert!(P.passive_force_length(0.3).unwrap().0 > floor);
     // Force-velocity: 1 isometric (1.0023 published), about 0 at maximum
     // shortening (0.0121), 1.789 at maximum lengthening.
-    assert!((P.force_velocity(0.0).0 - 1.0).abs() < 3e-3);
-    assert!(P.force_velocity(-1.0).0.abs() < 0.015);
-    approx::assert_relative_eq!(P.force_velocity(1.0).0, 1.78891, max_relative = 1e-5);
+    assert!((P.force_velocity(0.0).unwrap().0 - 1.0).abs() < 3e-3);
+    assert!(P.force_velocity(-1.0).unwrap().0.abs() < 0.015);
+    approx::assert_relative_eq!(
+        P.force_velocity(1.0).unwrap().0,
+        1.78891,
+        max_relative = 1e-5
+    );
     // Its inverse (a sinh) recovers the velocity.
     for v in [-0.9, -0.3, 0.0, 0.4, 0.95] {
-        let f = P.force_velocity(v).0;
-        approx::assert_relative_eq!(P.velocity_from_force_multiplier(f), v, epsilon = 1e-12);
+        let f = P.force_velocity(v).unwrap().0;
+        approx::assert_relative_eq!(
+            P.velocity_from_force_multiplier(f).unwrap(),
+            v,
+            epsilon = 1e-12
+        );
     }
     // Tendon: one normalised force at 4.74 % strain, slightly negative at
     // the slack length; the inverse recovers the length.
-    let strain_at_one = tendon_length_from_force(1.0) - 1.0;
+    let strain_at_one = tendon_length_from_force(1.0).unwrap() - 1.0;
     approx::assert_relative_eq!(strain_at_one, 0.0474, epsilon = 1e-4);
-    let (at_slack, _) = tendon_force_length(1.0);
+    let (at_slack, _) = tendon_force_length(1.0).unwrap();
     assert!((-0.012..0.0).contains(&at_slack), "f_T(1) = {at_slack}");
     approx::assert_relative_eq!(
-        tendon_force_length(tendon_length_from_force(0.7)).0,
+        tendon_force_length(tendon_length_from_force(0.7).unwrap())
+            .unwrap()
+            .0,
         0.7,
         max_relative = 1e-13
     );
@@ -75,14 +89,14 @@ fn curve_slopes_match_central_differences() {
         approx::assert_relative_eq!(f(x).1, difference, max_relative = 1e-7, epsilon = 1e-9);
     };
     for x in [0.5, 0.8, 1.0, 1.2, 1.5] {
-        check(&|l| P.active_force_length(l), x);
-        check(&|l| P.passive_force_length(l), x);
+        check(&|l| P.active_force_length(l).unwrap(), x);
+        check(&|l| P.passive_force_length(l).unwrap(), x);
     }
     for v in [-0.9, -0.2, 0.0, 0.3, 0.9] {
-        check(&|v| P.force_velocity(v), v);
+        check(&|v| P.force_velocity(v).unwrap(), v);
     }
     for l in [0.99, 1.0, 1.03, 1.05] {
-        check(&|l| tendon_force_length(l), l);
+        check(&|l| tendon_force_length(l).unwrap(), l);
     }
 }
 
@@ -92,7 +106,8 @@ fn isometric_tension_at_optimal_length_is_activation_times_the_curves() {
     // Path 0.3 m = tendon slack 0.2 m + optimal fibre 0.1 m.
     let s = m.state(0.3, 0.0, 0.7).unwrap();
     approx::assert_relative_eq!(s.fiber_length, 0.1, max_relative = 1e-14);
-    let expected = 1000.0 * (0.7 * P.active_force_length(1.0).0 * P.force_velocity(0.0).0);
+    let expected =
+        1000.0 * (0.7 * P.active_force_length(1.0).unwrap().0 * P.force_velocity(0.0).unwrap().0);
     approx::assert_relative_eq!(s.tension, expected, max_relative = 1e-14);
     approx::assert_relative_eq!(
         s.tension_per_activation,
@@ -173,18 +188,26 @@ fn activation_dynamics_are_smooth_and_blend_the_time_constants() {
         (0.1, 0.8),
         (0.0, 0.0),
     ] {
-        let (rate, d_du, d_da) = P.activation_rate_partials(u, a);
-        assert_eq!(rate, P.activation_rate(u, a));
-        let by_u = (P.activation_rate(u + h, a) - P.activation_rate(u - h, a)) / (2.0 * h);
-        let by_a = (P.activation_rate(u, a + h) - P.activation_rate(u, a - h)) / (2.0 * h);
+        let (rate, d_du, d_da) = P.activation_rate_partials(u, a).unwrap();
+        assert_eq!(rate, P.activation_rate(u, a).unwrap());
+        let by_u = (P.activation_rate(u + h, a).unwrap() - P.activation_rate(u - h, a).unwrap())
+            / (2.0 * h);
+        let by_a = (P.activation_rate(u, a + h).unwrap() - P.activation_rate(u, a - h).unwrap())
+            / (2.0 * h);
         approx::assert_relative_eq!(d_du, by_u, max_relative = 1e-7);
         approx::assert_relative_eq!(d_da, by_a, max_relative = 1e-7);
-        let dual_u = pd.activation_rate(Dual::variable(u), Dual::constant(a)).du;
-        let dual_a = pd.activation_rate(Dual::constant(u), Dual::variable(a)).du;
+        let dual_u = pd
+            .activation_rate(Dual::variable(u), Dual::constant(a))
+            .unwrap()
+            .du;
+        let dual_a = pd
+            .activation_rate(Dual::constant(u), Dual::variable(a))
+            .unwrap()
+            .du;
         approx::assert_relative_eq!(d_du, dual_u, max_relative = 1e-13);
         approx::assert_relative_eq!(d_da, dual_a, max_relative = 1e-13);
     }
-    assert_eq!(P.activation_rate(0.4, 0.4), 0.0);
+    assert_eq!(P.activation_rate(0.4, 0.4).unwrap(), 0.0);
     // A sharp blend gives the activation time constant τ_act (½ + 1.5a)
     // while rising and τ_deact / (½ + 1.5a) while falling.
     let sharp = DeGrooteParameters {
@@ -192,18 +215,18 @@ fn activation_dynamics_are_smooth_and_blend_the_time_constants() {
         ..P
     };
     approx::assert_relative_eq!(
-        sharp.activation_rate(1.0, 0.0),
+        sharp.activation_rate(1.0, 0.0).unwrap(),
         1.0 / 0.0075,
         max_relative = 1e-12
     );
     approx::assert_relative_eq!(
-        sharp.activation_rate(0.0, 1.0),
+        sharp.activation_rate(0.0, 1.0).unwrap(),
         -2.0 / 0.06,
         max_relative = 1e-12
     );
     // The paper's gentle blend (b = 0.1): within 5 % of the mean of the
     // two rates.
-    let rising = P.activation_rate(1.0, 0.0);
+    let rising = P.activation_rate(1.0, 0.0).unwrap();
     let mean = 0.5 * (1.0 / 0.0075 + 0.5 / 0.06);
     assert!((rising / mean - 1.0).abs() < 0.1, "{rising} against {mean}");
 }
@@ -400,4 +423,46 @@ mod on_a_floating_tree {
             }
         }
     }
+}
+
+/// The curves' checked forms name what is wrong: the argument that is not
+/// finite, the parameter that is out of range, a curve that overflows,
+/// and a tendon force the curve never reaches.
+#[test]
+fn curves_name_their_bad_inputs() {
+    use rodyn::error::{DriveProblem, Error, Quantity};
+    let argument = |index| Error::NonFinite {
+        quantity: Quantity::MuscleCurve,
+        index,
+    };
+    assert_eq!(P.active_force_length(f64::NAN), Err(argument(0)));
+    assert_eq!(P.force_velocity(f64::INFINITY), Err(argument(0)));
+    assert_eq!(P.activation_rate(0.5, f64::NAN), Err(argument(1)));
+    assert_eq!(tendon_force_length(f64::NAN), Err(argument(0)));
+    // exp(kᴾᴱ (l̃ − 1)/ε₀ᴹ) overflows f64 near l̃ = 107.
+    assert_eq!(
+        P.passive_force_length(200.0),
+        Err(Error::NonFiniteResult {
+            quantity: Quantity::MuscleCurve,
+            index: 0
+        })
+    );
+    // f_T = −c₃ is the curve's asymptote: no tendon length gives it.
+    assert_eq!(
+        tendon_length_from_force(-1.0),
+        Err(Error::OutOfRange {
+            quantity: Quantity::MuscleCurve,
+            index: 0
+        })
+    );
+    // A zero passive strain (field 9) divides by zero: the parameter is
+    // named, not the curve.
+    let mut bad = P;
+    bad.passive_strain_at_one = 0.0;
+    assert_eq!(
+        bad.passive_force_length(1.2),
+        Err(Error::InvalidDrive {
+            problem: DriveProblem::MuscleParameter { index: 9 }
+        })
+    );
 }

@@ -110,7 +110,7 @@ fn compare<S: Scalar, const NB: usize, const NQ: usize, const NV: usize>(
                 let mut dj = [Motion::<S>::ZERO; NV];
                 frame_jacobian_time_variation(&model, &data, &jac, frame, reference, &mut dj)
                     .unwrap();
-                let dj_v = mul_rates::<S, NV, Spatial>(&dj, &v);
+                let dj_v = mul_rates::<S, NV, Spatial>(&dj, &v).unwrap();
                 let velocity = frame_velocity(&data, frame, reference).unwrap();
                 let o_m_f = frame_placement(&data, frame).unwrap();
 

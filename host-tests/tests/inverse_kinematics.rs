@@ -87,7 +87,7 @@ fn reaches_reachable_targets_f64_and_f32() {
         .unwrap_or_else(|e| panic!("from {start:?} to {q_target:?}: {e}"));
         worst_iterations = worst_iterations.max(iterations);
         forward_kinematics(&model, &mut data, &q).unwrap();
-        let e = pose_error(&frame_placement(&data, &flange).unwrap(), &target);
+        let e = pose_error(&frame_placement(&data, &flange).unwrap(), &target).unwrap();
         let size = e
             .to_linear_first()
             .iter()
@@ -369,7 +369,7 @@ fn count_reached<const N: usize>(
                 Ok(iterations) => {
                     assert!(iterations < settings.max_iterations);
                     forward_kinematics(model, &mut data, &q).unwrap();
-                    let e = pose_error(&frame_placement(&data, frame).unwrap(), &target);
+                    let e = pose_error(&frame_placement(&data, frame).unwrap(), &target).unwrap();
                     let size = e
                         .to_linear_first()
                         .iter()

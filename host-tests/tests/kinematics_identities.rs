@@ -90,7 +90,7 @@ fn check_model<const NB: usize, const NQ: usize, const NV: usize>(
         let v: [f64; NV] = rng.vector(2.0);
         let zero = [0.0; NV];
         // q(t) = q + t q̇ to first order, which is all a derivative sees.
-        let q_dot = configuration_rate(model, &q, &v);
+        let q_dot = configuration_rate(model, &q, &v).unwrap();
         let q_dual: [Dual; NQ] = core::array::from_fn(|k| Dual {
             re: q[k],
             du: q_dot[k],
@@ -105,7 +105,7 @@ fn check_model<const NB: usize, const NQ: usize, const NV: usize>(
             let dual_frame = Frame::new(f.body, f.placement.cast::<Dual>());
             for reference in REFERENCES {
                 frame_jacobian(model, &data, &jac, f, reference, &mut cols).unwrap();
-                let jv = mul_rates::<f64, NV, Spatial>(&cols, &v);
+                let jv = mul_rates::<f64, NV, Spatial>(&cols, &v).unwrap();
                 let vel = frame_velocity(&data, f, reference).unwrap();
                 assert_close(
                     &format!("J v, body {} {reference:?}", f.body),
@@ -123,10 +123,10 @@ fn check_model<const NB: usize, const NQ: usize, const NV: usize>(
                     &mut dual_cols,
                 )
                 .unwrap();
-                let d_jv = du6(&mul_rates::<Dual, NV, Spatial>(&dual_cols, &v_dual));
+                let d_jv = du6(&mul_rates::<Dual, NV, Spatial>(&dual_cols, &v_dual).unwrap());
                 let mut dj = [Motion::ZERO; NV];
                 frame_jacobian_time_variation(model, &data, &jac, f, reference, &mut dj).unwrap();
-                let dj_v = mul_rates::<f64, NV, Spatial>(&dj, &v);
+                let dj_v = mul_rates::<f64, NV, Spatial>(&dj, &v).unwrap();
                 assert_close(
                     &format!("J-dot columns times v, body {} {reference:?}", f.body),
                     &m6(&dj_v),

@@ -57,10 +57,11 @@ use rodyn::algorithm::ltdl::ltdl_solve_columns;
 use rodyn::algorithm::ltdl::{ltdl_factor, ltdl_solve};
 use rodyn::algorithm::rnea::{gravity_torques, nonlinear_effects, rnea};
 use rodyn::prelude::*;
+use rodyn::sim::manifold::configuration_rate;
 use rodyn::sim::time_stepping::{time_step, TimeSteppingData, TimeSteppingSettings};
 use rodyn::sim::State;
 use rodyn::Frame;
-use rodyn_host_tests::contact_fixture::{solo12, SOLO_NQ, SOLO_NV};
+use rodyn_host_tests::contact_fixture::{solo12, SOLO_NB, SOLO_NQ, SOLO_NV};
 use rodyn_host_tests::fixture::Fixture;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
@@ -693,6 +694,11 @@ fn solo_probes<S: Scalar>() -> Vec<Probe> {
             Ok(numbers(tau))
         }
     );
+    probe!("configuration_rate", |model, data, q, v, a, x, slot| {
+        // The base's quaternion turns v's angular part into q̇.
+        let _: &mut Box<Data<S, SOLO_NB, SOLO_NV>> = data;
+        Ok(numbers(&configuration_rate(model, &q, &v)?))
+    });
     probe!("time_step", |model, data, q, v, a, x, slot| {
         let mut sdata = Box::new(TimeSteppingData::<S, SOLO_NV, 12, 4>::new());
         let points: [Frame<S>; 4] = core::array::from_fn(|k| frame_at(3 * k + 3, x, slot));
@@ -791,6 +797,12 @@ fn the_drives_and_sensitivities_give_finite_numbers_or_a_named_error() {
 }
 
 #[test]
+fn the_formulas_give_finite_numbers_or_a_named_error() {
+    use probe_tables::formulas::probes;
+    probe_all(&[("formulas", probes::<f64>, probes::<f32>)]);
+}
+
+#[test]
 fn the_simulation_gives_finite_numbers_or_a_named_error() {
     use probe_tables::sim::probes;
     probe_all(&[("simulation", probes::<f64>, probes::<f32>)]);
@@ -805,10 +817,6 @@ fn model_updates_give_finite_parameters_or_a_named_error() {
 /// Why a public function is not probed: it returns no numbers, or it
 /// takes no input a caller could make hostile.
 const NO_NUMBERS: &str = "returns no numbers";
-/// Why a pure formula is not probed: it returns its numbers without a
-/// `Result`, so it cannot name a hostile input (NaN in is NaN out); the
-/// checked functions that use it are probed.
-const NO_RESULT: &str = "a formula without a Result; its checked callers are probed";
 
 /// Public functions of the core that the probe does not call, each with
 /// the reason. A new `pub fn` that returns numbers belongs in the probe
@@ -863,25 +871,6 @@ const NOT_PROBED: &[(&str, &str)] = &[
         "dense algebra on a caller's matrix, its Err the failing column; the KKT and \
          contact solvers that call it check their results",
     ),
-    ("cholesky_solve", NO_RESULT),
-    ("express_world_motion", NO_RESULT),
-    ("to_linear_first", NO_RESULT),
-    ("mul_rates", NO_RESULT),
-    ("pose_error", NO_RESULT),
-    ("add_tension_derivatives", NO_RESULT),
-    ("aba_response", NO_RESULT),
-    ("configuration_rate", NO_RESULT),
-    ("add_scaled", NO_RESULT),
-    ("world_placement", NO_RESULT),
-    ("world_position", NO_RESULT),
-    ("active_force_length", NO_RESULT),
-    ("passive_force_length", NO_RESULT),
-    ("force_velocity", NO_RESULT),
-    ("velocity_from_force_multiplier", NO_RESULT),
-    ("activation_rate", NO_RESULT),
-    ("activation_rate_partials", NO_RESULT),
-    ("tendon_force_length", NO_RESULT),
-    ("tendon_length_from_force", NO_RESULT),
     (
         "act_forces",
         "a CRBA step on caller values (crate-internal use)",
@@ -900,6 +889,7 @@ fn probed() -> Vec<&'static str> {
         solo_probes::<f64>(),
         probe_tables::planar::probes::<f64>(),
         probe_tables::drives::probes::<f64>(),
+        probe_tables::formulas::probes::<f64>(),
         probe_tables::sim::probes::<f64>(),
         probe_tables::update::probes::<f64>(),
     ]

@@ -141,7 +141,7 @@ impl MuscleRobot {
             &a,
             &mut self.forces,
         )?;
-        Ok(join(&v, &q_ddot, &activation_rates(&self.muscles, u, &a)))
+        Ok(join(&v, &q_ddot, &activation_rates(&self.muscles, u, &a)?))
     }
 
     /// `f` and its derivative along the direction `(dx, du)`, by one pass
@@ -174,7 +174,7 @@ impl MuscleRobot {
         Ok(join(
             &v,
             &q_ddot,
-            &activation_rates(&self.muscles_dual, &ud, &a),
+            &activation_rates(&self.muscles_dual, &ud, &a)?,
         ))
     }
 

@@ -62,13 +62,21 @@ pub fn smooth_muscles<S: Scalar>() -> SmoothMuscles<S> {
 }
 
 /// Activation rates `ȧ` (1/s) of the four smooth muscles.
-#[must_use]
+///
+/// # Errors
+/// The first muscle's error from
+/// [`DeGrooteParameters::activation_rate`](rodyn::drive::DeGrooteParameters::activation_rate)
+/// (a non-finite excitation or activation).
 pub fn activation_rates<S: Scalar>(
     muscles: &SmoothMuscles<S>,
     excitation: &[S; NU],
     activation: &[S; NU],
-) -> [S; NU] {
-    core::array::from_fn(|k| muscles[k].activation_rate(excitation[k], activation[k]))
+) -> rodyn::Result<[S; NU]> {
+    let mut rates = [S::ZERO; NU];
+    for (k, rate) in rates.iter_mut().enumerate() {
+        *rate = muscles[k].activation_rate(excitation[k], activation[k])?;
+    }
+    Ok(rates)
 }
 
 /// What one evaluation of the analytic Jacobians needs, in one scalar type.
@@ -108,7 +116,7 @@ impl<S: Scalar> Workspace<S> {
             &a,
             &mut self.forces,
         )?;
-        Ok(join(&v, &q_ddot, &activation_rates(&self.muscles, u, &a)))
+        Ok(join(&v, &q_ddot, &activation_rates(&self.muscles, u, &a)?))
     }
 
     /// `f`, `A = ∂f/∂x` and `B = ∂f/∂u` from rodyn's analytic derivatives.
@@ -150,7 +158,7 @@ impl<S: Scalar> Workspace<S> {
         for k in 0..NU {
             let (rate, d_du, d_da) = self.muscles[k]
                 .params
-                .activation_rate_partials(u[k], act[k]);
+                .activation_rate_partials(u[k], act[k])?;
             a_dot[k] = rate;
             b_out[2 * NV + k][k] = d_du;
             a_out[2 * NV + k][2 * NV + k] = d_da;
@@ -217,7 +225,7 @@ impl SmoothMuscleRobot {
             let params = &self.dual.muscles[k].params;
             let a_k = Dual::constant(x[2 * NV + k]);
             let u_k = Dual { re: u[k], du: 1.0 };
-            let (_, d_du, d_da) = params.activation_rate_partials(u_k, a_k);
+            let (_, d_du, d_da) = params.activation_rate_partials(u_k, a_k)?;
             let weight = mu[2 * NV + k];
             hessian[NX + k][NX + k] += weight * d_du.du;
             hessian[NX + k][2 * NV + k] += weight * d_da.du;
@@ -314,7 +322,7 @@ impl<E: FnMut(f64) -> [f64; NU]> AuxiliaryLoads<f64, NB, NV, NV, NU, Planar> for
         for (total, muscle) in f_ext.iter_mut().zip(&self.forces.f_ext) {
             *total += *muscle;
         }
-        *activation_rate = activation_rates(&self.muscles, &(self.excitation)(t), activation);
+        *activation_rate = activation_rates(&self.muscles, &(self.excitation)(t), activation)?;
         Ok(())
     }
 }

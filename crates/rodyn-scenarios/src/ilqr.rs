@@ -305,11 +305,11 @@ impl<S: Scalar, const NX: usize, const NU: usize, const N: usize> Ilqr<S, NX, NU
             cholesky_in_place(&mut q_uu, NU, 0.0)
                 .map_err(|_| IlqrError::NotPositiveDefinite { stage: t })?;
             let mut k = q_u.map(|x| -x);
-            cholesky_solve(&q_uu, NU, &mut k);
+            cholesky_solve(&q_uu, NU, &mut k)?;
             let mut gain = [[S::ZERO; NX]; NU];
             for j in 0..NX {
                 let mut column: [S; NU] = core::array::from_fn(|i| -q_ux[i][j]);
-                cholesky_solve(&q_uu, NU, &mut column);
+                cholesky_solve(&q_uu, NU, &mut column)?;
                 for i in 0..NU {
                     gain[i][j] = column[i];
                 }

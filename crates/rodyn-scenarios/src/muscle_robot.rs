@@ -125,13 +125,21 @@ pub fn sensitivity<'d, S: Scalar>(
 }
 
 /// Activation rates `ȧ` (1/s) of the four muscles for excitations `u`.
-#[must_use]
+///
+/// # Errors
+/// The first muscle's error from
+/// [`ThelenParameters::activation_rate`](rodyn::drive::ThelenParameters::activation_rate)
+/// (a non-finite excitation or activation).
 pub fn activation_rates<S: Scalar>(
     muscles: &RobotMuscles<S>,
     excitation: &[S; NU],
     activation: &[S; NU],
-) -> [S; NU] {
-    core::array::from_fn(|k| muscles[k].activation_rate(excitation[k], activation[k]))
+) -> Result<[S; NU]> {
+    let mut rates = [S::ZERO; NU];
+    for (k, rate) in rates.iter_mut().enumerate() {
+        *rate = muscles[k].activation_rate(excitation[k], activation[k])?;
+    }
+    Ok(rates)
 }
 
 /// Excitations in `[0, 1]` at time `t` (s): the pattern that the example,
@@ -233,7 +241,7 @@ impl<S: Scalar, E: FnMut(S) -> [S; NU]> AuxiliaryLoads<S, NB, NV, NV, NU, Planar
         for (total, muscle) in f_ext.iter_mut().zip(&self.forces.f_ext) {
             *total += *muscle;
         }
-        *activation_rate = activation_rates(self.muscles, &(self.excitation)(t), activation);
+        *activation_rate = activation_rates(self.muscles, &(self.excitation)(t), activation)?;
         Ok(())
     }
 }

@@ -411,7 +411,7 @@ mod tests {
         let mut data = QuadrupedData::new();
         rodyn::algorithm::kinematics::forward_kinematics(&model, &mut data, &state.q).unwrap();
         for foot in feet::<f64>() {
-            let p = foot.world_position(&data.o_m_i);
+            let p = foot.world_position(&data.o_m_i).unwrap();
             assert!(p.z.abs() < 1e-12, "foot at z = {}", p.z);
         }
     }

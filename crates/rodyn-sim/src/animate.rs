@@ -50,7 +50,7 @@ pub fn stick_figure_gif<const NB: usize, const NQ: usize, const NV: usize>(
         }
         for e in endpoints {
             if let Some(b) = e.body {
-                segments.push((data.o_m_i[b].trans, e.world_position(&data.o_m_i)));
+                segments.push((data.o_m_i[b].trans, e.world_position(&data.o_m_i)?));
             }
         }
         frames.push((*t, segments));
@@ -92,15 +92,15 @@ pub fn planar_stick_figure_gif<const NB: usize, const NQ: usize, const NV: usize
             if let Some(b) = e.body {
                 segments.push((
                     in_picture(data.o_m_i[b].trans),
-                    in_picture(e.world_position(&data.o_m_i)),
+                    in_picture(e.world_position(&data.o_m_i)?),
                 ));
             }
         }
         for line in polylines {
             for pair in line.windows(2) {
                 segments.push((
-                    in_picture(pair[0].world_position(&data.o_m_i)),
-                    in_picture(pair[1].world_position(&data.o_m_i)),
+                    in_picture(pair[0].world_position(&data.o_m_i)?),
+                    in_picture(pair[1].world_position(&data.o_m_i)?),
                 ));
             }
         }

@@ -1,6 +1,7 @@
 //! Endpoints: named points on bodies (or in the world) where forces,
 //! contacts and muscle paths attach.
 
+use crate::error::{Error, Quantity, Result};
 use crate::space::{RigidTransform, Space};
 use crate::spatial::Spatial;
 use crate::Scalar;
@@ -34,11 +35,43 @@ impl<S: Scalar, G: Space> Endpoint<S, G> {
     /// The point in the world frame, from body poses `o_m_i` (as
     /// [`forward_kinematics`](crate::algorithm::kinematics::forward_kinematics)
     /// leaves them in [`Data::o_m_i`](crate::Data::o_m_i)).
-    #[must_use]
-    pub fn world_position(&self, o_m_i: &[G::Transform<S>]) -> G::Point<S> {
-        match self.body {
-            Some(b) => o_m_i[b].act_point(&self.position),
-            None => self.position,
+    ///
+    /// # Errors
+    /// [`Error::BodyOutOfRange`] when `o_m_i` has no pose for the body;
+    /// [`Error::NonFinite`] naming the point (`Quantity::PathPoint`, index
+    /// 0) or the body's pose (`Quantity::WorldPose`, the body) when the
+    /// position comes out non-finite; [`Error::NonFiniteResult`] when
+    /// finite ones overflow.
+    pub fn world_position(&self, o_m_i: &[G::Transform<S>]) -> Result<G::Point<S>> {
+        let Some(b) = self.body else {
+            if !G::point_is_finite(&self.position) {
+                return Err(Error::NonFinite {
+                    quantity: Quantity::PathPoint,
+                    index: 0,
+                });
+            }
+            return Ok(self.position);
+        };
+        let o_m_b = o_m_i.get(b).ok_or(Error::BodyOutOfRange { body: b })?;
+        let p = o_m_b.act_point(&self.position);
+        if G::point_is_finite(&p) {
+            return Ok(p);
         }
+        Err(if !G::point_is_finite(&self.position) {
+            Error::NonFinite {
+                quantity: Quantity::PathPoint,
+                index: 0,
+            }
+        } else if !o_m_b.is_finite() {
+            Error::NonFinite {
+                quantity: Quantity::WorldPose,
+                index: b,
+            }
+        } else {
+            Error::NonFiniteResult {
+                quantity: Quantity::PathPoint,
+                index: 0,
+            }
+        })
     }
 }

@@ -61,6 +61,24 @@ pub enum Quantity {
     /// `index` is the point's place along the path, from 0), or the path's
     /// length and rate formed from the points.
     PathPoint,
+    /// An argument of a muscle curve or of the activation dynamics (a
+    /// normalised fibre length or velocity, a tendon length or force, a
+    /// force-velocity multiplier, an excitation or activation; `index` is
+    /// the argument's place, from 0), or the curve's value (`index` 0) and
+    /// slopes (1, 2).
+    MuscleCurve,
+    /// A Jacobian's column (`index` is the column) given to
+    /// [`mul_rates`](crate::algorithm::jacobian::mul_rates), or its product
+    /// with the joint rates (`index` 0).
+    Jacobian,
+    /// A dense linear system solved by
+    /// [`cholesky_solve`](crate::algorithm::dense::cholesky_solve): a row of
+    /// its factor `L` or an entry of its right-hand side (`index` is the
+    /// row), or of its solution.
+    LinearSystem,
+    /// A world pose given to a reader (`index` is the body whose pose it
+    /// is; 0 for a frame's pose given alone).
+    WorldPose,
 }
 
 impl Quantity {
@@ -92,6 +110,10 @@ impl Quantity {
             Self::Target => "target pose",
             Self::Drive => "drive element",
             Self::PathPoint => "drive path point",
+            Self::MuscleCurve => "muscle curve argument",
+            Self::Jacobian => "Jacobian",
+            Self::LinearSystem => "linear system",
+            Self::WorldPose => "world pose",
         }
     }
 
@@ -104,6 +126,10 @@ impl Quantity {
             Self::Contact => "contact",
             Self::PathLength | Self::PathVelocity => "muscle input",
             Self::PathPoint => "point",
+            Self::MuscleCurve => "argument",
+            Self::Jacobian => "column",
+            Self::LinearSystem => "row",
+            Self::WorldPose => "body",
             _ => "entry",
         }
     }
@@ -111,7 +137,6 @@ impl Quantity {
 
 /// What is wrong with a model parameter.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[cfg_attr(feature = "defmt", derive(defmt::Format))]
 pub enum ModelProblem {
     /// Negative or non-finite mass.
     InvalidMass,
@@ -625,6 +650,34 @@ impl defmt::Format for Quantity {
             Self::Target => defmt::write!(f, "Target"),
             Self::Drive => defmt::write!(f, "Drive"),
             Self::PathPoint => defmt::write!(f, "PathPoint"),
+            Self::MuscleCurve => defmt::write!(f, "MuscleCurve"),
+            Self::Jacobian => defmt::write!(f, "Jacobian"),
+            Self::LinearSystem => defmt::write!(f, "LinearSystem"),
+            Self::WorldPose => defmt::write!(f, "WorldPose"),
+        }
+    }
+}
+
+/// Written out rather than derived: with its one variant that carries a
+/// field ([`ModelProblem::Topology`]) the derived `format` stops being a
+/// table lookup and became the pendulum image's largest formatting
+/// function (the performance notebook, "Where the pendulum's 212 bytes
+/// went").
+#[cfg(feature = "defmt")]
+impl defmt::Format for ModelProblem {
+    #[inline(never)]
+    fn format(&self, f: defmt::Formatter<'_>) {
+        match self {
+            Self::InvalidMass => defmt::write!(f, "InvalidMass"),
+            Self::InvalidInertia => defmt::write!(f, "InvalidInertia"),
+            Self::AxisNotUnit => defmt::write!(f, "AxisNotUnit"),
+            Self::RotationNotOrthonormal => defmt::write!(f, "RotationNotOrthonormal"),
+            Self::NonFiniteParameter => defmt::write!(f, "NonFiniteParameter"),
+            Self::Reflection => defmt::write!(f, "Reflection"),
+            Self::Overflow => defmt::write!(f, "Overflow"),
+            Self::InconsistentTopology => defmt::write!(f, "InconsistentTopology"),
+            Self::JointCoordinateMismatch => defmt::write!(f, "JointCoordinateMismatch"),
+            Self::Topology(problem) => defmt::write!(f, "Topology({})", problem),
         }
     }
 }

@@ -38,7 +38,7 @@ impl<S: Scalar, G: Space> Frame<S, G> {
     /// leaves in [`Data::o_m_i`](crate::Data::o_m_i).
     /// `None` when `body` is not below `o_m_i.len()`.
     #[must_use]
-    pub fn world_placement(&self, o_m_i: &[G::Transform<S>]) -> Option<G::Transform<S>> {
+    pub(crate) fn world_placement(&self, o_m_i: &[G::Transform<S>]) -> Option<G::Transform<S>> {
         o_m_i
             .get(self.body)
             .map(|o_m_b| o_m_b.compose(&self.placement))

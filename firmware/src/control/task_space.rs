@@ -190,15 +190,16 @@ impl<'m, SPI: SpiDevice, PWM: SetDutyCycle, const N: usize> TaskSpaceImpedance<'
         // The joint accelerations of least norm that give the reference's
         // task acceleration: J⁺ (ẍ_d − J̇ q̇).
         let mut y = components(&(reference.acceleration - dj_v));
-        cholesky_solve(&gram, 6, &mut y);
+        cholesky_solve(&gram, 6, &mut y).map_err(ControlError::Dynamics)?;
         let a_feedforward: [f32; N] = core::array::from_fn(|k| dot6(&components(&self.j[k]), &y));
 
         // The posture torque without its component along the task: τ₀ − Jᵀ (J Jᵀ + λ² I)⁻¹ J τ₀.
         let tau_posture: [f32; N] = core::array::from_fn(|k| {
             g.posture_stiffness * (self.posture[k] - q[k]) - g.posture_damping * v[k]
         });
-        let mut z = components(&mul_rates::<f32, N, Spatial>(&self.j, &tau_posture));
-        cholesky_solve(&gram, 6, &mut z);
+        let j_tau = mul_rates::<f32, N, Spatial>(&self.j, &tau_posture).map_err(ControlError::Dynamics)?;
+        let mut z = components(&j_tau);
+        cholesky_solve(&gram, 6, &mut z).map_err(ControlError::Dynamics)?;
 
         let tau_dynamics = *rnea(self.model, &mut self.data, &q, &v, &a_feedforward, None)
             .map_err(ControlError::Dynamics)?;

@@ -40,7 +40,7 @@ use super::constrained_dynamics::{
     add_response, baumgarte_less_drift, check_input, dot, prepare, ConstraintData,
     ConstraintSettings, Contact, Poses,
 };
-use super::dense::{cholesky_in_place, cholesky_solve};
+use super::dense::{cholesky_in_place, cholesky_solve_unchecked};
 use super::kinematics::forward_kinematics_acceleration;
 use super::rnea::rnea;
 use crate::data::Data;
@@ -280,7 +280,7 @@ pub fn contact_inverse_dynamics<
     for r in 0..rows {
         cdata.lambda[r] -= dot(&cdata.jc[r], ddq_wanted);
     }
-    cholesky_solve(&cdata.delassus, rows, &mut cdata.lambda);
+    cholesky_solve_unchecked(&cdata.delassus, rows, &mut cdata.lambda);
     add_response(model, data, cdata, ddq_wanted);
     iddata.ddq = cdata.ddq;
 
@@ -307,7 +307,7 @@ pub fn contact_inverse_dynamics<
         quantity: Quantity::Contact,
         index: row,
     })?;
-    cholesky_solve(&aat, nu, &mut y);
+    cholesky_solve_unchecked(&aat, nu, &mut y);
     for r in 0..rows {
         cdata.lambda[r] = (0..nu).fold(S::ZERO, |acc, i| acc + cdata.jc[r][i] * y[i]);
     }

@@ -10,10 +10,12 @@
 //! let mut a: [[f64; 2]; 2] = [[4.0, 2.0], [2.0, 3.0]];
 //! cholesky_in_place(&mut a, 2, 0.0).expect("positive definite");
 //! let mut b: [f64; 2] = [2.0, 1.0];
-//! cholesky_solve(&a, 2, &mut b);
+//! cholesky_solve(&a, 2, &mut b).expect("a finite solution");
 //! assert!((b[0] - 0.5).abs() < 1e-15 && b[1].abs() < 1e-15);
 //! ```
 
+use crate::error::{Error, Quantity, Result};
+use crate::model::check_result;
 use crate::Scalar;
 
 /// The lower Cholesky factor `L` (`A = L Lᵀ`) of the leading `n × n` block
@@ -66,8 +68,51 @@ pub fn cholesky_in_place<S: Scalar, const N: usize>(
     Ok(())
 }
 
-/// Solves `L Lᵀ x = b` in place for the factor of [`cholesky_in_place`].
-pub fn cholesky_solve<S: Scalar, const N: usize>(l: &[[S; N]; N], n: usize, b: &mut [S; N]) {
+/// Solves `L Lᵀ x = b` in place for the factor of [`cholesky_in_place`]
+/// (its leading `n × n` block), `b`'s first `n` entries becoming `x`.
+///
+/// # Errors
+/// [`Error::TooManyConstraints`] for `n` above `N`;
+/// [`Error::NonFinite`] ([`Quantity::LinearSystem`], the row) for a
+/// non-finite entry of `b`, or of `L`'s rows, when `x` comes out
+/// non-finite; [`Error::NonFiniteResult`] when finite inputs overflow (a
+/// zero or tiny pivot of `L`). `b` then holds the partial solution. One
+/// finiteness test of `x` when all is well.
+pub fn cholesky_solve<S: Scalar, const N: usize>(
+    l: &[[S; N]; N],
+    n: usize,
+    b: &mut [S; N],
+) -> Result<()> {
+    if n > N {
+        return Err(Error::TooManyConstraints {
+            rows: n,
+            capacity: N,
+        });
+    }
+    // Where `b` is bad, kept as an index (the solve overwrites `b`, and an
+    // index is lighter on the stack than an error).
+    let bad_b = b[..n].iter().position(|x| !x.is_finite());
+    cholesky_solve_unchecked(l, n, b);
+    if check_result(&b[..n], Quantity::LinearSystem).is_err() {
+        let bad_l = (0..n).find(|&i| l[i][..=i].iter().any(|x| !x.is_finite()));
+        if let Some(row) = bad_b.or(bad_l) {
+            return Err(Error::NonFinite {
+                quantity: Quantity::LinearSystem,
+                index: row,
+            });
+        }
+        check_result(&b[..n], Quantity::LinearSystem)?;
+    }
+    Ok(())
+}
+
+/// [`cholesky_solve`] without its checks, for the constraint and
+/// inverse-kinematics solvers, which check what they form from `x`.
+pub(crate) fn cholesky_solve_unchecked<S: Scalar, const N: usize>(
+    l: &[[S; N]; N],
+    n: usize,
+    b: &mut [S; N],
+) {
     let n = n.min(N);
     for i in 0..n {
         let mut s = b[i];

@@ -338,7 +338,7 @@ fn general_world_inertia<S: Scalar>(i: &Inertia<S>, x: &Transform<S>) -> Inertia
 /// `m`, a motion of a frame whose pose is `o_m_f` given in the world
 /// (`ᵒX_f`-form, at the world's origin), expressed in `reference`.
 #[inline]
-pub fn express_world_motion<S: Scalar, G: FrameSpace>(
+pub(crate) fn express_world_motion<S: Scalar, G: FrameSpace>(
     o_m_f: &G::Transform<S>,
     m: &G::Motion<S>,
     reference: ReferenceFrame,

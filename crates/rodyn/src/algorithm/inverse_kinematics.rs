@@ -21,13 +21,14 @@
 //! caller names (a home posture, the last solution of a control loop) for
 //! what is left of the same budget, so the worst case stays one budget.
 
-use super::dense::{cholesky_in_place, cholesky_solve};
+use super::dense::{cholesky_in_place, cholesky_solve_unchecked};
 use super::frame_chain::{chain_jacobian, FrameChain};
 use super::frames::ReferenceFrame;
 use crate::data::Data;
 use crate::error::{Error, ModelProblem, Quantity, Result, Setting};
 use crate::frame::Frame;
 use crate::model::Model;
+use crate::space::VectorOps;
 /// The rotation vector of a rotation (moved to [`crate::spatial`], where
 /// the frame contacts' `log6` uses it too; kept here for existing paths).
 pub use crate::spatial::log3;
@@ -137,8 +138,37 @@ impl<S: Scalar> Default for IkSettings<S> {
 
 /// The pose error `e = log(ᶠMₜ)` of a frame at `o_m_f` against `target`
 /// (both world from frame): rad and m, in the frame's axes.
-#[must_use]
-pub fn pose_error<S: Scalar>(o_m_f: &Transform<S>, target: &Transform<S>) -> Motion<S> {
+///
+/// # Errors
+/// [`Error::InvalidPose`] naming the target (`Quantity::Target`) or the
+/// frame's pose (`Quantity::WorldPose`, index 0) when it is not a rigid
+/// motion (a non-finite entry, a rotation that is not orthonormal or is a
+/// reflection); [`Error::NonFiniteResult`] (`Quantity::Target`) when the
+/// translations' difference overflows.
+pub fn pose_error<S: Scalar>(o_m_f: &Transform<S>, target: &Transform<S>) -> Result<Motion<S>> {
+    target.validate().map_err(|problem| Error::InvalidPose {
+        quantity: Quantity::Target,
+        index: 0,
+        problem: ModelProblem::from(problem),
+    })?;
+    o_m_f.validate().map_err(|problem| Error::InvalidPose {
+        quantity: Quantity::WorldPose,
+        index: 0,
+        problem: ModelProblem::from(problem),
+    })?;
+    let e = pose_error_unchecked(o_m_f, target);
+    if !e.is_finite() {
+        return Err(Error::NonFiniteResult {
+            quantity: Quantity::Target,
+            index: 0,
+        });
+    }
+    Ok(e)
+}
+
+/// [`pose_error`] without its checks, for [`step`], which checks the frame
+/// and target once up front.
+fn pose_error_unchecked<S: Scalar>(o_m_f: &Transform<S>, target: &Transform<S>) -> Motion<S> {
     let rot = o_m_f.rot.tr_mul_mat(&target.rot);
     let lin = o_m_f.rot.tr_mul_vec(&(target.trans - o_m_f.trans));
     Motion::new(log3(&rot), lin)
@@ -200,7 +230,7 @@ pub fn step<S: Scalar, const NB: usize, const NQ: usize, const NV: usize>(
         ReferenceFrame::Local,
         &mut ws.frame_jacobian,
     )?;
-    let e = pose_error(&o_m_f, target);
+    let e = pose_error_unchecked(&o_m_f, target);
     let j = &ws.frame_jacobian;
     // A = J Jᵀ + λ² I (6×6, symmetric positive definite for λ > 0).
     let mut a = [[S::ZERO; 6]; 6];
@@ -500,7 +530,7 @@ fn column<S: Scalar>(m: &Motion<S>) -> [S; 6] {
 fn cholesky_solve_6<S: Scalar>(a: &mut [[S; 6]; 6], b: &[S; 6]) -> [S; 6] {
     let mut y = *b;
     match cholesky_in_place(a, 6, 0.0) {
-        Ok(()) => cholesky_solve(a, 6, &mut y),
+        Ok(()) => cholesky_solve_unchecked(a, 6, &mut y),
         Err(_) => y = [S::from_f64(f64::NAN); 6],
     }
     y

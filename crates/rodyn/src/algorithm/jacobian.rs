@@ -51,9 +51,9 @@ use super::frames::{
 };
 use super::kinematics::forward_kinematics_velocity;
 use crate::data::Data;
-use crate::error::Result;
+use crate::error::{Error, Quantity, Result};
 use crate::frame::Frame;
-use crate::model::Model;
+use crate::model::{check_finite, Model};
 use crate::space::{MotionVector, RigidTransform, Space, VectorOps};
 use crate::spatial::{Motion, Spatial};
 use crate::tuning::TURNED_POSES;
@@ -258,7 +258,7 @@ fn for_each_supporting_coordinate<
 /// [`joint_jacobians_time_variation`]); changes neither.
 ///
 /// # Errors
-/// [`Error::FrameBodyOutOfRange`](crate::Error::FrameBodyOutOfRange) when
+/// [`Error::FrameBodyOutOfRange`] when
 /// `frame.body` is not below `NB`; those of
 /// [`frame_placement`] for a frame whose
 /// placement is not finite.
@@ -300,7 +300,7 @@ pub fn frame_jacobian<
 /// [`joint_jacobians_time_variation`].
 ///
 /// # Errors
-/// [`Error::FrameBodyOutOfRange`](crate::Error::FrameBodyOutOfRange) when
+/// [`Error::FrameBodyOutOfRange`] when
 /// `frame.body` is not below `NB`; those of
 /// [`frame_placement`] for a frame whose
 /// placement is not finite.
@@ -337,6 +337,9 @@ pub fn frame_jacobian_time_variation<
 
 /// A 3-D Jacobian's columns as the 6×NV array Pinocchio returns: rows 0-2
 /// linear, rows 3-5 angular.
+///
+/// A reordering without arithmetic: finite columns give finite entries
+/// (whatever their size, 1e300 or subnormal), so it has nothing to report.
 #[must_use]
 pub fn to_linear_first<S: Scalar, const NV: usize>(columns: &[Motion<S>; NV]) -> [[S; NV]; 6] {
     let mut m = [[S::ZERO; NV]; 6];
@@ -350,14 +353,32 @@ pub fn to_linear_first<S: Scalar, const NV: usize>(columns: &[Motion<S>; NV]) ->
 }
 
 /// `Σₖ columns[k] v[k]`: a Jacobian times joint rates (or, with `dj`, `J̇ v`).
-#[must_use]
+///
+/// # Errors
+/// [`Error::NonFinite`] naming the first non-finite rate
+/// (`Quantity::Velocity`) or column (`Quantity::Jacobian`);
+/// [`Error::NonFiniteResult`] (`Quantity::Jacobian`) when finite inputs
+/// overflow. One finiteness test of the product when all is well.
 pub fn mul_rates<S: Scalar, const NV: usize, G: Space>(
     columns: &[G::Motion<S>; NV],
     v: &[S; NV],
-) -> G::Motion<S> {
+) -> Result<G::Motion<S>> {
     let mut acc = zero_motion::<S, G>();
     for k in 0..NV {
         acc += columns[k] * v[k];
     }
-    acc
+    if !acc.is_finite() {
+        check_finite(v, Quantity::Velocity)?;
+        if let Some(k) = columns.iter().position(|c| !c.is_finite()) {
+            return Err(Error::NonFinite {
+                quantity: Quantity::Jacobian,
+                index: k,
+            });
+        }
+        return Err(Error::NonFiniteResult {
+            quantity: Quantity::Jacobian,
+            index: 0,
+        });
+    }
+    Ok(acc)
 }

@@ -193,7 +193,7 @@ impl<S: Scalar, G: PointGeometry, const K: usize> Path<S, G, K> {
 /// Adds a path element's `Q = −T ∇L` and its derivatives to `out`, from
 /// the tension `T` and its partials `T_L` (`tension_dl`) and `T_L̇`
 /// (`tension_dv`).
-pub fn add_tension_derivatives<S: Scalar, const NV: usize>(
+pub(crate) fn add_tension_derivatives<S: Scalar, const NV: usize>(
     path: &PathDerivatives<S, NV>,
     v: &[S; NV],
     (tension, tension_dl, tension_dv): (S, S, S),

@@ -63,6 +63,7 @@ use crate::drive::geometry::PointGeometry;
 use crate::drive::path::PathKinematics;
 use crate::drive::{read_input, DriveForces, DriveState, ForceElement, Path};
 use crate::error::{DriveProblem, Error, Quantity, Result};
+use crate::model::{check_finite, check_result};
 use crate::Scalar;
 
 /// Cosine of the largest pennation angle (about 84.3°), as OpenSim's default.
@@ -184,15 +185,43 @@ impl<S: Scalar> ThelenParameters<S> {
         }
     }
 
-    /// Active force-length multiplier `f_L(l̃)`.
-    #[must_use]
-    pub fn active_force_length(&self, normalized_length: S) -> S {
+    /// Active force-length multiplier `f_L(l̃)` at the normalised fibre
+    /// length `l̃`.
+    ///
+    /// # Errors
+    /// The error of [`validate`](Self::validate) for a bad parameter;
+    /// [`Error::NonFinite`] with [`Quantity::MuscleCurve`] (argument 0) for
+    /// a non-finite `l̃`; [`Error::NonFiniteResult`] when the value
+    /// overflows.
+    pub fn active_force_length(&self, normalized_length: S) -> Result<S> {
+        let [f] = self.checked_curve(
+            [normalized_length],
+            [self.active_force_length_unchecked(normalized_length)],
+        )?;
+        Ok(f)
+    }
+
+    /// [`active_force_length`](Self::active_force_length) without its
+    /// checks, for the force computation (which checks its tension).
+    pub(crate) fn active_force_length_unchecked(&self, normalized_length: S) -> S {
         (-(normalized_length - S::ONE).squared() / self.active_shape_factor).exp()
     }
 
     /// Passive force-length multiplier `f_PE(l̃)`, zero for `l̃ ≤ 1`.
-    #[must_use]
-    pub fn passive_force_length(&self, normalized_length: S) -> S {
+    ///
+    /// # Errors
+    /// As [`active_force_length`](Self::active_force_length); `l̃` a little
+    /// past one is enough to overflow the scalar type.
+    pub fn passive_force_length(&self, normalized_length: S) -> Result<S> {
+        let [f] = self.checked_curve(
+            [normalized_length],
+            [self.passive_force_length_unchecked(normalized_length)],
+        )?;
+        Ok(f)
+    }
+
+    /// [`passive_force_length`](Self::passive_force_length) without its checks.
+    pub(crate) fn passive_force_length_unchecked(&self, normalized_length: S) -> S {
         if normalized_length <= S::ONE {
             return S::ZERO;
         }
@@ -203,8 +232,28 @@ impl<S: Scalar> ThelenParameters<S> {
 
     /// Force-velocity multiplier `f_V(ṽ)` and its slope `df_V/dṽ`, for the
     /// normalised fibre velocity `ṽ` (negative while shortening).
-    #[must_use]
-    pub fn force_velocity(&self, normalized_velocity: S) -> (S, S) {
+    ///
+    /// # Errors
+    /// As [`active_force_length`](Self::active_force_length), for `ṽ`.
+    pub fn force_velocity(&self, normalized_velocity: S) -> Result<(S, S)> {
+        let (f, slope) = self.force_velocity_unchecked(normalized_velocity);
+        let [f, slope] = self.checked_curve([normalized_velocity], [f, slope])?;
+        Ok((f, slope))
+    }
+
+    /// A curve's `values` at `arguments`, checked: the parameters
+    /// ([`validate`](Self::validate)), the arguments finite
+    /// ([`Error::NonFinite`]), then the values ([`Error::NonFiniteResult`]).
+    fn checked_curve<const A: usize, const N: usize>(
+        &self,
+        arguments: [S; A],
+        values: [S; N],
+    ) -> Result<[S; N]> {
+        checked_curve(arguments, values, || self.validate())
+    }
+
+    /// [`force_velocity`](Self::force_velocity) without its checks.
+    pub(crate) fn force_velocity_unchecked(&self, normalized_velocity: S) -> (S, S) {
         let v = normalized_velocity;
         let af = self.force_velocity_shape;
         if v <= -S::ONE {
@@ -261,9 +310,23 @@ impl<S: Scalar> ThelenParameters<S> {
     }
 
     /// Activation rate `ȧ` (1/s) for excitation `u` and activation `a`
-    /// (both clamped to `[0, 1]`).
-    #[must_use]
-    pub fn activation_rate(&self, excitation: S, activation: S) -> S {
+    /// (both clamped to `[0, 1]` in the time constant's shape).
+    ///
+    /// # Errors
+    /// The error of [`validate`](Self::validate) for a bad parameter;
+    /// [`Error::NonFinite`] with [`Quantity::MuscleCurve`] naming `u`
+    /// (argument 0) or `a` (argument 1); [`Error::NonFiniteResult`] when
+    /// the rate overflows.
+    pub fn activation_rate(&self, excitation: S, activation: S) -> Result<S> {
+        let [rate] = self.checked_curve(
+            [excitation, activation],
+            [self.activation_rate_unchecked(excitation, activation)],
+        )?;
+        Ok(rate)
+    }
+
+    /// [`activation_rate`](Self::activation_rate) without its checks.
+    pub(crate) fn activation_rate_unchecked(&self, excitation: S, activation: S) -> S {
         let u = excitation.max(S::ZERO).min(S::ONE);
         let a = activation.max(S::ZERO).min(S::ONE);
         let shape = S::from_f64(0.5) + S::from_f64(1.5) * a;
@@ -274,6 +337,22 @@ impl<S: Scalar> ThelenParameters<S> {
         };
         (u - activation) / tau
     }
+}
+
+/// A muscle curve's `values` at `arguments`, as its checked public form
+/// returns them: the error of `parameters` (the parameters' own check),
+/// then [`Error::NonFinite`] naming the first non-finite argument, then
+/// [`Error::NonFiniteResult`] naming the first non-finite value (0) or
+/// slope (1, 2).
+pub(crate) fn checked_curve<S: Scalar, const A: usize, const N: usize>(
+    arguments: [S; A],
+    values: [S; N],
+    parameters: impl FnOnce() -> Result<()>,
+) -> Result<[S; N]> {
+    parameters()?;
+    check_finite(&arguments, Quantity::MuscleCurve)?;
+    check_result(&values, Quantity::MuscleCurve)?;
+    Ok(values)
 }
 
 /// The state of a muscle's fibre and its tendon tension at one instant.
@@ -322,8 +401,10 @@ impl<S: Scalar, G: PointGeometry, const K: usize> ThelenMuscle<S, G, K> {
     }
 
     /// Activation rate `ȧ` for excitation `u` ([`ThelenParameters::activation_rate`]).
-    #[must_use]
-    pub fn activation_rate(&self, excitation: S, activation: S) -> S {
+    ///
+    /// # Errors
+    /// As [`ThelenParameters::activation_rate`].
+    pub fn activation_rate(&self, excitation: S, activation: S) -> Result<S> {
         self.params.activation_rate(excitation, activation)
     }
 
@@ -414,9 +495,9 @@ impl<S: Scalar, G: PointGeometry, const K: usize> ThelenMuscle<S, G, K> {
         let a = activation.max(S::ZERO).min(S::ONE);
         let scale = self.velocity_scale(a);
         let (l_norm, v_norm) = (g.fiber_length / l_opt, g.fiber_velocity / scale);
-        let f_l = p.active_force_length(l_norm);
+        let f_l = p.active_force_length_unchecked(l_norm);
         let df_l = f_l * S::from_f64(-2.0) * (l_norm - S::ONE) / p.active_shape_factor;
-        let f_pe = p.passive_force_length(l_norm);
+        let f_pe = p.passive_force_length_unchecked(l_norm);
         let df_pe = if l_norm <= S::ONE {
             S::ZERO
         } else {
@@ -424,7 +505,7 @@ impl<S: Scalar, G: PointGeometry, const K: usize> ThelenMuscle<S, G, K> {
             let strain = p.passive_strain_at_one;
             (k / strain) * (k * (l_norm - S::ONE) / strain).exp() / (k.exp() - S::ONE)
         };
-        let (f_v, df_v) = p.force_velocity(v_norm);
+        let (f_v, df_v) = p.force_velocity_unchecked(v_norm);
         let f0 = p.max_isometric_force;
         let fiber_force = a * f_l * f_v + f_pe;
         let tension = f0 * g.cos_pennation * fiber_force;
@@ -526,9 +607,9 @@ impl<S: Scalar, G: PointGeometry, const K: usize> ThelenMuscle<S, G, K> {
         let velocity_scale = self.velocity_scale(clamped);
         let v_norm = fiber_velocity / velocity_scale;
         let l_norm = fiber_length / l_opt;
-        let f_l = p.active_force_length(l_norm);
-        let f_pe = p.passive_force_length(l_norm);
-        let (f_v, df_v) = p.force_velocity(v_norm);
+        let f_l = p.active_force_length_unchecked(l_norm);
+        let f_pe = p.passive_force_length_unchecked(l_norm);
+        let (f_v, df_v) = p.force_velocity_unchecked(v_norm);
         let f0_cos = p.max_isometric_force * cos_pennation;
         let tension = f0_cos * (clamped * f_l * f_v + f_pe);
         // ṽ depends on a through the velocity scale: dṽ/da = -ṽ 0.75/(0.25 + 0.75 a).

@@ -44,7 +44,7 @@
 use crate::drive::derivatives::{add_tension_derivatives, DriveDerivativeState, DriveDerivatives};
 use crate::drive::geometry::PointGeometry;
 use crate::drive::muscle::{
-    MAX_NORMALIZED_FIBER_LENGTH, MIN_FIBER_LENGTH_FRACTION, MIN_PENNATION_COSINE,
+    checked_curve, MAX_NORMALIZED_FIBER_LENGTH, MIN_FIBER_LENGTH_FRACTION, MIN_PENNATION_COSINE,
 };
 use crate::drive::{read_input, DriveForces, DriveState, ForceElement, Path};
 use crate::error::{DriveProblem, Error, Quantity, Result};
@@ -140,19 +140,42 @@ fn asinh<S: Scalar>(x: S) -> S {
 
 /// The tendon force-length curve `f_T(l̃ᵀ) = c₁ exp(k_T (l̃ᵀ − c₂)) − c₃`
 /// (normalised tendon length `l̃ᵀ = lᵀ/lₛᵀ`) and its slope.
-#[must_use]
-pub fn tendon_force_length<S: Scalar>(normalized_tendon_length: S) -> (S, S) {
+///
+/// # Errors
+/// [`Error::NonFinite`] with [`Quantity::MuscleCurve`] (argument 0) for a
+/// non-finite `l̃ᵀ`; [`Error::NonFiniteResult`] when the exponential
+/// overflows (a tendon stretched to a few times its slack length).
+pub fn tendon_force_length<S: Scalar>(normalized_tendon_length: S) -> Result<(S, S)> {
+    let (f, slope) = tendon_force_length_unchecked(normalized_tendon_length);
+    let [f, slope] = checked_curve([normalized_tendon_length], [f, slope], || Ok(()))?;
+    Ok((f, slope))
+}
+
+/// [`tendon_force_length`] without its checks.
+fn tendon_force_length_unchecked<S: Scalar>(normalized_tendon_length: S) -> (S, S) {
     let [c1, c2, c3, k] = TENDON_FORCE_LENGTH.map(S::from_f64);
     let e = c1 * (k * (normalized_tendon_length - c2)).exp();
     (e - c3, k * e)
 }
 
 /// The inverse of [`tendon_force_length`]: the normalised tendon length
-/// at normalised tendon force `f_T` (greater than `−c₃`).
-#[must_use]
-pub fn tendon_length_from_force<S: Scalar>(normalized_tendon_force: S) -> S {
+/// at normalised tendon force `f_T`.
+///
+/// # Errors
+/// [`Error::NonFinite`] with [`Quantity::MuscleCurve`] (argument 0) for a
+/// non-finite `f_T`; [`Error::OutOfRange`] (argument 0) for `f_T ≤ −c₃`,
+/// a force the curve never reaches.
+pub fn tendon_length_from_force<S: Scalar>(normalized_tendon_force: S) -> Result<S> {
     let [c1, c2, c3, k] = TENDON_FORCE_LENGTH.map(S::from_f64);
-    ((normalized_tendon_force + c3) / c1).ln() / k + c2
+    let length = ((normalized_tendon_force + c3) / c1).ln() / k + c2;
+    match checked_curve([normalized_tendon_force], [length], || Ok(())) {
+        Ok([length]) => Ok(length),
+        Err(Error::NonFiniteResult { .. }) => Err(Error::OutOfRange {
+            quantity: Quantity::MuscleCurve,
+            index: 0,
+        }),
+        Err(e) => Err(e),
+    }
 }
 
 impl<S: Scalar> DeGrooteParameters<S> {
@@ -199,9 +222,33 @@ impl<S: Scalar> DeGrooteParameters<S> {
         }
     }
 
-    /// Active force-length multiplier `f_L(l̃)` and its slope `df_L/dl̃`.
-    #[must_use]
-    pub fn active_force_length(&self, normalized_length: S) -> (S, S) {
+    /// Active force-length multiplier `f_L(l̃)` and its slope `df_L/dl̃`
+    /// at the normalised fibre length `l̃`.
+    ///
+    /// # Errors
+    /// The error of [`validate`](Self::validate) for a bad parameter;
+    /// [`Error::NonFinite`] with [`Quantity::MuscleCurve`] (argument 0) for
+    /// a non-finite `l̃`; [`Error::NonFiniteResult`] when a value
+    /// overflows.
+    pub fn active_force_length(&self, normalized_length: S) -> Result<(S, S)> {
+        let (f, slope) = self.active_force_length_unchecked(normalized_length);
+        let [f, slope] = self.checked_curve([normalized_length], [f, slope])?;
+        Ok((f, slope))
+    }
+
+    /// A curve's `values` at `arguments`, checked as
+    /// [`active_force_length`](Self::active_force_length) says.
+    fn checked_curve<const A: usize, const N: usize>(
+        &self,
+        arguments: [S; A],
+        values: [S; N],
+    ) -> Result<[S; N]> {
+        checked_curve(arguments, values, || self.validate())
+    }
+
+    /// [`active_force_length`](Self::active_force_length) without its
+    /// checks, for the force computation (which checks its tension).
+    pub(crate) fn active_force_length_unchecked(&self, normalized_length: S) -> (S, S) {
         ACTIVE_FORCE_LENGTH
             .iter()
             .fold((S::ZERO, S::ZERO), |(f, df), &b| {
@@ -211,8 +258,18 @@ impl<S: Scalar> DeGrooteParameters<S> {
     }
 
     /// Passive force-length multiplier `f_PE(l̃)` and its slope.
-    #[must_use]
-    pub fn passive_force_length(&self, normalized_length: S) -> (S, S) {
+    ///
+    /// # Errors
+    /// As [`active_force_length`](Self::active_force_length); `l̃` a little
+    /// past one is enough to overflow the scalar type.
+    pub fn passive_force_length(&self, normalized_length: S) -> Result<(S, S)> {
+        let (f, slope) = self.passive_force_length_unchecked(normalized_length);
+        let [f, slope] = self.checked_curve([normalized_length], [f, slope])?;
+        Ok((f, slope))
+    }
+
+    /// [`passive_force_length`](Self::passive_force_length) without its checks.
+    pub(crate) fn passive_force_length_unchecked(&self, normalized_length: S) -> (S, S) {
         let k = self.passive_shape_factor;
         let strain = self.passive_strain_at_one;
         let scale = S::ONE / (k.exp() - S::ONE);
@@ -222,8 +279,17 @@ impl<S: Scalar> DeGrooteParameters<S> {
 
     /// Force-velocity multiplier `f_V(ṽ)` and its slope `df_V/dṽ`
     /// (`ṽ` negative while shortening).
-    #[must_use]
-    pub fn force_velocity(&self, normalized_velocity: S) -> (S, S) {
+    ///
+    /// # Errors
+    /// As [`active_force_length`](Self::active_force_length), for `ṽ`.
+    pub fn force_velocity(&self, normalized_velocity: S) -> Result<(S, S)> {
+        let (f, slope) = self.force_velocity_unchecked(normalized_velocity);
+        let [f, slope] = self.checked_curve([normalized_velocity], [f, slope])?;
+        Ok((f, slope))
+    }
+
+    /// [`force_velocity`](Self::force_velocity) without its checks.
+    pub(crate) fn force_velocity_unchecked(&self, normalized_velocity: S) -> (S, S) {
         let [d1, d2, d3, d4] = FORCE_VELOCITY.map(S::from_f64);
         let x = d2 * normalized_velocity + d3;
         (d1 * asinh(x) + d4, d1 * d2 / (x * x + S::ONE).sqrt())
@@ -231,19 +297,37 @@ impl<S: Scalar> DeGrooteParameters<S> {
 
     /// The inverse of [`force_velocity`](Self::force_velocity): the
     /// normalised fibre velocity at force-velocity multiplier `f_V`.
-    #[must_use]
-    pub fn velocity_from_force_multiplier(&self, force_velocity: S) -> S {
+    ///
+    /// # Errors
+    /// As [`active_force_length`](Self::active_force_length), for `f_V`
+    /// (the velocity overflows for an `f_V` far outside the curve's range).
+    pub fn velocity_from_force_multiplier(&self, force_velocity: S) -> Result<S> {
         let [d1, d2, d3, d4] = FORCE_VELOCITY.map(S::from_f64);
         let y = (force_velocity - d4) / d1;
         // sinh y = (eʸ − e⁻ʸ)/2.
         let sinh = (y.exp() - (-y).exp()) * S::from_f64(0.5);
-        (sinh - d3) / d2
+        let [v] = self.checked_curve([force_velocity], [(sinh - d3) / d2])?;
+        Ok(v)
     }
 
     /// Activation rate `ȧ` (1/s) at excitation `u` and activation `a`, and
     /// its partial derivatives `∂ȧ/∂u`, `∂ȧ/∂a` (neither input clamped).
-    #[must_use]
-    pub fn activation_rate_partials(&self, excitation: S, activation: S) -> (S, S, S) {
+    ///
+    /// # Errors
+    /// The error of [`validate`](Self::validate) for a bad parameter;
+    /// [`Error::NonFinite`] with [`Quantity::MuscleCurve`] naming `u`
+    /// (argument 0) or `a` (argument 1); [`Error::NonFiniteResult`] naming
+    /// the rate (0) or a partial (1, 2) when one overflows.
+    pub fn activation_rate_partials(&self, excitation: S, activation: S) -> Result<(S, S, S)> {
+        let (rate, d_du, d_da) = self.activation_rate_partials_unchecked(excitation, activation);
+        let [rate, d_du, d_da] =
+            self.checked_curve([excitation, activation], [rate, d_du, d_da])?;
+        Ok((rate, d_du, d_da))
+    }
+
+    /// [`activation_rate_partials`](Self::activation_rate_partials) without
+    /// its checks.
+    fn activation_rate_partials_unchecked(&self, excitation: S, activation: S) -> (S, S, S) {
         let c = S::from_f64;
         let gap = excitation - activation;
         let t = (self.activation_smoothing * gap).tanh();
@@ -267,9 +351,15 @@ impl<S: Scalar> DeGrooteParameters<S> {
     }
 
     /// Activation rate `ȧ` (1/s) at excitation `u` and activation `a`.
-    #[must_use]
-    pub fn activation_rate(&self, excitation: S, activation: S) -> S {
-        self.activation_rate_partials(excitation, activation).0
+    ///
+    /// # Errors
+    /// As [`activation_rate_partials`](Self::activation_rate_partials).
+    pub fn activation_rate(&self, excitation: S, activation: S) -> Result<S> {
+        let rate = self
+            .activation_rate_partials_unchecked(excitation, activation)
+            .0;
+        let [rate] = self.checked_curve([excitation, activation], [rate])?;
+        Ok(rate)
     }
 
     /// Checks every parameter: finite; forces, the tendon slack length,
@@ -356,8 +446,10 @@ impl<S: Scalar, G: PointGeometry, const K: usize> DeGrooteMuscle<S, G, K> {
     }
 
     /// Activation rate `ȧ` for excitation `u` ([`DeGrooteParameters::activation_rate`]).
-    #[must_use]
-    pub fn activation_rate(&self, excitation: S, activation: S) -> S {
+    ///
+    /// # Errors
+    /// As [`DeGrooteParameters::activation_rate`].
+    pub fn activation_rate(&self, excitation: S, activation: S) -> Result<S> {
         self.params.activation_rate(excitation, activation)
     }
 
@@ -443,9 +535,9 @@ impl<S: Scalar, G: PointGeometry, const K: usize> DeGrooteMuscle<S, G, K> {
             (l, cos, v, cos, dcos, lengthening_velocity * dcos, cos)
         };
         let (l_norm, v_norm) = (l / l_opt, v / v_scale);
-        let (f_l, df_l) = p.active_force_length(l_norm);
-        let (f_pe, df_pe) = p.passive_force_length(l_norm);
-        let (f_v, df_v) = p.force_velocity(v_norm);
+        let (f_l, df_l) = p.active_force_length_unchecked(l_norm);
+        let (f_pe, df_pe) = p.passive_force_length_unchecked(l_norm);
+        let (f_v, df_v) = p.force_velocity_unchecked(v_norm);
         let f0 = p.max_isometric_force;
         let fiber = a * f_l * f_v + f_pe;
         let dfiber_dl = (a * df_l * f_v + df_pe) * dl / l_opt + a * f_l * df_v * dv_dl / v_scale;

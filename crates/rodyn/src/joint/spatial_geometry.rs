@@ -25,6 +25,9 @@ impl Geometry for Spatial {
     fn cast_joint<S: Scalar, T: Scalar>(j: &Joint<S>) -> Option<Joint<T>> {
         j.cast()
     }
+    fn point_is_finite<S: Scalar>(p: &Vec3<S>) -> bool {
+        p.is_finite()
+    }
     fn cast_transform<S: Scalar, T: Scalar>(x: &Transform<S>) -> Transform<T> {
         x.cast()
     }

@@ -10,7 +10,7 @@ use crate::space::Space;
 use crate::Scalar;
 
 /// `∂q̈/∂w` (NV × NU, `out[i][k] = ∂q̈ᵢ/∂w_k`) at the state of the last
-/// [`aba`](crate::algorithm::aba::aba) call, one [`aba_response`] per input.
+/// [`aba`](crate::algorithm::aba::aba) call, one `aba_response` per input.
 ///
 /// Precondition: `aba` (or [`forward_dynamics_with_drives`] with
 /// [`Aba`]) ran at this `(q, v)`, so `data` holds its kinematics and

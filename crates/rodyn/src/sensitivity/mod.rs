@@ -9,7 +9,7 @@
 //! the accelerations that the input's force derivative alone would cause
 //! with zero velocity and no gravity (the bias terms `h` do not depend on
 //! `w`). ABA computes that in O(n) reusing the articulated quantities of
-//! the main pass ([`aba_response`]): the whole `NV × NU` matrix costs one
+//! the main pass (`aba_response`): the whole `NV × NU` matrix costs one
 //! extra pass per input, O(n·m), as in the first seed paper.
 //!
 //! Which derivative: `w` is the drive-input vector of [`crate::drive`]:
@@ -30,4 +30,4 @@ mod inputs;
 mod response;
 
 pub use inputs::{forward_dynamics_and_sensitivity, input_sensitivity};
-pub use response::aba_response;
+pub(crate) use response::aba_response;

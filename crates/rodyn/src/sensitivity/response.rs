@@ -19,7 +19,13 @@ use crate::Scalar;
 /// Symbols (Featherstone Table 7.1 with `v = 0`, `g = 0`): backward,
 /// `pᴬᵢ = -δfᵢ`, `uᵢ = δτᵢ - Sᵀ pᴬᵢ`, `pᴬ_λ += ˡⁱXᵢ* (pᴬᵢ + U D⁻¹ uᵢ)`;
 /// forward, `a'ᵢ = ⁱX_λ a_λ`, `q̈ᵢ = D⁻¹ (uᵢ - Uᵀ a'ᵢ)`, `aᵢ = a'ᵢ + S q̈ᵢ`.
-pub fn aba_response<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>(
+pub(crate) fn aba_response<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: Space,
+>(
     model: &Model<S, NB, NQ, NV, G>,
     data: &Data<S, NB, NV, G>,
     tau: &[S; NV],

@@ -22,8 +22,9 @@
 //!   configuration with [`Error::InvalidConfiguration`](crate::Error::InvalidConfiguration):
 //!   the drift is reported, not integrated into garbage.
 
+use crate::error::{Quantity, Result};
 use crate::joint::{Joint, JointModel};
-use crate::model::Model;
+use crate::model::{check_finite, check_result, Model};
 use crate::planar::{Planar, PlanarJoint};
 use crate::space::Space;
 use crate::spatial::Spatial;
@@ -55,8 +56,34 @@ pub trait ConfigurationRate: Space {
 }
 
 /// `q̇ = Q(q) v` for a whole model (NQ entries).
-#[must_use]
+///
+/// # Errors
+/// [`Error::NonFinite`](crate::Error::NonFinite) naming the first non-finite entry of `q` or `v`;
+/// [`Error::NonFiniteResult`](crate::Error::NonFiniteResult) (`Quantity::Configuration`, the entry) when
+/// finite inputs overflow. One finiteness test of `q̇` when all is well.
 pub fn configuration_rate<
+    S: Scalar,
+    const NB: usize,
+    const NQ: usize,
+    const NV: usize,
+    G: ConfigurationRate,
+>(
+    model: &Model<S, NB, NQ, NV, G>,
+    q: &[S; NQ],
+    v: &[S; NV],
+) -> Result<[S; NQ]> {
+    let q_dot = configuration_rate_unchecked(model, q, v);
+    if check_result(&q_dot, Quantity::Configuration).is_err() {
+        check_finite(q, Quantity::Configuration)?;
+        check_finite(v, Quantity::Velocity)?;
+        check_result(&q_dot, Quantity::Configuration)?;
+    }
+    Ok(q_dot)
+}
+
+/// [`configuration_rate`] without its checks, for the integrators (which
+/// check the state they step to).
+pub(crate) fn configuration_rate_unchecked<
     S: Scalar,
     const NB: usize,
     const NQ: usize,
@@ -87,7 +114,7 @@ pub fn configuration_rate<
 
 /// `q + q_dot dt`, coordinate by coordinate (no projection).
 #[must_use]
-pub fn add_scaled<S: Scalar, const N: usize>(q: &[S; N], q_dot: &[S; N], dt: S) -> [S; N] {
+pub(crate) fn add_scaled<S: Scalar, const N: usize>(q: &[S; N], q_dot: &[S; N], dt: S) -> [S; N] {
     core::array::from_fn(|k| q[k] + q_dot[k] * dt)
 }
 
@@ -132,7 +159,7 @@ pub(crate) fn displace<
     match update {
         ConfigurationUpdate::ExponentialMap => model.integrate_unvalidated(q, v, dt),
         ConfigurationUpdate::Embedded { renormalize } => {
-            let mut out = add_scaled(q, &configuration_rate(model, q, v), dt);
+            let mut out = add_scaled(q, &configuration_rate_unchecked(model, q, v), dt);
             if renormalize {
                 model.normalize_unvalidated(&mut out);
             }

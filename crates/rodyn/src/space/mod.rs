@@ -254,6 +254,8 @@ pub trait Geometry: Copy + Debug + PartialEq + 'static {
     fn cast_joint<S: Scalar, T: Scalar>(j: &Self::Joint<S>) -> Option<Self::Joint<T>>;
     /// Converts a transform's scalar type.
     fn cast_transform<S: Scalar, T: Scalar>(x: &Self::Transform<S>) -> Self::Transform<T>;
+    /// `true` when every coordinate of the point is finite.
+    fn point_is_finite<S: Scalar>(p: &Self::Point<S>) -> bool;
     /// Converts an inertia's scalar type.
     fn cast_inertia<S: Scalar, T: Scalar>(i: &Self::Inertia<S>) -> Self::Inertia<T>;
     /// Converts a motion's scalar type.

@@ -30,6 +30,9 @@ impl Geometry for Planar {
     fn cast_joint<S: Scalar, T: Scalar>(j: &PlanarJoint<S>) -> Option<PlanarJoint<T>> {
         Some(j.cast())
     }
+    fn point_is_finite<S: Scalar>(p: &Vec2<S>) -> bool {
+        p.is_finite()
+    }
     fn cast_transform<S: Scalar, T: Scalar>(x: &PlanarTransform<S>) -> PlanarTransform<T> {
         x.cast()
     }

@@ -9,7 +9,7 @@ use super::{
     ConstraintSettings, Contact,
 };
 use crate::algorithm::crba::{crba, crba_lower};
-use crate::algorithm::dense::cholesky_solve;
+use crate::algorithm::dense::cholesky_solve_unchecked;
 use crate::algorithm::forward_dynamics::bias_and_mass;
 use crate::algorithm::frame_chain::union;
 use crate::algorithm::frames::frame_placement;
@@ -85,7 +85,7 @@ pub(super) fn kkt_solve<
         row += n;
     }
     cdata.lambda = rhs;
-    cholesky_solve(&cdata.delassus, rows, &mut cdata.lambda);
+    cholesky_solve_unchecked(&cdata.delassus, rows, &mut cdata.lambda);
 
     // q̈ = L⁻¹ (D⁻¹ z + W λ): one sweep for the free motion and the
     // contacts' together.

@@ -50,7 +50,7 @@ pub(crate) use contact::baumgarte_less_drift;
 pub use contact::{constrained_rows, Contact};
 pub(crate) use kkt::{add_response, form_delassus, prepare, Poses};
 
-use super::dense::{cholesky_in_place, cholesky_solve};
+use super::dense::{cholesky_in_place, cholesky_solve_unchecked};
 use super::jacobian::JacobianData;
 use crate::data::Data;
 use crate::error::{Error, Quantity, Result, Setting};
@@ -344,7 +344,7 @@ pub fn constrained_forward_dynamics_with<
                 articulated::form_delassus(model, data, cdata, q, v, tau, contacts, settings)?;
             factor_delassus(cdata, contacts, settings.damping)?;
             let rows = cdata.rows.min(NC);
-            cholesky_solve(&cdata.delassus, rows, &mut cdata.lambda);
+            cholesky_solve_unchecked(&cdata.delassus, rows, &mut cdata.lambda);
             articulated::accelerations(cdata, &ddq0);
         }
     }
@@ -404,7 +404,7 @@ pub fn impulse_dynamics<
     for r in 0..rows {
         cdata.lambda[r] = -(S::ONE + restitution) * dot(&cdata.jc[r], v_before);
     }
-    cholesky_solve(&cdata.delassus, rows, &mut cdata.lambda);
+    cholesky_solve_unchecked(&cdata.delassus, rows, &mut cdata.lambda);
     // v⁺ = v⁻ + M⁻¹ J_cᵀ Λ.
     add_response(model, data, cdata, v_before);
     check_result(&cdata.lambda[..rows], Quantity::Contact)?;

@@ -1,6 +1,6 @@
 //! The [frame chain](super)'s functions in the book's form, one body and
 //! one column at a time: `ᵒMᵢ = ᵒM_λ ˡⁱMᵢ`, `ᵒJₖ = ᵒXᵢ Sₖ` moved by
-//! [`express_world_motion`], and the velocity pass with `J̇ v` from the
+//! `express_world_motion`, and the velocity pass with `J̇ v` from the
 //! frame's motion as [`frame_velocity`](crate::algorithm::frames::frame_velocity)
 //! and [`frame_classical_acceleration`](crate::algorithm::frames::frame_classical_acceleration)
 //! form it. For reading and for the tests, which hold the tuned forms to

@@ -7,7 +7,7 @@ use crate::error::Result;
 use crate::model::Model;
 use crate::sim::loads::AuxiliaryLoads;
 use crate::sim::manifold::{
-    add_scaled, configuration_rate, for_dynamics, ConfigurationRate, ConfigurationUpdate,
+    add_scaled, configuration_rate_unchecked, for_dynamics, ConfigurationRate, ConfigurationUpdate,
 };
 use crate::sim::state::State;
 use crate::Scalar;
@@ -85,7 +85,7 @@ impl Integrator for Rk4 {
             let (a_k, zr_k) =
                 derivatives(&method, model, data, loads, t + offset, &q_dyn, &v_k, &z_k)?;
             let r_k = if embedded {
-                configuration_rate(model, &q_k, &v_k)
+                configuration_rate_unchecked(model, &q_k, &v_k)
             } else {
                 [S::ZERO; NQ]
             };
