@@ -19,7 +19,7 @@ use rodyn::algorithm::inverse_kinematics::IkData;
 use rodyn::algorithm::jacobian::JacobianData;
 use rodyn::joint::{Axis, Joint};
 use rodyn::space::VectorOps;
-use rodyn::spatial::{Inertia, Motion, Sym3, Transform, Vec3};
+use rodyn::spatial::{Force, Inertia, Motion, Sym3, Transform, Vec3};
 use rodyn::{Data, Model};
 
 /// Most constrained rows a run-time call takes: six frame contacts or
@@ -78,6 +78,8 @@ pub(super) struct Scratch<const NB: usize, const NQ: usize, const NV: usize> {
     pub constraint: Box<ConstraintData<f64, NV, MAX_CONTACT_ROWS>>,
     pub ik: Box<IkData<f64, NV>>,
     pub columns: Box<[Motion<f64>; NV]>,
+    /// External forces per body (the drives'), zero between calls.
+    pub f_ext: Box<[Force<f64>; NB]>,
     pub q: [f64; NQ],
     pub v: [f64; NV],
     pub a: [f64; NV],
@@ -93,6 +95,7 @@ impl<const NB: usize, const NQ: usize, const NV: usize> Scratch<NB, NQ, NV> {
             constraint: Box::default(),
             ik: Box::default(),
             columns: Box::new([Motion::ZERO; NV]),
+            f_ext: Box::new([Force::ZERO; NB]),
             q: padded.model.neutral_configuration(),
             v: [0.0; NV],
             a: [0.0; NV],
