@@ -100,6 +100,8 @@
 
 #[macro_use]
 mod classes;
+#[macro_use]
+mod call;
 mod check;
 mod configuration;
 mod contacts;

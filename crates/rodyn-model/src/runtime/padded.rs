@@ -112,6 +112,17 @@ impl<const NB: usize, const NQ: usize, const NV: usize> Scratch<NB, NQ, NV> {
     pub fn set_v(&mut self, v: &[f64]) {
         self.v[..v.len()].copy_from_slice(v);
     }
+    /// A call's velocity-sized inputs in order: the first into `v`, the
+    /// second (an acceleration or a torque) into `a`.
+    #[inline(always)]
+    pub fn set_rates(&mut self, rates: &[&[f64]]) {
+        if let Some(v) = rates.first() {
+            self.set_v(v);
+        }
+        if let Some(a) = rates.get(1) {
+            self.set_a(a);
+        }
+    }
     /// `a` (an acceleration or a torque) into the second padded vector.
     #[inline(always)]
     pub fn set_a(&mut self, a: &[f64]) {
