@@ -21,10 +21,11 @@
 //! what clap's derive uses as a value parser (`#[arg(long)] dt:
 //! PositiveFinite`), and what a hand-written parser calls with `parse`.
 
+#[macro_use]
+mod number;
 mod count;
 mod no_arguments;
 mod non_negative;
-mod number;
 mod output;
 mod positive;
 pub mod probe;

@@ -1,8 +1,6 @@
 //! A finite number that is zero or positive.
 
 use crate::shown;
-use core::fmt;
-use core::str::FromStr;
 
 /// A number that is finite and not negative: what a friction coefficient
 /// or a coefficient of restitution must be, where zero means "none". NaN,
@@ -52,23 +50,7 @@ impl NonNegativeFinite {
     }
 }
 
-impl FromStr for NonNegativeFinite {
-    type Err = String;
-
-    fn from_str(s: &str) -> Result<Self, String> {
-        let x: f64 = s
-            .trim()
-            .parse()
-            .map_err(|_| format!("`{s}` is not a number"))?;
-        Self::new(x)
-    }
-}
-
-impl fmt::Display for NonNegativeFinite {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        self.0.fmt(f)
-    }
-}
+checked_number!(NonNegativeFinite);
 
 #[cfg(test)]
 mod tests {
