@@ -98,10 +98,8 @@ fn path_element<const K: usize>(
         ForceLaw::Spring {
             stiffness,
             rest_length,
-            cubic_stiffness,
-        } if cubic_stiffness == 0.0 => {
-            PathElement::Spring(LinearSpring::new(path, stiffness, rest_length))
-        }
+            cubic_stiffness: 0.0,
+        } => PathElement::Spring(LinearSpring::new(path, stiffness, rest_length)),
         ForceLaw::Spring {
             stiffness,
             rest_length,
