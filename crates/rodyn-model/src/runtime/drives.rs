@@ -436,7 +436,7 @@ impl RuntimeModel {
             return Err(bad);
         }
         let nb = self.nb();
-        let drive = &mut ws.drive;
+        let drive = ws.drive.get_or_insert_with(DriveScratch::new);
         dispatch!(&self.class, &mut ws.class, |m, s| {
             class_kinematics(m, s, q, v, nb, drive)
                 .map_err(|e| self.explain("drives (kinematics)", &e, &inputs))

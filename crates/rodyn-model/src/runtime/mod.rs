@@ -150,7 +150,8 @@ pub struct RuntimeModel {
 /// [`RuntimeModel::workspace`]: one per thread.
 pub struct Workspace {
     class: ClassScratch,
-    drive: drives::DriveScratch,
+    /// The drives' scratch, made by the first drive call.
+    drive: Option<drives::DriveScratch>,
 }
 
 impl RuntimeModel {
@@ -321,7 +322,7 @@ impl RuntimeModel {
     pub fn workspace(&self) -> Workspace {
         Workspace {
             class: self.class.scratch(),
-            drive: drives::DriveScratch::new(),
+            drive: None,
         }
     }
 
