@@ -441,8 +441,11 @@ impl RuntimeModel {
             class_kinematics(m, s, q, v, nb, drive)
                 .map_err(|e| self.explain("drives (kinematics)", &e, &inputs))
         })?;
+        // Only the file's entries are ever written: clearing them is enough
+        // (the whole workspace is a few kilobytes).
         let forces = &mut *drive.forces;
-        forces.clear();
+        forces.f_ext[..nb].fill(Force::ZERO);
+        forces.tau[..self.nv].fill(0.0);
         let state = DriveState {
             data: &drive.data,
             q,
