@@ -51,7 +51,8 @@ fn states(model: &RuntimeModel) -> Vec<[Vec<f64>; 4]> {
 
 fn measure(file: &str, args: &Args) -> Result<(), String> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
-    let model = RuntimeModel::from_file(&root.join("models").join(file)).map_err(|d| d.to_string())?;
+    let model =
+        RuntimeModel::from_file(&root.join("models").join(file)).map_err(|d| d.to_string())?;
     let (model, states) = (&model, &states(&model));
     let mut calls: [Box<dyn FnMut(usize) -> bool + '_>; 3] = [
         Box::new({
@@ -67,7 +68,9 @@ fn measure(file: &str, args: &Args) -> Result<(), String> {
             let mut out = vec![0.0; model.nv()];
             move |k| {
                 let [q, v, tau, w] = &states[k];
-                model.aba_with_drives(&mut ws, q, v, tau, w, &mut out).is_ok()
+                model
+                    .aba_with_drives(&mut ws, q, v, tau, w, &mut out)
+                    .is_ok()
             }
         }),
         Box::new({
@@ -75,7 +78,9 @@ fn measure(file: &str, args: &Args) -> Result<(), String> {
             let mut out = vec![0.0; model.nv()];
             move |k| {
                 let [q, v, _, w] = &states[k];
-                model.drive_generalized_forces(&mut ws, q, v, w, &mut out).is_ok()
+                model
+                    .drive_generalized_forces(&mut ws, q, v, w, &mut out)
+                    .is_ok()
             }
         }),
     ];
