@@ -325,9 +325,9 @@ pub fn run_file(
     }
     if let Some(w) = &dynamics.drive_inputs {
         println!(
-            "drives at zero input ({} input(s)): {}",
-            w.len(),
-            model.drive_names().join(", ")
+            "drives acting: {} (their {} input(s) at zero)",
+            model.drive_names().join(", "),
+            w.len()
         );
     }
     match trajectory.failure {
