@@ -37,6 +37,7 @@ mod compiled {
     include!(concat!(env!("OUT_DIR"), "/aibo.rs"));
     include!(concat!(env!("OUT_DIR"), "/solo12.rs"));
     include!(concat!(env!("OUT_DIR"), "/wheeled_arm.rs"));
+    include!(concat!(env!("OUT_DIR"), "/two_link_muscles.rs"));
 }
 
 /// Relative agreement: `|x - y|∞ ≤ 1e-12 max(1, |y|∞)`.
@@ -357,6 +358,142 @@ fn agree<const NB: usize, const NQ: usize, const NV: usize>(
             );
         }
     }
+}
+
+/// The run-time model's drives against the compiled module's elements:
+/// forward dynamics under the drives and the drives' generalized forces
+/// `τ_drive + Σ Jᵀ f_drive` (the compiled side's as `g(q) − RNEA(q, 0, 0, f)`),
+/// at seeded states and inputs `w` in `[0, 1]` (activations, currents in A).
+fn drives_agree<E, G, const NB: usize, const NQ: usize, const NV: usize>(
+    name: &str,
+    model: &Model<f64, NB, NQ, NV, G>,
+    elements: &E,
+    nu: usize,
+    runtime: &RuntimeModel,
+) where
+    G: rodyn::space::Space,
+    E: rodyn::drive::ForceElement<f64, G, NB, NV>,
+{
+    use rodyn::algorithm::forward_dynamics::Aba;
+    use rodyn::drive::{drive_forces, forward_dynamics_with_drives, DriveForces};
+    assert_eq!(runtime.nu(), nu, "{name}: drive inputs");
+    let mut ws = runtime.workspace();
+    let mut data: Box<Data<f64, NB, NV, G>> = Box::default();
+    let mut forces: Box<DriveForces<f64, G, NB, NV>> = Box::default();
+    let mut rng = Lcg(11);
+    for seed in 0..4 {
+        let what = |quantity: &str| format!("{name} seed {seed}: {quantity}");
+        let q: [f64; NQ] = runtime.random_configuration(seed).try_into().unwrap();
+        let v: [f64; NV] = rng.vector(NV).try_into().unwrap();
+        let tau: [f64; NV] = rng.vector(NV).try_into().unwrap();
+        let w: Vec<f64> = rng.vector(nu).iter().map(|x| 0.5 + 0.5 * x).collect();
+        let mut out = vec![0.0; NV];
+
+        runtime
+            .aba_with_drives(&mut ws, &q, &v, &tau, &w, &mut out)
+            .unwrap();
+        let ddq = forward_dynamics_with_drives::<Aba, _, _, _, NB, NQ, NV>(
+            model,
+            &mut data,
+            &q,
+            &v,
+            &tau,
+            elements,
+            &w,
+            &mut forces,
+        )
+        .unwrap();
+        assert_close(&what("aba with drives"), &out, ddq, TOLERANCE);
+
+        runtime
+            .drive_generalized_forces(&mut ws, &q, &v, &w, &mut out)
+            .unwrap();
+        drive_forces(model, &mut data, &q, &v, elements, &w, &mut forces).unwrap();
+        let zero = [0.0; NV];
+        let held = *gravity_torques(model, &mut data, &q).unwrap();
+        let pulled = rnea(model, &mut data, &q, &zero, &zero, Some(&forces.f_ext)).unwrap();
+        let reference: Vec<f64> = (0..NV)
+            .map(|k| forces.tau[k] + (held[k] - pulled[k]))
+            .collect();
+        assert!(
+            reference.iter().any(|x| x.abs() > 1e-3),
+            "{}: the drives pull",
+            what("generalized forces")
+        );
+        assert_close(&what("generalized forces"), &out, &reference, TOLERANCE);
+    }
+}
+
+#[test]
+fn pendulum_spring_agrees_with_the_compiled_drive() {
+    use compiled::pendulum as m;
+    let runtime = load("pendulum.toml");
+    assert_eq!(runtime.drive_names(), ["return_spring"]);
+    drives_agree(
+        "pendulum",
+        &m::MODEL_F64,
+        &m::RETURN_SPRING_F64,
+        m::NU,
+        &runtime,
+    );
+}
+
+#[test]
+fn panda_motors_agree_with_the_compiled_drives() {
+    use compiled::panda as m;
+    let runtime = load("panda.toml");
+    let motors = [
+        m::MOTOR1_F64,
+        m::MOTOR2_F64,
+        m::MOTOR3_F64,
+        m::MOTOR4_F64,
+        m::MOTOR5_F64,
+        m::MOTOR6_F64,
+        m::MOTOR7_F64,
+    ];
+    drives_agree("panda", &m::MODEL_F64, &motors, m::NU, &runtime);
+    assert_eq!(runtime.drive_input_names()[m::input::MOTOR3], "motor3");
+    for ((name, motor), compiled) in runtime.motors().iter().zip(&motors) {
+        assert_eq!(motor, compiled, "{name}");
+        assert_eq!(
+            motor.reflected_inertia().unwrap(),
+            compiled.reflected_inertia().unwrap(),
+            "{name}: reflected inertia"
+        );
+        assert_eq!(
+            motor.torque_per_current().unwrap(),
+            compiled.torque_per_current().unwrap(),
+            "{name}: torque per ampere"
+        );
+    }
+}
+
+/// The planar muscle arm runs at run time as its 3-D equivalent (joints
+/// about z, the same two coordinates): its muscles must pull the same.
+#[test]
+fn two_link_muscles_agree_with_the_compiled_drives() {
+    use compiled::two_link_muscles as m;
+    let runtime = load("two_link_muscles.toml");
+    let muscles = [m::M1_F64, m::M2_F64, m::M3_F64, m::M4_F64];
+    drives_agree("two_link_muscles", &m::MODEL_F64, &muscles, m::NU, &runtime);
+}
+
+#[test]
+fn drive_inputs_are_checked_by_name() {
+    let runtime = load("two_link_muscles.toml");
+    let mut ws = runtime.workspace();
+    let q = runtime.neutral();
+    let v = vec![0.0; runtime.nv()];
+    let mut out = vec![0.0; runtime.nv()];
+    let err = runtime
+        .drive_generalized_forces(&mut ws, &q, &v, &[0.5; 3], &mut out)
+        .unwrap_err();
+    assert_eq!(err.to_string(), "w has 3 entries, the model has nu = 4");
+    let err = runtime
+        .aba_with_drives(&mut ws, &q, &v, &v, &[0.5, 0.5, f64::NAN, 0.5], &mut out)
+        .unwrap_err();
+    assert_eq!(err.kind(), RuntimeErrorKind::InvalidInput);
+    assert_eq!(err.to_string(), "w[2] is NaN");
 }
 
 fn load(file: &str) -> RuntimeModel {

@@ -4,6 +4,8 @@
 //!
 //! - [`PositiveFinite`]: a step, a duration, a size in pixels, a time
 //!   budget; rejects NaN, infinities, zero, negatives and subnormals.
+//! - [`NonNegativeFinite`]: a friction coefficient, a coefficient of
+//!   restitution; rejects NaN, infinities and negatives, zero allowed.
 //! - [`Count`]: a whole number within stated bounds (rounds, calls, nodes).
 //! - [`step_count`]: the number of steps of a run, bounded.
 //! - [`writable_dir`] and [`writable_file`]: an output checked before a
@@ -19,9 +21,11 @@
 //! what clap's derive uses as a value parser (`#[arg(long)] dt:
 //! PositiveFinite`), and what a hand-written parser calls with `parse`.
 
+#[macro_use]
+mod number;
 mod count;
 mod no_arguments;
-mod number;
+mod non_negative;
 mod output;
 mod positive;
 pub mod probe;
@@ -30,6 +34,7 @@ mod steps;
 
 pub use count::Count;
 pub use no_arguments::no_arguments;
+pub use non_negative::NonNegativeFinite;
 pub use number::shown;
 pub use output::{writable_dir, writable_file};
 pub use positive::PositiveFinite;

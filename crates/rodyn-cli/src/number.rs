@@ -12,6 +12,31 @@ pub fn shown(x: f64) -> String {
     }
 }
 
+/// `FromStr` (a number, then the type's `new` check) and `Display` for a
+/// checked number type wrapping an `f64`, so that every such argument
+/// parses and prints alike.
+macro_rules! checked_number {
+    ($type:ident) => {
+        impl core::str::FromStr for $type {
+            type Err = String;
+
+            fn from_str(s: &str) -> Result<Self, String> {
+                let x: f64 = s
+                    .trim()
+                    .parse()
+                    .map_err(|_| format!("`{s}` is not a number"))?;
+                Self::new(x)
+            }
+        }
+
+        impl core::fmt::Display for $type {
+            fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+                self.0.fmt(f)
+            }
+        }
+    };
+}
+
 #[cfg(test)]
 mod tests {
     use super::shown;

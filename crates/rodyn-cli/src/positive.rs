@@ -1,8 +1,6 @@
 //! A positive, finite, normal number.
 
 use crate::shown;
-use core::fmt;
-use core::str::FromStr;
 
 /// A number that is positive, finite and normal: what a step, a duration
 /// or a size must be. NaN, the infinities, zero, negatives and subnormals
@@ -62,23 +60,7 @@ impl PositiveFinite {
     }
 }
 
-impl FromStr for PositiveFinite {
-    type Err = String;
-
-    fn from_str(s: &str) -> Result<Self, String> {
-        let x: f64 = s
-            .trim()
-            .parse()
-            .map_err(|_| format!("`{s}` is not a number"))?;
-        Self::new(x)
-    }
-}
-
-impl fmt::Display for PositiveFinite {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        self.0.fmt(f)
-    }
-}
+checked_number!(PositiveFinite);
 
 #[cfg(test)]
 mod tests {

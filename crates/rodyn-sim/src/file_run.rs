@@ -1,16 +1,20 @@
 //! `rodyn-sim run --model FILE`: a user's URDF or TOML file simulated with
 //! the run-time model (`rodyn_model::runtime::RuntimeModel`), no build
-//! step: free motion under gravity from the neutral configuration at rest,
-//! no joint torque. Contacts are not simulated for a file (the built-in
-//! scenes' grounds are written for their robots); a floating base falls.
+//! step: motion under gravity from the neutral configuration at rest, no
+//! joint torque, the file's drives (springs, dampers, muscles at zero
+//! activation, motors at zero current) acting when it has any, and with
+//! `--ground` a compliant floor under contact points (`ground.rs`), a
+//! floating base dropped onto it from `--drop-height`.
 //! Writes `<model>.csv` (t, q, v), `<model>.svg` (the first coordinates
 //! against time) and, with `--html`, the viewer page.
 
+use crate::ground::{Ground, GroundOptions};
 use crate::plot::{plot, Figure, Mark, Scale, Series};
 use crate::progress::Progress;
 use crate::scenario::{IntegratorKind, Method};
 use crate::trajectory::Trajectory;
 use clap::ValueEnum;
+use rodyn_model::description::JointType;
 use rodyn_model::runtime::{RuntimeError, RuntimeModel, Workspace};
 use rodyn_model::{view, visual, LoadOptions};
 use std::path::Path;
@@ -35,7 +39,16 @@ pub struct FileRun<'a> {
     pub integrator: IntegratorKind,
     /// Interval between samples (s).
     pub sample_interval: f64,
+    /// The ground (`--ground`), when asked for.
+    pub ground: Option<GroundOptions>,
+    /// Height (m) of the lowest contact point at the start, for a floating
+    /// base on the ground (`--drop-height`; `None`: the default).
+    pub drop_height: Option<f64>,
 }
+
+/// Height of the lowest contact point above the ground at the start of a
+/// floating model's run on the ground, when `--drop-height` is not given (m).
+pub const DEFAULT_DROP_HEIGHT: f64 = 0.05;
 
 /// The integrators a file run offers; the others name themselves.
 ///
@@ -54,16 +67,32 @@ pub fn check_integrator(integrator: IntegratorKind) -> Result<(), String> {
     }
 }
 
-/// The model, its workspace and the method: `q̈ = FD(q, v, 0)`.
+/// The model, its workspace and the method: `q̈ = FD(q, v, τ)` with `τ`
+/// the ground's and the drives' generalized forces.
 struct Dynamics<'m> {
     model: &'m RuntimeModel,
     ws: Workspace,
     method: Method,
+    ground: Option<Ground>,
+    /// The drives' inputs (all zero), when the file has drives.
+    drive_inputs: Option<Vec<f64>>,
     tau: Vec<f64>,
+    drive_tau: Vec<f64>,
 }
 
 impl Dynamics<'_> {
     fn acceleration(&mut self, q: &[f64], v: &[f64], out: &mut [f64]) -> Result<(), RuntimeError> {
+        self.tau.fill(0.0);
+        if let Some(ground) = &mut self.ground {
+            ground.add_torques(self.model, &mut self.ws, q, v, &mut self.tau)?;
+        }
+        if let Some(w) = &self.drive_inputs {
+            self.model
+                .drive_generalized_forces(&mut self.ws, q, v, w, &mut self.drive_tau)?;
+            for (t, d) in self.tau.iter_mut().zip(&self.drive_tau) {
+                *t += d;
+            }
+        }
         match self.method {
             Method::Aba => self.model.aba(&mut self.ws, q, v, &self.tau, out),
             Method::Crba => self
@@ -174,14 +203,42 @@ pub fn run_file(
     let steps = (run.duration / run.dt).round() as u64;
     let every = ((run.sample_interval / run.dt).round() as u64).max(1);
     let name = description.name.clone();
-    let progress = Progress::new("model file", steps);
+    let ground = run
+        .ground
+        .as_ref()
+        .map(|options| Ground::new(&model, options))
+        .transpose()?;
+    let floating = description
+        .bodies
+        .first()
+        .is_some_and(|b| b.joint == JointType::FreeFlyer);
+    if run.drop_height.is_some() && !(floating && ground.is_some()) {
+        return Err(format!(
+            "--drop-height: it places a floating base above the ground; {} {}",
+            run.model.display(),
+            if floating {
+                "runs without --ground"
+            } else {
+                "has a fixed base (a URDF takes --floating-base)"
+            }
+        )
+        .into());
+    }
     let mut dynamics = Dynamics {
         model: &model,
         ws: model.workspace(),
         method: run.method,
+        ground,
+        drive_inputs: (!model.drive_names().is_empty()).then(|| vec![0.0; model.nu()]),
         tau: vec![0.0; nv],
+        drive_tau: vec![0.0; nv],
     };
     let (mut q, mut v) = (model.neutral(), vec![0.0; nv]);
+    if let (Some(ground), true) = (&dynamics.ground, floating) {
+        let lowest = ground.lowest(&model, &mut dynamics.ws, &q)?;
+        q[2] += run.drop_height.unwrap_or(DEFAULT_DROP_HEIGHT) - lowest;
+    }
+    let progress = Progress::new("model file", steps);
     let mut trajectory = Trajectory::new(nq, nv);
     trajectory.steps = steps as usize;
     let record = |t: f64, q: &[f64], v: &[f64], trajectory: &mut Trajectory| {
@@ -221,7 +278,10 @@ pub fn run_file(
             Series::new(names[k].clone(), points, Mark::Line, k)
         })
         .collect();
-    let title = format!("{name} moving freely under gravity");
+    let title = match &dynamics.ground {
+        Some(_) => format!("{name} on the ground"),
+        None => format!("{name} moving freely under gravity"),
+    };
     let figure = Figure {
         title: &title,
         x_label: "time (s)",
@@ -234,7 +294,12 @@ pub fn run_file(
     if let Some(page) = html {
         let visuals = visual::read_visuals(&description, &[])?;
         let mut scene = view::scene(&model, visuals, &[]);
-        scene.name = format!("{} (free motion)", scene.name);
+        let what = if dynamics.ground.is_some() {
+            "on the ground"
+        } else {
+            "free motion"
+        };
+        scene.name = format!("{} ({what})", scene.name);
         scene.trajectory = Some(view::trajectory(
             &model,
             &trajectory.t,
@@ -251,6 +316,20 @@ pub fn run_file(
         csv.display(),
         svg.display()
     );
+    if let Some(ground) = &dynamics.ground {
+        println!(
+            "ground at z = 0 under {} point(s): {}",
+            ground.len(),
+            ground.frames()
+        );
+    }
+    if let Some(w) = &dynamics.drive_inputs {
+        println!(
+            "drives acting: {} (their {} input(s) at zero)",
+            model.drive_names().join(", "),
+            w.len()
+        );
+    }
     match trajectory.failure {
         Some(f) => {
             Err(format!("the simulation failed at {f} (the files hold the run up to there)").into())

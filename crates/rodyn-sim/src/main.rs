@@ -5,6 +5,7 @@
 //! rodyn-sim run quadruped-trot --duration 5 --dt 1e-3 --method aba --integrator rk4 --scalar f64 -o out/
 //! rodyn-sim run quadruped-trot --html out/trot.html
 //! rodyn-sim run --model models/urdf/panda.urdf --integrator rk4 -o out/
+//! rodyn-sim run --model models/solo12.toml --ground --duration 2 -o out/
 //! rodyn-sim chart -o docs/img/sim
 //! rodyn-sim chart --replot -o docs/img/sim
 //! rodyn-sim failures all -o docs/img/sim
@@ -14,6 +15,7 @@ mod animate;
 mod chart;
 mod failures;
 mod file_run;
+mod ground;
 mod models;
 mod plot;
 mod progress;
@@ -23,7 +25,10 @@ mod trajectory;
 mod viewer;
 
 use clap::{Parser, Subcommand};
-use rodyn_cli::{shown, step_count, writable_dir, writable_file, PositiveFinite};
+use ground::GroundOptions;
+use rodyn_cli::{
+    shown, step_count, writable_dir, writable_file, NonNegativeFinite, PositiveFinite,
+};
 use scenario::{IntegratorKind, Method, RunConfig, ScalarType, Scenario, MAX_DURATION, MAX_STEPS};
 use std::path::{Path, PathBuf};
 
@@ -41,19 +46,44 @@ struct Cli {
 #[derive(Subcommand)]
 enum Command {
     /// Run one scenario: CSV trajectory, SVG plot, GIF animation; or a
-    /// model file (--model), moving freely under gravity: CSV and plot.
+    /// model file (--model) under gravity, on the ground with --ground:
+    /// CSV and plot.
     Run {
         /// The scenario (or give --model).
         #[arg(required_unless_present = "model")]
         scenario: Option<Scenario>,
         /// A URDF or rodyn TOML file to simulate instead of a scenario,
-        /// read at run time: free motion under gravity from its neutral
-        /// configuration, no torques, no contacts.
+        /// read at run time: motion under gravity from its neutral
+        /// configuration, no joint torques, the file's drives at zero
+        /// input, contacts with --ground.
         #[arg(long, value_name = "FILE", conflicts_with = "scenario")]
         model: Option<PathBuf>,
         /// With --model: the URDF's root on a free-flyer.
         #[arg(long, requires = "model")]
         floating_base: bool,
+        /// With --model: a compliant ground at z = 0 under contact points
+        /// (--contact, else the file's [[contact]]s, else every frame); a
+        /// floating base starts above it (--drop-height).
+        #[arg(long, requires = "model")]
+        ground: bool,
+        /// With --ground: a frame whose origin touches the ground
+        /// (repeatable; replaces the file's contacts).
+        #[arg(long, value_name = "FRAME", requires = "ground")]
+        contact: Vec<String>,
+        /// With --ground: the Coulomb friction coefficient, zero or
+        /// positive, at most 10 (default: the file's, else 0.8).
+        #[arg(long, requires = "ground", allow_hyphen_values = true)]
+        friction: Option<NonNegativeFinite>,
+        /// With --ground: the coefficient of restitution of every contact
+        /// point, 0 (no bounce) to 1; sets its damping for an even share of
+        /// the model's mass (default: the file's damping, else 0).
+        #[arg(long, requires = "ground", allow_hyphen_values = true)]
+        restitution: Option<NonNegativeFinite>,
+        /// With --ground and a floating base: the height (m) of the lowest
+        /// contact point at the start, zero or positive, at most 100 m
+        /// (default 0.05).
+        #[arg(long, requires = "ground", allow_hyphen_values = true)]
+        drop_height: Option<NonNegativeFinite>,
         /// Simulated time (s), positive, at most 1000 s and 10 million steps.
         // Hyphen values reach the value parser, which names the argument,
         // instead of being taken for an unknown option.
@@ -112,6 +142,11 @@ fn main() {
             scenario: None,
             model: Some(model),
             floating_base,
+            ground,
+            contact,
+            friction,
+            restitution,
+            drop_height,
             duration,
             dt,
             method,
@@ -128,6 +163,12 @@ fn main() {
                 method,
                 integrator,
                 sample_interval: 0.01,
+                ground: ground.then(|| GroundOptions {
+                    contacts: contact,
+                    friction: friction.map(NonNegativeFinite::get),
+                    restitution: restitution.map(NonNegativeFinite::get),
+                }),
+                drop_height: drop_height.map(NonNegativeFinite::get),
             };
             check_file_run(&run, scalar, &out, html.as_deref())
                 .and_then(|()| file_run::run_file(&run, &out, html.as_deref()))
@@ -203,6 +244,11 @@ fn check_run(
     check_output(out)
 }
 
+/// The largest `--friction` a run takes.
+const MAX_FRICTION: f64 = 10.0;
+/// The largest `--drop-height` (m) a run takes.
+const MAX_DROP_HEIGHT: f64 = 100.0;
+
 /// Refuses a file run's settings the run-time model cannot honour, the
 /// limits of [`check_run`], and an unreadable model file, before any work.
 fn check_file_run(
@@ -215,6 +261,33 @@ fn check_file_run(
         return Err("--scalar: a model file runs in f64 (the run-time model's scalar)".into());
     }
     file_run::check_integrator(run.integrator)?;
+    if let Some(ground) = &run.ground {
+        for (option, value, max, what) in [
+            (
+                "--friction",
+                ground.friction,
+                MAX_FRICTION,
+                "a friction coefficient",
+            ),
+            (
+                "--restitution",
+                ground.restitution,
+                1.0,
+                "a coefficient of restitution",
+            ),
+        ] {
+            if let Some(x) = value {
+                NonNegativeFinite(x)
+                    .at_most(max, what)
+                    .map_err(|e| format!("{option}: {e}"))?;
+            }
+        }
+    }
+    if let Some(h) = run.drop_height {
+        NonNegativeFinite(h)
+            .at_most(MAX_DROP_HEIGHT, "a drop height (m)")
+            .map_err(|e| format!("--drop-height: {e}"))?;
+    }
     if !run.model.is_file() {
         return Err(format!("--model {}: no such file", run.model.display()).into());
     }

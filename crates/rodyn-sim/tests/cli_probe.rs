@@ -48,7 +48,13 @@ const SUBCOMMANDS: [&str; 3] = ["run", "chart", "failures"];
 /// The numeric options of each subcommand.
 fn numeric(subcommand: &str) -> &'static [&'static str] {
     match subcommand {
-        "run" => &["--duration", "--dt"],
+        "run" => &[
+            "--duration",
+            "--dt",
+            "--friction",
+            "--restitution",
+            "--drop-height",
+        ],
         _ => &[],
     }
 }
@@ -59,6 +65,7 @@ fn other(subcommand: &str) -> &'static [&'static str] {
         "run" => &[
             "[SCENARIO]",
             "--model",
+            "--contact",
             "--method",
             "--integrator",
             "--scalar",
@@ -90,7 +97,7 @@ fn every_option_is_probed() {
 fn numeric_options_refuse_hostile_values() {
     let scratch = Scratch::new("numeric");
     let out = scratch.path();
-    for option in numeric("run") {
+    for option in ["--duration", "--dt"] {
         assert_refuses_hostile_values(
             exe(),
             &NumericOption {
@@ -101,6 +108,81 @@ fn numeric_options_refuse_hostile_values() {
             },
         );
     }
+}
+
+/// The ground's numbers, on a short run of the Panda on the ground: zero
+/// is a frictionless floor, a dead bounce and a drop from the ground.
+#[test]
+fn ground_options_refuse_hostile_values() {
+    let scratch = Scratch::new("ground");
+    let out = scratch.path();
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let panda = root.join("models/urdf/panda.urdf");
+    let panda = panda.to_str().unwrap();
+    let before = [
+        "run",
+        "--model",
+        panda,
+        "--floating-base",
+        "--ground",
+        "--duration",
+        "0.002",
+        "-o",
+        out,
+    ];
+    for option in ["--friction", "--restitution", "--drop-height"] {
+        assert_refuses_hostile_values(
+            exe(),
+            &NumericOption {
+                option,
+                before: &before,
+                after: &[],
+                accepts: &["0", "5e-324"],
+            },
+        );
+    }
+    let refused = |args: &[&str], naming: &str, words: &str| {
+        let mut all = before.to_vec();
+        all.extend(args);
+        let outcome = assert_refused(exe(), &all, naming);
+        assert!(
+            outcome.stderr.contains(words),
+            "{args:?}: {}",
+            outcome.stderr
+        );
+    };
+    refused(&["--restitution", "1.5"], "--restitution", "above 1");
+    refused(&["--friction", "11"], "--friction", "above 10");
+    refused(
+        &["--contact", "no_such_frame"],
+        "--contact no_such_frame",
+        "panda_link7",
+    );
+    refused(
+        &["--contact", "panda_link7", "--contact", "panda_link7"],
+        "--contact panda_link7",
+        "twice",
+    );
+    // The ground's options need the ground, and a drop needs a floating base.
+    assert_refused(
+        exe(),
+        &["run", "--model", panda, "--friction", "0.5", "-o", out],
+        "--ground",
+    );
+    assert_refused(
+        exe(),
+        &[
+            "run",
+            "--model",
+            panda,
+            "--ground",
+            "--drop-height",
+            "0.1",
+            "-o",
+            out,
+        ],
+        "--drop-height",
+    );
 }
 
 #[test]

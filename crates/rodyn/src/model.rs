@@ -119,13 +119,7 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, 
         inertias: [Inertia<S>; NB],
         gravity: Motion<S>,
     ) -> Result<Self> {
-        let topology = Topology::try_new(
-            parents,
-            joints.map(|j| j.const_nq()),
-            joints.map(|j| j.const_nv()),
-            NQ,
-        )
-        .map_err(topology_error)?;
+        let topology = Self::try_topology(parents, &joints)?;
         let constrained_configuration = joints.iter().any(|j| j.const_constrains_configuration());
         Ok(Self {
             topology,
@@ -200,13 +194,7 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, 
         inertias: [PlanarInertia<S>; NB],
         gravity: PlanarMotion<S>,
     ) -> Result<Self> {
-        let topology = Topology::try_new(
-            parents,
-            joints.map(|j| j.const_nq()),
-            joints.map(|j| j.const_nv()),
-            NQ,
-        )
-        .map_err(topology_error)?;
+        let topology = Self::try_topology(parents, &joints)?;
         Ok(
             Self::assemble(topology, joints, placements, inertias, gravity)
                 .with_unconstrained_configuration(),
@@ -217,6 +205,17 @@ impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize> Model<S, NB, 
 impl<S: Scalar, const NB: usize, const NQ: usize, const NV: usize, G: Space>
     Model<S, NB, NQ, NV, G>
 {
+    /// The tree of `joints` under `parents` laid out for `NQ`, checked:
+    /// the run-time constructors' ([`Model::try_new`],
+    /// [`Model::try_new_planar`]) shared first step.
+    fn try_topology(
+        parents: [Option<usize>; NB],
+        joints: &[G::Joint<S>; NB],
+    ) -> Result<Topology<NB, NV>> {
+        Topology::try_new(parents, joints.map(|j| j.nq()), joints.map(|j| j.nv()), NQ)
+            .map_err(topology_error)
+    }
+
     /// Assembles a model from a checked topology and the joints it was laid
     /// out for, panicking where [`Self::try_from_parts`] returns an error.
     ///

@@ -1,7 +1,6 @@
 //! Configurations: the neutral one, random ones, integration on the
 //! joints' manifolds, and the body poses the drawing tools read.
 
-use super::check::Input;
 use super::{RuntimeError, RuntimeModel, Workspace};
 use crate::description::JointType;
 use rodyn::algorithm::kinematics::forward_kinematics;
@@ -96,37 +95,18 @@ impl RuntimeModel {
         dt: f64,
         out: &mut [f64],
     ) -> Result<(), RuntimeError> {
-        self.check_q(q)?;
-        self.check_nv("v", v)?;
-        super::check::length("out", out.len(), self.nq, "nq")?;
-        if !dt.is_finite() {
-            return Err(RuntimeError::invalid_input(format!("dt is {dt}")));
-        }
-        dispatch!(&self.class, &mut ws.class, |m, s| {
-            let s = &mut **s;
-            s.set_q(q);
-            s.set_v(v);
-            match m.model.integrate(&s.q, &s.v, dt) {
-                Ok(next) => {
-                    out.copy_from_slice(&next[..self.nq]);
+        class_call!(self, ws, "integrate",
+            inputs: [q, "v" => v],
+            checks: [
+                super::check::length("out", out.len(), self.nq, "nq"),
+                if dt.is_finite() {
                     Ok(())
-                }
-                Err(e) => Err(self.explain(
-                    "integrate",
-                    &e,
-                    &[
-                        Input {
-                            name: "q",
-                            values: q,
-                        },
-                        Input {
-                            name: "v",
-                            values: v,
-                        },
-                    ],
-                )),
-            }
-        })
+                } else {
+                    Err(RuntimeError::invalid_input(format!("dt is {dt}")))
+                },
+            ],
+            |m, s| m.model.integrate(&s.q, &s.v, dt)
+                .map(|next| out.copy_from_slice(&next[..self.nq])))
     }
 
     /// The padded configuration of a configuration in the file's own
@@ -178,21 +158,11 @@ impl RuntimeModel {
         let q = self.configuration_from_file_layout(file_q);
         let mut ws = self.workspace();
         let nb = self.nb();
-        dispatch!(&self.class, &mut ws.class, |m, s| {
-            let s = &mut **s;
-            s.set_q(&q);
-            match forward_kinematics(&m.model, &mut s.data, &s.q) {
-                Ok(()) => Ok(s.data.o_m_i[..nb].to_vec()),
-                Err(e) => Err(self.explain(
-                    "forward kinematics",
-                    &e,
-                    &[Input {
-                        name: "q",
-                        values: &q,
-                    }],
-                )),
-            }
-        })
+        class_call!(self, ws, "forward kinematics",
+            inputs: [&q],
+            checks: [],
+            |m, s| forward_kinematics(&m.model, &mut s.data, &s.q)
+                .map(|()| s.data.o_m_i[..nb].to_vec()))
     }
 
     /// World positions of every endpoint at the body poses `o_m_i`.

@@ -1,7 +1,6 @@
 //! Dynamics under rigid contacts (Pinocchio's `constraintDynamics`) and
 //! impacts (`impulseDynamics`), contacts named by frame.
 
-use super::check::Input;
 use super::padded::MAX_CONTACT_ROWS;
 use super::{RuntimeError, RuntimeModel, Workspace};
 use rodyn::algorithm::constrained_dynamics::{
@@ -129,54 +128,21 @@ impl RuntimeModel {
         ddq_out: &mut [f64],
         lambda_out: &mut [f64],
     ) -> Result<(), RuntimeError> {
-        self.check_q(q)?;
-        self.check_nv("v", v)?;
-        self.check_nv("tau", tau)?;
-        self.check_nv("ddq_out", ddq_out)?;
-        self.check_lambda("lambda_out", contacts, lambda_out)?;
-        let (held, n) = self.held(contacts)?;
         let settings = ConstraintSettings::default();
-        dispatch!(&self.class, &mut ws.class, |m, s| {
-            let s = &mut **s;
-            s.set_q(q);
-            s.set_v(v);
-            s.set_a(tau);
-            let result = constrained_forward_dynamics(
-                &m.model,
-                &mut s.data,
-                &mut s.constraint,
-                &s.q,
-                &s.v,
-                &s.a,
-                &held[..n],
-                &settings,
-            );
-            match result {
-                Ok((ddq, lambda)) => {
-                    ddq_out.copy_from_slice(&ddq[..ddq_out.len()]);
-                    lambda_out.copy_from_slice(lambda);
-                    Ok(())
-                }
-                Err(e) => Err(self.explain(
-                    "constrained dynamics",
-                    &e,
-                    &[
-                        Input {
-                            name: "q",
-                            values: q,
-                        },
-                        Input {
-                            name: "v",
-                            values: v,
-                        },
-                        Input {
-                            name: "tau",
-                            values: tau,
-                        },
-                    ],
-                )),
-            }
-        })
+        class_call!(self, ws, "constrained dynamics",
+        inputs: [q, "v" => v, "tau" => tau],
+        checks: [
+            self.check_nv("ddq_out", ddq_out),
+            self.check_lambda("lambda_out", contacts, lambda_out),
+        ],
+        let (held, n) = self.held(contacts)?;
+        |m, s| constrained_forward_dynamics(
+            &m.model, &mut s.data, &mut s.constraint, &s.q, &s.v, &s.a, &held[..n], &settings,
+        )
+        .map(|(ddq, lambda)| {
+            ddq_out.copy_from_slice(&ddq[..ddq_out.len()]);
+            lambda_out.copy_from_slice(lambda);
+        }))
     }
 
     /// The velocity just after an impact of `contacts` at `q`, arriving
@@ -199,51 +165,31 @@ impl RuntimeModel {
         v_after: &mut [f64],
         impulses: &mut [f64],
     ) -> Result<(), RuntimeError> {
-        self.check_q(q)?;
-        self.check_nv("v_before", v_before)?;
-        self.check_nv("v_after", v_after)?;
-        self.check_lambda("impulses", contacts, impulses)?;
-        if !(0.0..=1.0).contains(&restitution) {
-            return Err(RuntimeError::invalid_input(format!(
-                "restitution is {restitution}, it must be in [0, 1]"
-            )));
-        }
+        class_call!(self, ws, "impulse dynamics",
+        inputs: [q, "v_before" => v_before],
+        checks: [
+            self.check_nv("v_after", v_after),
+            self.check_lambda("impulses", contacts, impulses),
+            check_restitution(restitution),
+        ],
         let (held, n) = self.held(contacts)?;
-        dispatch!(&self.class, &mut ws.class, |m, s| {
-            let s = &mut **s;
-            s.set_q(q);
-            s.set_v(v_before);
-            let result = impulse_dynamics(
-                &m.model,
-                &mut s.data,
-                &mut s.constraint,
-                &s.q,
-                &s.v,
-                &held[..n],
-                restitution,
-                0.0,
-            );
-            match result {
-                Ok((v_plus, lambda)) => {
-                    v_after.copy_from_slice(&v_plus[..v_after.len()]);
-                    impulses.copy_from_slice(lambda);
-                    Ok(())
-                }
-                Err(e) => Err(self.explain(
-                    "impulse dynamics",
-                    &e,
-                    &[
-                        Input {
-                            name: "q",
-                            values: q,
-                        },
-                        Input {
-                            name: "v_before",
-                            values: v_before,
-                        },
-                    ],
-                )),
-            }
-        })
+        |m, s| impulse_dynamics(
+            &m.model, &mut s.data, &mut s.constraint, &s.q, &s.v, &held[..n], restitution, 0.0,
+        )
+        .map(|(v_plus, lambda)| {
+            v_after.copy_from_slice(&v_plus[..v_after.len()]);
+            impulses.copy_from_slice(lambda);
+        }))
+    }
+}
+
+/// `Ok` for a coefficient of restitution in `[0, 1]`.
+fn check_restitution(restitution: f64) -> Result<(), RuntimeError> {
+    if (0.0..=1.0).contains(&restitution) {
+        Ok(())
+    } else {
+        Err(RuntimeError::invalid_input(format!(
+            "restitution is {restitution}, it must be in [0, 1]"
+        )))
     }
 }

@@ -1,6 +1,5 @@
 //! Inverse and forward dynamics, the mass matrix, energies.
 
-use super::check::Input;
 use super::padded::{Padded, Scratch};
 use super::{copy_matrix, RuntimeError, RuntimeModel, Workspace};
 use rodyn::algorithm::aba::aba;
@@ -8,13 +7,6 @@ use rodyn::algorithm::crba::crba_planned;
 use rodyn::algorithm::energy::{kinetic_energy, potential_energy};
 use rodyn::algorithm::forward_dynamics::Crba;
 use rodyn::algorithm::rnea::{gravity_torques, nonlinear_effects, rnea};
-
-fn q_input(q: &[f64]) -> Input<'_> {
-    Input {
-        name: "q",
-        values: q,
-    }
-}
 
 impl RuntimeModel {
     /// Inverse dynamics (RNEA): `τ = M(q) a + h(q, v)` into `tau`.
@@ -30,37 +22,11 @@ impl RuntimeModel {
         a: &[f64],
         tau: &mut [f64],
     ) -> Result<(), RuntimeError> {
-        self.check_q(q)?;
-        self.check_nv("v", v)?;
-        self.check_nv("a", a)?;
-        self.check_nv("tau", tau)?;
-        dispatch!(&self.class, &mut ws.class, |m, s| {
-            let s = &mut **s;
-            s.set_q(q);
-            s.set_v(v);
-            s.set_a(a);
-            match rnea(&m.model, &mut s.data, &s.q, &s.v, &s.a, None) {
-                Ok(out) => {
-                    tau.copy_from_slice(&out[..tau.len()]);
-                    Ok(())
-                }
-                Err(e) => Err(self.explain(
-                    "rnea",
-                    &e,
-                    &[
-                        q_input(q),
-                        Input {
-                            name: "v",
-                            values: v,
-                        },
-                        Input {
-                            name: "a",
-                            values: a,
-                        },
-                    ],
-                )),
-            }
-        })
+        class_call!(self, ws, "rnea",
+            inputs: [q, "v" => v, "a" => a],
+            checks: [self.check_nv("tau", tau)],
+            |m, s| rnea(&m.model, &mut s.data, &s.q, &s.v, &s.a, None)
+                .map(|out| tau.copy_from_slice(&out[..tau.len()])))
     }
 
     /// Forward dynamics (ABA): `q̈ = M(q)⁻¹ (τ − h(q, v))` into `a_out`.
@@ -75,37 +41,11 @@ impl RuntimeModel {
         tau: &[f64],
         a_out: &mut [f64],
     ) -> Result<(), RuntimeError> {
-        self.check_q(q)?;
-        self.check_nv("v", v)?;
-        self.check_nv("tau", tau)?;
-        self.check_nv("a_out", a_out)?;
-        dispatch!(&self.class, &mut ws.class, |m, s| {
-            let s = &mut **s;
-            s.set_q(q);
-            s.set_v(v);
-            s.set_a(tau);
-            match aba(&m.model, &mut s.data, &s.q, &s.v, &s.a, None) {
-                Ok(out) => {
-                    a_out.copy_from_slice(&out[..a_out.len()]);
-                    Ok(())
-                }
-                Err(e) => Err(self.explain(
-                    "aba",
-                    &e,
-                    &[
-                        q_input(q),
-                        Input {
-                            name: "v",
-                            values: v,
-                        },
-                        Input {
-                            name: "tau",
-                            values: tau,
-                        },
-                    ],
-                )),
-            }
-        })
+        class_call!(self, ws, "aba",
+            inputs: [q, "v" => v, "tau" => tau],
+            checks: [self.check_nv("a_out", a_out)],
+            |m, s| aba(&m.model, &mut s.data, &s.q, &s.v, &s.a, None)
+                .map(|out| a_out.copy_from_slice(&out[..a_out.len()])))
     }
 
     /// Forward dynamics by CRBA and the sparse `Lᵀ D L` solve (the same
@@ -121,45 +61,11 @@ impl RuntimeModel {
         tau: &[f64],
         a_out: &mut [f64],
     ) -> Result<(), RuntimeError> {
-        self.check_q(q)?;
-        self.check_nv("v", v)?;
-        self.check_nv("tau", tau)?;
-        self.check_nv("a_out", a_out)?;
-        dispatch!(&self.class, &mut ws.class, |m, s| {
-            let s = &mut **s;
-            s.set_q(q);
-            s.set_v(v);
-            s.set_a(tau);
-            match Crba::forward_dynamics_planned(
-                &m.model,
-                &m.plan,
-                &mut s.data,
-                &s.q,
-                &s.v,
-                &s.a,
-                None,
-            ) {
-                Ok(out) => {
-                    a_out.copy_from_slice(&out[..a_out.len()]);
-                    Ok(())
-                }
-                Err(e) => Err(self.explain(
-                    "forward dynamics (CRBA)",
-                    &e,
-                    &[
-                        q_input(q),
-                        Input {
-                            name: "v",
-                            values: v,
-                        },
-                        Input {
-                            name: "tau",
-                            values: tau,
-                        },
-                    ],
-                )),
-            }
-        })
+        class_call!(self, ws, "forward dynamics (CRBA)",
+            inputs: [q, "v" => v, "tau" => tau],
+            checks: [self.check_nv("a_out", a_out)],
+            |m, s| Crba::forward_dynamics_planned(&m.model, &m.plan, &mut s.data, &s.q, &s.v, &s.a, None)
+                .map(|out| a_out.copy_from_slice(&out[..a_out.len()])))
     }
 
     /// The joint-space inertia matrix `M(q)` (CRBA, rotor inertias
@@ -173,12 +79,11 @@ impl RuntimeModel {
         q: &[f64],
         m_out: &mut [f64],
     ) -> Result<(), RuntimeError> {
-        self.check_q(q)?;
-        self.check_matrix("m_out", m_out, self.nv)?;
         let nv = self.nv;
-        dispatch!(&self.class, &mut ws.class, |m, s| {
-            class_crba(m, s, q, nv, m_out).map_err(|e| self.explain("crba", &e, &[q_input(q)]))
-        })
+        class_call!(self, ws, "crba",
+            inputs: [q],
+            checks: [self.check_matrix("m_out", m_out, nv)],
+            |m, s| class_crba(m, s, nv, m_out))
     }
 
     /// The generalized gravity `g(q)` (the torques that hold `q` at rest)
@@ -192,19 +97,11 @@ impl RuntimeModel {
         q: &[f64],
         out: &mut [f64],
     ) -> Result<(), RuntimeError> {
-        self.check_q(q)?;
-        self.check_nv("out", out)?;
-        dispatch!(&self.class, &mut ws.class, |m, s| {
-            let s = &mut **s;
-            s.set_q(q);
-            match gravity_torques(&m.model, &mut s.data, &s.q) {
-                Ok(g) => {
-                    out.copy_from_slice(&g[..out.len()]);
-                    Ok(())
-                }
-                Err(e) => Err(self.explain("gravity", &e, &[q_input(q)])),
-            }
-        })
+        class_call!(self, ws, "gravity",
+            inputs: [q],
+            checks: [self.check_nv("out", out)],
+            |m, s| gravity_torques(&m.model, &mut s.data, &s.q)
+                .map(|g| out.copy_from_slice(&g[..out.len()])))
     }
 
     /// The nonlinear effects `h(q, v)`: Coriolis, centrifugal and gravity
@@ -219,31 +116,11 @@ impl RuntimeModel {
         v: &[f64],
         out: &mut [f64],
     ) -> Result<(), RuntimeError> {
-        self.check_q(q)?;
-        self.check_nv("v", v)?;
-        self.check_nv("out", out)?;
-        dispatch!(&self.class, &mut ws.class, |m, s| {
-            let s = &mut **s;
-            s.set_q(q);
-            s.set_v(v);
-            match nonlinear_effects(&m.model, &mut s.data, &s.q, &s.v, None) {
-                Ok(h) => {
-                    out.copy_from_slice(&h[..out.len()]);
-                    Ok(())
-                }
-                Err(e) => Err(self.explain(
-                    "nonlinear effects",
-                    &e,
-                    &[
-                        q_input(q),
-                        Input {
-                            name: "v",
-                            values: v,
-                        },
-                    ],
-                )),
-            }
-        })
+        class_call!(self, ws, "nonlinear effects",
+            inputs: [q, "v" => v],
+            checks: [self.check_nv("out", out)],
+            |m, s| nonlinear_effects(&m.model, &mut s.data, &s.q, &s.v, None)
+                .map(|h| out.copy_from_slice(&h[..out.len()])))
     }
 
     /// Kinetic energy `½ vᵀ M v` (J), rotor inertias included.
@@ -256,26 +133,10 @@ impl RuntimeModel {
         q: &[f64],
         v: &[f64],
     ) -> Result<f64, RuntimeError> {
-        self.check_q(q)?;
-        self.check_nv("v", v)?;
-        dispatch!(&self.class, &mut ws.class, |m, s| {
-            let s = &mut **s;
-            s.set_q(q);
-            s.set_v(v);
-            kinetic_energy(&m.model, &mut s.data, &s.q, &s.v).map_err(|e| {
-                self.explain(
-                    "kinetic energy",
-                    &e,
-                    &[
-                        q_input(q),
-                        Input {
-                            name: "v",
-                            values: v,
-                        },
-                    ],
-                )
-            })
-        })
+        class_call!(self, ws, "kinetic energy",
+            inputs: [q, "v" => v],
+            checks: [],
+            |m, s| kinetic_energy(&m.model, &mut s.data, &s.q, &s.v))
     }
 
     /// Potential energy of gravity (J), zero at the world's origin.
@@ -283,29 +144,24 @@ impl RuntimeModel {
     /// # Errors
     /// As [`rnea`](Self::rnea).
     pub fn potential_energy(&self, ws: &mut Workspace, q: &[f64]) -> Result<f64, RuntimeError> {
-        self.check_q(q)?;
-        dispatch!(&self.class, &mut ws.class, |m, s| {
-            let s = &mut **s;
-            s.set_q(q);
-            potential_energy(&m.model, &mut s.data, &s.q)
-                .map_err(|e| self.explain("potential energy", &e, &[q_input(q)]))
-        })
+        class_call!(self, ws, "potential energy",
+            inputs: [q],
+            checks: [],
+            |m, s| potential_energy(&m.model, &mut s.data, &s.q))
     }
 }
 
-/// One class's CRBA, `q` in and the file's `nv × nv` block of `M` out
-/// (`m_out` holds `nv²` entries). A function of its own per class rather than
+/// One class's CRBA on the `q` already copied in, the file's `nv × nv`
+/// block of `M` out (`m_out` holds `nv²` entries). A function of its own per class rather than
 /// code inlined into the dispatch: each class's pass is then optimised as
 /// a unit, as the compiled model's is.
 #[inline(never)]
 fn class_crba<const NB: usize, const NQ: usize, const NV: usize>(
     m: &Padded<NB, NQ, NV>,
     s: &mut Scratch<NB, NQ, NV>,
-    q: &[f64],
     nv: usize,
     m_out: &mut [f64],
 ) -> rodyn::Result<()> {
-    s.set_q(q);
     let mass = crba_planned(&m.model, &m.plan, &mut s.data, &s.q)?;
     copy_matrix(&mass[..nv], nv, m_out);
     Ok(())

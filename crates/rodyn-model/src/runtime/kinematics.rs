@@ -1,7 +1,6 @@
 //! Frames, Jacobians and their time variation, the centre of mass and the
 //! centroidal map.
 
-use super::check::Input;
 use super::{RuntimeError, RuntimeModel, Workspace};
 use rodyn::algorithm::centroidal::centroidal_map;
 use rodyn::algorithm::energy::center_of_mass;
@@ -67,19 +66,12 @@ impl RuntimeModel {
         out: &mut [f64; 16],
     ) -> Result<(), RuntimeError> {
         let f = self.frame(frame)?;
-        self.check_q(q)?;
-        dispatch!(&self.class, &mut ws.class, |m, s| {
-            let s = &mut **s;
-            s.set_q(q);
-            let inputs = [Input {
-                name: "q",
-                values: q,
-            }];
-            forward_kinematics(&m.model, &mut s.data, &s.q)
+        class_call!(self, ws, "frame placement",
+            inputs: [q],
+            checks: [],
+            |m, s| forward_kinematics(&m.model, &mut s.data, &s.q)
                 .and_then(|()| frame_placement(&s.data, f))
-                .map(|o_m_f| homogeneous(&o_m_f, out))
-                .map_err(|e| self.explain("frame placement", &e, &inputs))
-        })
+                .map(|o_m_f| homogeneous(&o_m_f, out)))
     }
 
     /// The Jacobian of `frame` at `q` in `reference` into `out`: `6 × nv`,
@@ -97,27 +89,12 @@ impl RuntimeModel {
         out: &mut [f64],
     ) -> Result<(), RuntimeError> {
         let f = self.frame(frame)?;
-        self.check_q(q)?;
-        self.check_matrix("out", out, 6)?;
         let nv = self.nv;
-        dispatch!(&self.class, &mut ws.class, |m, s| {
-            let s = &mut **s;
-            s.set_q(q);
-            match frame_jacobian_from_q(&m.model, &s.q, f, reference.rodyn(), &mut s.columns) {
-                Ok(_) => {
-                    linear_first_rows(&s.columns[..], nv, out);
-                    Ok(())
-                }
-                Err(e) => Err(self.explain(
-                    "frame Jacobian",
-                    &e,
-                    &[Input {
-                        name: "q",
-                        values: q,
-                    }],
-                )),
-            }
-        })
+        class_call!(self, ws, "frame Jacobian",
+            inputs: [q],
+            checks: [self.check_matrix("out", out, 6)],
+            |m, s| frame_jacobian_from_q(&m.model, &s.q, f, reference.rodyn(), &mut s.columns)
+                .map(|_| linear_first_rows(&s.columns[..], nv, out)))
     }
 
     /// The time variation `J̇(q, v)` of `frame`'s Jacobian in `reference`
@@ -136,47 +113,22 @@ impl RuntimeModel {
         out: &mut [f64],
     ) -> Result<(), RuntimeError> {
         let f = self.frame(frame)?;
-        self.check_q(q)?;
-        self.check_nv("v", v)?;
-        self.check_matrix("out", out, 6)?;
         let nv = self.nv;
-        dispatch!(&self.class, &mut ws.class, |m, s| {
-            let s = &mut **s;
-            s.set_q(q);
-            s.set_v(v);
-            let result =
-                joint_jacobians_time_variation(&m.model, &mut s.data, &mut s.jacobians, &s.q, &s.v)
-                    .and_then(|()| {
-                        frame_jacobian_time_variation(
-                            &m.model,
-                            &s.data,
-                            &s.jacobians,
-                            f,
-                            reference.rodyn(),
-                            &mut s.columns,
-                        )
-                    });
-            match result {
-                Ok(()) => {
-                    linear_first_rows(&s.columns[..], nv, out);
-                    Ok(())
-                }
-                Err(e) => Err(self.explain(
-                    "frame Jacobian time variation",
-                    &e,
-                    &[
-                        Input {
-                            name: "q",
-                            values: q,
-                        },
-                        Input {
-                            name: "v",
-                            values: v,
-                        },
-                    ],
-                )),
-            }
-        })
+        class_call!(self, ws, "frame Jacobian time variation",
+            inputs: [q, "v" => v],
+            checks: [self.check_matrix("out", out, 6)],
+            |m, s| joint_jacobians_time_variation(&m.model, &mut s.data, &mut s.jacobians, &s.q, &s.v)
+                .and_then(|()| {
+                    frame_jacobian_time_variation(
+                        &m.model,
+                        &s.data,
+                        &s.jacobians,
+                        f,
+                        reference.rodyn(),
+                        &mut s.columns,
+                    )
+                })
+                .map(|()| linear_first_rows(&s.columns[..], nv, out)))
     }
 
     /// The centre of mass at `q`, world frame (m).
@@ -189,25 +141,11 @@ impl RuntimeModel {
         q: &[f64],
         out: &mut [f64; 3],
     ) -> Result<(), RuntimeError> {
-        self.check_q(q)?;
-        dispatch!(&self.class, &mut ws.class, |m, s| {
-            let s = &mut **s;
-            s.set_q(q);
-            match center_of_mass(&m.model, &mut s.data, &s.q) {
-                Ok((c, _mass)) => {
-                    *out = [c.x, c.y, c.z];
-                    Ok(())
-                }
-                Err(e) => Err(self.explain(
-                    "centre of mass",
-                    &e,
-                    &[Input {
-                        name: "q",
-                        values: q,
-                    }],
-                )),
-            }
-        })
+        class_call!(self, ws, "centre of mass",
+            inputs: [q],
+            checks: [],
+            |m, s| center_of_mass(&m.model, &mut s.data, &s.q)
+                .map(|(c, _mass)| *out = [c.x, c.y, c.z]))
     }
 
     /// The centroidal momentum map `A_g(q)` into `out`: `6 × nv`,
@@ -222,30 +160,16 @@ impl RuntimeModel {
         q: &[f64],
         out: &mut [f64],
     ) -> Result<(), RuntimeError> {
-        self.check_q(q)?;
-        self.check_matrix("out", out, 6)?;
         let nv = self.nv;
-        dispatch!(&self.class, &mut ws.class, |m, s| {
-            let s = &mut **s;
-            s.set_q(q);
-            match centroidal_map(&m.model, &mut s.data, &mut s.centroidal, &s.q) {
-                Ok(()) => {
-                    for (k, column) in s.centroidal.ag[..nv].iter().enumerate() {
-                        for (r, x) in column.to_linear_first().into_iter().enumerate() {
-                            out[r * nv + k] = x;
-                        }
-                    }
-                    Ok(())
+        class_call!(self, ws, "centroidal map",
+        inputs: [q],
+        checks: [self.check_matrix("out", out, 6)],
+        |m, s| centroidal_map(&m.model, &mut s.data, &mut s.centroidal, &s.q).map(|()| {
+            for (k, column) in s.centroidal.ag[..nv].iter().enumerate() {
+                for (r, x) in column.to_linear_first().into_iter().enumerate() {
+                    out[r * nv + k] = x;
                 }
-                Err(e) => Err(self.explain(
-                    "centroidal map",
-                    &e,
-                    &[Input {
-                        name: "q",
-                        values: q,
-                    }],
-                )),
             }
-        })
+        }))
     }
 }

@@ -30,7 +30,11 @@
 //! [`inverse_kinematics`](RuntimeModel::inverse_kinematics),
 //! [`integrate`](RuntimeModel::integrate) and
 //! [`set_gravity`](RuntimeModel::set_gravity) (a URDF has no gravity).
-//! Drives (motors, muscles) are not offered at run time yet.
+//! The file's drives (springs, dampers, muscles, motors) run at run time
+//! too: [`aba_with_drives`](RuntimeModel::aba_with_drives),
+//! [`drive_generalized_forces`](RuntimeModel::drive_generalized_forces),
+//! their inputs [`drive_input_names`](RuntimeModel::drive_input_names) and
+//! the [`motors`](RuntimeModel::motors).
 //!
 //! # Conventions (the same as the compiled model's)
 //!
@@ -96,10 +100,13 @@
 
 #[macro_use]
 mod classes;
+#[macro_use]
+mod call;
 mod check;
 mod configuration;
 mod contacts;
 mod derivatives;
+mod drives;
 mod dynamics;
 mod error;
 mod inverse_kinematics;
@@ -109,6 +116,7 @@ mod padded;
 mod skeleton;
 
 pub use contacts::{contact_rows, ContactSpec};
+pub use drives::MAX_PATH_POINTS;
 pub use error::{RuntimeError, RuntimeErrorKind};
 pub use kinematics::Reference;
 pub use legacy::{PaddedModel, PaddedRuntimeModel, MAX_BODIES, MAX_FREE_FLYERS, MAX_NQ, MAX_NV};
@@ -134,6 +142,7 @@ pub struct RuntimeModel {
     nv: usize,
     neutral: Vec<f64>,
     gravity: [f64; 3],
+    drives: drives::Drives,
 }
 
 /// A [`RuntimeModel`]'s scratch memory (rodyn's `Data` and the algorithms'
@@ -141,6 +150,8 @@ pub struct RuntimeModel {
 /// [`RuntimeModel::workspace`]: one per thread.
 pub struct Workspace {
     class: ClassScratch,
+    /// The drives' scratch, made by the first drive call.
+    drive: Option<drives::DriveScratch>,
 }
 
 impl RuntimeModel {
@@ -212,6 +223,13 @@ impl RuntimeModel {
             .map(|b| b.joint_name.clone())
             .collect();
         let gravity = description.gravity;
+        let drives = drives::Drives::new(&description).map_err(|message| {
+            let location = description
+                .bodies
+                .first()
+                .map_or_else(|| Location::start_of(Path::new("")), |b| b.location.clone());
+            Diagnostic::error(location, message)
+        })?;
         let mut model = Self {
             class,
             description,
@@ -221,6 +239,7 @@ impl RuntimeModel {
             nv,
             neutral: Vec::new(),
             gravity,
+            drives,
         };
         model.neutral = model.compute_neutral();
         Ok(model)
@@ -303,6 +322,7 @@ impl RuntimeModel {
     pub fn workspace(&self) -> Workspace {
         Workspace {
             class: self.class.scratch(),
+            drive: None,
         }
     }
 

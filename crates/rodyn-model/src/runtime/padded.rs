@@ -19,7 +19,7 @@ use rodyn::algorithm::inverse_kinematics::IkData;
 use rodyn::algorithm::jacobian::JacobianData;
 use rodyn::joint::{Axis, Joint};
 use rodyn::space::VectorOps;
-use rodyn::spatial::{Inertia, Motion, Sym3, Transform, Vec3};
+use rodyn::spatial::{Force, Inertia, Motion, Sym3, Transform, Vec3};
 use rodyn::{Data, Model};
 
 /// Most constrained rows a run-time call takes: six frame contacts or
@@ -78,6 +78,8 @@ pub(super) struct Scratch<const NB: usize, const NQ: usize, const NV: usize> {
     pub constraint: Box<ConstraintData<f64, NV, MAX_CONTACT_ROWS>>,
     pub ik: Box<IkData<f64, NV>>,
     pub columns: Box<[Motion<f64>; NV]>,
+    /// External forces per body (the drives'), zero between calls.
+    pub f_ext: Box<[Force<f64>; NB]>,
     pub q: [f64; NQ],
     pub v: [f64; NV],
     pub a: [f64; NV],
@@ -93,6 +95,7 @@ impl<const NB: usize, const NQ: usize, const NV: usize> Scratch<NB, NQ, NV> {
             constraint: Box::default(),
             ik: Box::default(),
             columns: Box::new([Motion::ZERO; NV]),
+            f_ext: Box::new([Force::ZERO; NB]),
             q: padded.model.neutral_configuration(),
             v: [0.0; NV],
             a: [0.0; NV],
@@ -108,6 +111,17 @@ impl<const NB: usize, const NQ: usize, const NV: usize> Scratch<NB, NQ, NV> {
     #[inline(always)]
     pub fn set_v(&mut self, v: &[f64]) {
         self.v[..v.len()].copy_from_slice(v);
+    }
+    /// A call's velocity-sized inputs in order: the first into `v`, the
+    /// second (an acceleration or a torque) into `a`.
+    #[inline(always)]
+    pub fn set_rates(&mut self, rates: &[&[f64]]) {
+        if let Some(v) = rates.first() {
+            self.set_v(v);
+        }
+        if let Some(a) = rates.get(1) {
+            self.set_a(a);
+        }
     }
     /// `a` (an acceleration or a torque) into the second padded vector.
     #[inline(always)]
