@@ -13,6 +13,7 @@ from conftest import assert_close, get_pair
 IK_CASES = [
     ("panda", "panda_hand"),
     ("ur5", "tool0"),
+    ("kinova", "j2s6s200_end_effector"),  # continuous joints: (cos, sin) in and out
     ("solo12", "FL_FOOT"),
 ]
 
