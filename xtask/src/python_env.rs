@@ -99,13 +99,13 @@ pub fn ensure() -> Result<Venv> {
     Ok(venv)
 }
 
-/// A Python 3.10 or newer with the `venv` module (the wheel's floor).
+/// A Python 3.9 or newer with the `venv` module (the wheel's floor).
 fn find_python() -> Result<PathBuf> {
     for name in ["python3", "python"] {
         let ok = Command::new(name)
             .args([
                 "-c",
-                "import sys, venv, ensurepip; sys.exit(sys.version_info < (3, 10))",
+                "import sys, venv, ensurepip; sys.exit(sys.version_info < (3, 9))",
             ])
             .status()
             .is_ok_and(|s| s.success());
@@ -114,7 +114,7 @@ fn find_python() -> Result<PathBuf> {
         }
     }
     bail!(
-        "the tests need Python 3.10 or newer with venv and pip; on Debian or Ubuntu: \
+        "the tests need Python 3.9 or newer with venv and pip; on Debian or Ubuntu: \
          sudo apt-get install python3 python3-venv python3-pip"
     )
 }
