@@ -67,3 +67,26 @@ class Model:
     def constrained_dynamics(
         self, q: Vector, v: Vector, tau: Vector, contacts: Sequence[Contact]
     ) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
+    def kinetic_energy(self, q: Vector, v: Vector) -> float: ...
+    def potential_energy(self, q: Vector) -> float: ...
+    def frame_jacobian_time_variation(
+        self,
+        q: Vector,
+        v: Vector,
+        name: str,
+        reference: str = "local_world_aligned",
+        *,
+        out: Optional[npt.NDArray[np.float64]] = None,
+    ) -> npt.NDArray[np.float64]: ...
+    def impulse_dynamics(
+        self, q: Vector, v: Vector, contacts: Sequence[Contact], restitution: float = 0.0
+    ) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]: ...
+    def integrate(self, q: Vector, v: Vector) -> npt.NDArray[np.float64]: ...
+    def inverse_kinematics(
+        self,
+        name: str,
+        target: npt.ArrayLike,
+        q0: Vector,
+        tolerance: float = 1e-10,
+        max_iterations: int = 100,
+    ) -> npt.NDArray[np.float64]: ...

@@ -99,7 +99,7 @@ pub fn ensure() -> Result<Venv> {
     Ok(venv)
 }
 
-/// A Python 3.9 or newer with the `venv` module.
+/// A Python 3.9 or newer with the `venv` module (the wheel's floor).
 fn find_python() -> Result<PathBuf> {
     for name in ["python3", "python"] {
         let ok = Command::new(name)

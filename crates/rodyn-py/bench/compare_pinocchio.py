@@ -17,7 +17,10 @@ table gives each variant's best round, in microseconds per call, Python's
 call overhead included, and rodyn's time over Pinocchio's. The best round
 rather than the median, as `timeit` advises: on a shared machine the other
 rounds measure the other processes (a median moved by 10-20x between two
-runs on a machine with a load of 11 on two cores).
+runs on a machine with a load of 11 on two cores). The last column is the
+median over rounds of the ratio within each round: rodyn's and
+Pinocchio's batches of one round run a few milliseconds apart, so a slow
+moment of the machine moves both sides of that ratio alike.
 """
 
 from __future__ import annotations
@@ -136,19 +139,22 @@ def main() -> None:
     rows = []
     for r, table in tables.items():
         for f in table:
-            pin_us = min(samples[(r, f, "pinocchio")])
-            ours = min(samples[(r, f, "rodyn")])
+            pin_rounds = samples[(r, f, "pinocchio")]
+            ours_rounds = samples[(r, f, "rodyn")]
+            pin_us, ours = min(pin_rounds), min(ours_rounds)
             ours_out = min(samples[(r, f, "rodyn out=")])
-            rows.append((r, f, pin_us, ours, ours_out))
+            median_ratio = float(np.median(np.array(ours_rounds) / np.array(pin_rounds)))
+            rows.append((r, f, pin_us, ours, ours_out, median_ratio))
 
     print(f"{datetime.date.today().isoformat()}; {machine()}; "
           f"best of {args.rounds} interleaved rounds of {args.calls} calls; "
           f"load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} CPUs")
     print()
-    print("| robot | function | Pinocchio (µs) | rodyn (µs) | rodyn / Pinocchio | rodyn `out=` (µs) | `out=` / Pinocchio |")
-    print("|---|---|---:|---:|---:|---:|---:|")
-    for name, f, pin_us, ours, ours_out in rows:
-        print(f"| {name} | `{f}` | {pin_us:.2f} | {ours:.2f} | {ours / pin_us:.2f} | {ours_out:.2f} | {ours_out / pin_us:.2f} |")
+    print("| robot | function | Pinocchio (µs) | rodyn (µs) | rodyn / Pinocchio | rodyn `out=` (µs) | `out=` / Pinocchio | median of rounds' rodyn / Pinocchio |")
+    print("|---|---|---:|---:|---:|---:|---:|---:|")
+    for name, f, pin_us, ours, ours_out, median_ratio in rows:
+        print(f"| {name} | `{f}` | {pin_us:.2f} | {ours:.2f} | {ours / pin_us:.2f} | {ours_out:.2f} | {ours_out / pin_us:.2f} "
+              f"| {median_ratio:.2f} |")
 
 
 if __name__ == "__main__":

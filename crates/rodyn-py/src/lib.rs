@@ -10,6 +10,7 @@
 mod arrays;
 mod contacts;
 mod errors;
+mod frame_names;
 mod layout;
 mod model;
 

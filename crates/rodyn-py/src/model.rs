@@ -8,6 +8,7 @@
 use crate::arrays::{check_no_alias, output_matrix, output_vector, Vector};
 use crate::contacts::contact_specs;
 use crate::errors::{model_error, runtime_error, value_error};
+use crate::frame_names::FrameNames;
 use crate::layout::ConfigurationLayout;
 use numpy::{PyArray1, PyArray2, PyArrayMethods, PyUntypedArrayMethods};
 use pyo3::prelude::*;
@@ -27,6 +28,8 @@ pub struct Model {
     q_rodyn: Vec<f64>,
     /// The seed of the next `random_configuration()` without one.
     next_seed: u64,
+    /// The frame names last passed, with their text.
+    names: FrameNames,
 }
 
 impl Model {
@@ -47,6 +50,7 @@ impl Model {
             layout,
             q_rodyn,
             next_seed: 0,
+            names: FrameNames::default(),
         }
     }
 
@@ -88,6 +92,33 @@ fn rodyn_q<'s>(
         ))
     })?;
     Ok(scratch)
+}
+
+/// A 4×4 homogeneous placement (any float array or nested sequence).
+fn placement(object: &Bound<'_, PyAny>) -> PyResult<[f64; 16]> {
+    let rows: Vec<Vec<f64>> = object.extract().map_err(|_| {
+        value_error("target must be a 4×4 array of numbers (a homogeneous placement)")
+    })?;
+    if rows.len() != 4 || rows.iter().any(|r| r.len() != 4) {
+        return Err(value_error(format!(
+            "target must be 4×4; it has {} rows of lengths {:?}",
+            rows.len(),
+            rows.iter().map(Vec::len).collect::<Vec<_>>()
+        )));
+    }
+    let mut flat = [0.0; 16];
+    for (out, x) in flat.iter_mut().zip(rows.iter().flatten()) {
+        *out = *x;
+    }
+    if let Some(k) = flat.iter().position(|x| !x.is_finite()) {
+        return Err(value_error(format!(
+            "target[{}, {}] is {}",
+            k / 4,
+            k % 4,
+            flat[k]
+        )));
+    }
+    Ok(flat)
 }
 
 fn reference(name: &str) -> PyResult<Reference> {
@@ -232,11 +263,13 @@ impl Model {
     ) -> PyResult<Bound<'py, PyArray1<f64>>> {
         let (q, v, a) = (self.q(q)?, self.vector("v", v)?, self.vector("a", a)?);
         let result = output_vector(py, out, self.nv())?;
-        check_no_alias(
-            result.data(),
-            result.len(),
-            &[("q", &q), ("v", &v), ("a", &a)],
-        )?;
+        if out.is_some() {
+            check_no_alias(
+                result.data(),
+                result.len(),
+                &[("q", &q), ("v", &v), ("a", &a)],
+            )?;
+        }
         // SAFETY: no Python code runs from here to the return.
         let (q, v, a, tau) = unsafe { (q.slice(), v.slice(), a.slice(), result_slice(&result)) };
         let q = rodyn_q(&self.layout, &mut self.q_rodyn, q)?;
@@ -258,11 +291,13 @@ impl Model {
     ) -> PyResult<Bound<'py, PyArray1<f64>>> {
         let (q, v, tau) = (self.q(q)?, self.vector("v", v)?, self.vector("tau", tau)?);
         let result = output_vector(py, out, self.nv())?;
-        check_no_alias(
-            result.data(),
-            result.len(),
-            &[("q", &q), ("v", &v), ("tau", &tau)],
-        )?;
+        if out.is_some() {
+            check_no_alias(
+                result.data(),
+                result.len(),
+                &[("q", &q), ("v", &v), ("tau", &tau)],
+            )?;
+        }
         // SAFETY: no Python code runs from here to the return.
         let (q, v, tau, ddq) =
             unsafe { (q.slice(), v.slice(), tau.slice(), result_slice(&result)) };
@@ -284,7 +319,9 @@ impl Model {
         let q = self.q(q)?;
         let nv = self.nv();
         let result = output_matrix(py, out, nv, nv)?;
-        check_no_alias(result.data(), result.len(), &[("q", &q)])?;
+        if out.is_some() {
+            check_no_alias(result.data(), result.len(), &[("q", &q)])?;
+        }
         // SAFETY: no Python code runs from here to the return.
         let (q, mass) = unsafe { (q.slice(), result_slice(&result)) };
         let q = rodyn_q(&self.layout, &mut self.q_rodyn, q)?;
@@ -336,10 +373,11 @@ impl Model {
         &mut self,
         py: Python<'py>,
         q: &Bound<'py, PyAny>,
-        name: &str,
+        name: &Bound<'py, PyAny>,
     ) -> PyResult<Bound<'py, PyArray2<f64>>> {
         let q = self.q(q)?;
         let result = output_matrix(py, None, 4, 4)?;
+        let name = self.names.text("name", name)?;
         let mut placement = [0.0; 16];
         // SAFETY: no Python code runs while `q` lives.
         let q = unsafe { q.slice() };
@@ -360,14 +398,17 @@ impl Model {
         &mut self,
         py: Python<'py>,
         q: &Bound<'py, PyAny>,
-        name: &str,
+        name: &Bound<'py, PyAny>,
         reference: &str,
         out: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyArray2<f64>>> {
         let frame_reference = self::reference(reference)?;
         let q = self.q(q)?;
         let result = output_matrix(py, out, 6, self.nv())?;
-        check_no_alias(result.data(), result.len(), &[("q", &q)])?;
+        let name = self.names.text("name", name)?;
+        if out.is_some() {
+            check_no_alias(result.data(), result.len(), &[("q", &q)])?;
+        }
         // SAFETY: no Python code runs from here to the return.
         let (q, jacobian) = unsafe { (q.slice(), result_slice(&result)) };
         let q = rodyn_q(&self.layout, &mut self.q_rodyn, q)?;
@@ -495,5 +536,159 @@ impl Model {
             )
             .map_err(runtime_error)?;
         PyTuple::new(py, [ddq, lambda])
+    }
+    /// The kinetic energy `½ vᵀ M(q) v` (J; Pinocchio's
+    /// `computeKineticEnergy`).
+    fn kinetic_energy(&mut self, q: &Bound<'_, PyAny>, v: &Bound<'_, PyAny>) -> PyResult<f64> {
+        let (q, v) = (self.q(q)?, self.vector("v", v)?);
+        // SAFETY: no Python code runs from here to the return.
+        let (q, v) = unsafe { (q.slice(), v.slice()) };
+        let q = rodyn_q(&self.layout, &mut self.q_rodyn, q)?;
+        self.runtime
+            .kinetic_energy(&mut self.workspace, q, v)
+            .map_err(runtime_error)
+    }
+
+    /// The potential energy of gravity (J), zero at the world's origin
+    /// (Pinocchio's `computePotentialEnergy`).
+    fn potential_energy(&mut self, q: &Bound<'_, PyAny>) -> PyResult<f64> {
+        let q = self.q(q)?;
+        // SAFETY: no Python code runs from here to the return.
+        let q = unsafe { q.slice() };
+        let q = rodyn_q(&self.layout, &mut self.q_rodyn, q)?;
+        self.runtime
+            .potential_energy(&mut self.workspace, q)
+            .map_err(runtime_error)
+    }
+
+    /// The time variation `dJ/dt` of frame `name`'s Jacobian at `(q, v)`:
+    /// 6×nv, linear rows first, in `reference` as `frame_jacobian`
+    /// (Pinocchio's `computeJointJacobiansTimeVariation` then
+    /// `getFrameJacobianTimeVariation`).
+    #[pyo3(signature = (q, v, name, reference = "local_world_aligned", out = None))]
+    fn frame_jacobian_time_variation<'py>(
+        &mut self,
+        py: Python<'py>,
+        q: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+        name: &Bound<'py, PyAny>,
+        reference: &str,
+        out: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let frame_reference = self::reference(reference)?;
+        let (q, v) = (self.q(q)?, self.vector("v", v)?);
+        let result = output_matrix(py, out, 6, self.nv())?;
+        let name = self.names.text("name", name)?;
+        if out.is_some() {
+            check_no_alias(result.data(), result.len(), &[("q", &q), ("v", &v)])?;
+        }
+        // SAFETY: no Python code runs from here to the return.
+        let (q, v, dj) = unsafe { (q.slice(), v.slice(), result_slice(&result)) };
+        let q = rodyn_q(&self.layout, &mut self.q_rodyn, q)?;
+        self.runtime
+            .frame_jacobian_time_variation(&mut self.workspace, q, v, name, frame_reference, dj)
+            .map_err(runtime_error)?;
+        Ok(result)
+    }
+
+    /// The velocity just after an impact that brings `contacts` to rest,
+    /// arriving at `q` with `v`: `(v_after, impulses)` (Pinocchio's
+    /// `impulseDynamics` without proximal damping; `impulses` in the units
+    /// and axes of `constrained_dynamics`' `lambda`, N s and N m s).
+    /// `restitution` in [0, 1]: 0 stops the contacts, 1 reverses their
+    /// velocity.
+    #[pyo3(signature = (q, v, contacts, restitution = 0.0))]
+    fn impulse_dynamics<'py>(
+        &mut self,
+        py: Python<'py>,
+        q: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+        contacts: &Bound<'py, PyAny>,
+        restitution: f64,
+    ) -> PyResult<Bound<'py, PyTuple>> {
+        let contacts = contact_specs(contacts)?;
+        let rows = rodyn_model::runtime::contact_rows(&contacts);
+        let (q, v) = (self.q(q)?, self.vector("v", v)?);
+        let v_after = PyArray1::<f64>::zeros(py, self.nv(), false);
+        let impulses = PyArray1::<f64>::zeros(py, rows, false);
+        // SAFETY: no Python code runs until the tuple is made.
+        let (q, v) = unsafe { (q.slice(), v.slice()) };
+        let (v_out, impulses_out) = unsafe { (result_slice(&v_after), result_slice(&impulses)) };
+        let q = rodyn_q(&self.layout, &mut self.q_rodyn, q)?;
+        self.runtime
+            .impulse_dynamics(
+                &mut self.workspace,
+                q,
+                v,
+                &contacts,
+                restitution,
+                v_out,
+                impulses_out,
+            )
+            .map_err(runtime_error)?;
+        PyTuple::new(py, [v_after, impulses])
+    }
+
+    /// `q ⊕ v`: `q` moved by the velocity `v` for one unit of time, each
+    /// joint along its own manifold (Pinocchio's `integrate`: a
+    /// free-flyer's `v` in its local frame, its quaternion kept unit).
+    fn integrate<'py>(
+        &mut self,
+        py: Python<'py>,
+        q: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        let (q, v) = (self.q(q)?, self.vector("v", v)?);
+        let mut next = vec![0.0; self.layout.rodyn_nq()];
+        {
+            // SAFETY: no Python code runs while the slices live.
+            let (q, v) = unsafe { (q.slice(), v.slice()) };
+            let q = rodyn_q(&self.layout, &mut self.q_rodyn, q)?;
+            self.runtime
+                .integrate(&mut self.workspace, q, v, 1.0, &mut next)
+                .map_err(runtime_error)?;
+        }
+        Ok(PyArray1::from_vec(py, self.layout.to_pinocchio(&next)))
+    }
+
+    /// A configuration near `q0` at which frame `name` is at `target`
+    /// (its world placement, 4×4 homogeneous), by damped least squares on
+    /// the pose error: every component of the error (rad, m) within
+    /// `tolerance` after at most `max_iterations` steps. Pinocchio has no
+    /// such function; its documentation's inverse-kinematics example runs
+    /// the same iteration.
+    ///
+    /// Raises `ArithmeticError` when the target is not reached within the
+    /// budget (out of reach, or a singular start).
+    #[pyo3(signature = (name, target, q0, tolerance = 1e-10, max_iterations = 100))]
+    fn inverse_kinematics<'py>(
+        &mut self,
+        py: Python<'py>,
+        name: &Bound<'py, PyAny>,
+        target: &Bound<'py, PyAny>,
+        q0: &Bound<'py, PyAny>,
+        tolerance: f64,
+        max_iterations: usize,
+    ) -> PyResult<Bound<'py, PyArray1<f64>>> {
+        let target = placement(target)?;
+        let q0 = Vector::extract("q0", q0, self.layout.pinocchio_nq())?;
+        let name = self.names.text("name", name)?;
+        let mut q = vec![0.0; self.layout.rodyn_nq()];
+        {
+            // SAFETY: no Python code runs while the slice lives.
+            let q0 = unsafe { q0.slice() };
+            q.copy_from_slice(rodyn_q(&self.layout, &mut self.q_rodyn, q0)?);
+        }
+        self.runtime
+            .inverse_kinematics(
+                &mut self.workspace,
+                name,
+                &target,
+                tolerance,
+                max_iterations,
+                &mut q,
+            )
+            .map_err(runtime_error)?;
+        Ok(PyArray1::from_vec(py, self.layout.to_pinocchio(&q)))
     }
 }

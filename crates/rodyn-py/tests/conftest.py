@@ -136,3 +136,28 @@ def symmetric_from_upper(matrix: np.ndarray) -> np.ndarray:
     """Pinocchio fills only the upper triangle of M and M⁻¹."""
     upper = np.triu(matrix)
     return upper + np.triu(upper, 1).T
+
+
+def pinocchio_contact_models(pair: Pair, q: np.ndarray, contacts):
+    """Pinocchio's rigid constraint models (and their datas) for rodyn's
+    `contacts`, anchored where the frames are at `q`: a frame name is a
+    point contact (CONTACT_3D in LOCAL_WORLD_ALIGNED), a `(name, "frame")`
+    pair holds the whole frame (CONTACT_6D in LOCAL)."""
+    pm, pd = pair.pin_model, pair.pin_data
+    pin.framesForwardKinematics(pm, pd, q)
+    models = pin.StdVec_RigidConstraintModel()
+    for contact in contacts:
+        name, kind = (contact, "point") if isinstance(contact, str) else contact
+        fid = pm.getFrameId(name)
+        frame = pm.frames[fid]
+        if kind == "frame":
+            cm = pin.RigidConstraintModel(pin.ContactType.CONTACT_6D, pm, frame.parentJoint, frame.placement,
+                                          0, pd.oMf[fid], pin.ReferenceFrame.LOCAL)
+        else:
+            cm = pin.RigidConstraintModel(pin.ContactType.CONTACT_3D, pm, frame.parentJoint, frame.placement,
+                                          0, pd.oMf[fid], pin.ReferenceFrame.LOCAL_WORLD_ALIGNED)
+        models.append(cm)
+    datas = pin.StdVec_RigidConstraintData()
+    for cm in models:
+        datas.append(cm.createData())
+    return models, datas

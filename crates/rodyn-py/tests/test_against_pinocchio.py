@@ -13,7 +13,7 @@ import numpy as np
 import pinocchio as pin
 import pytest
 
-from conftest import assert_close, get_pair, random_states, symmetric_from_upper
+from conftest import assert_close, get_pair, pinocchio_contact_models, random_states, symmetric_from_upper
 
 REFERENCES = {
     "local": pin.ReferenceFrame.LOCAL,
@@ -183,22 +183,7 @@ def pinocchio_constraint_dynamics(pair, q, v, tau, contacts):
     """Pinocchio's constraintDynamics for `contacts`, anchored where the
     frames are, without Baumgarte gains: the exact KKT solution."""
     pm, pd = pair.pin_model, pair.pin_data
-    pin.framesForwardKinematics(pm, pd, q)
-    models = pin.StdVec_RigidConstraintModel()
-    for contact in contacts:
-        name, kind = (contact, "point") if isinstance(contact, str) else contact
-        fid = pm.getFrameId(name)
-        frame = pm.frames[fid]
-        if kind == "frame":
-            cm = pin.RigidConstraintModel(pin.ContactType.CONTACT_6D, pm, frame.parentJoint, frame.placement,
-                                          0, pd.oMf[fid], pin.ReferenceFrame.LOCAL)
-        else:
-            cm = pin.RigidConstraintModel(pin.ContactType.CONTACT_3D, pm, frame.parentJoint, frame.placement,
-                                          0, pd.oMf[fid], pin.ReferenceFrame.LOCAL_WORLD_ALIGNED)
-        models.append(cm)
-    datas = pin.StdVec_RigidConstraintData()
-    for cm in models:
-        datas.append(cm.createData())
+    models, datas = pinocchio_contact_models(pair, q, contacts)
     pin.initConstraintDynamics(pm, pd, models, datas)
     ddq = pin.constraintDynamics(pm, pd, q, v, tau, models, datas, pin.ProximalSettings(1e-14, 0.0, 1))
     return np.array(ddq), np.array(pd.lambda_c)

@@ -144,3 +144,24 @@ def test_redundant_contacts_are_an_arithmetic_error():
     # The same foot held twice: the constraint rows are dependent.
     with pytest.raises(ArithmeticError, match="constrained dynamics"):
         m.constrained_dynamics(q, np.zeros(m.nv), np.zeros(m.nv), ["FL_FOOT", "FL_FOOT"])
+
+
+def test_frame_name_of_another_type_is_named(panda):
+    q = panda.model.neutral()
+    with pytest.raises(ValueError, match="name must be a frame's name"):
+        panda.model.frame_jacobian(q, 3)
+    with pytest.raises(ValueError, match="name must be a frame's name"):
+        panda.model.frame_placement(q, None)
+
+
+def test_frame_names_are_recognised_after_many_others(panda):
+    # More names than the bindings keep, then the first again: the
+    # answer must not depend on what was kept.
+    m = panda.model
+    q = m.random_configuration(seed=5)
+    first = m.frame_jacobian(q, m.frame_names[0])
+    for name in m.frame_names * 2:
+        m.frame_jacobian(q, "".join(name))  # a new str object each time
+    np.testing.assert_array_equal(m.frame_jacobian(q, m.frame_names[0]), first)
+    with pytest.raises(ValueError, match="unknown frame 'nope'"):
+        m.frame_jacobian(q, "nope")

@@ -30,6 +30,7 @@ macro_rules! size_classes {
             (Fixed6, 0, 6, 6, 6),
             (Fixed7, 0, 7, 7, 7),
             (Fixed8, 0, 8, 8, 8),
+            (Fixed9, 0, 9, 9, 9),
             (Fixed10, 0, 10, 10, 10),
             (Fixed12, 0, 12, 12, 12),
             (Fixed16, 0, 16, 16, 16),

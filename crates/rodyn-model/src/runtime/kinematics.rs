@@ -1,10 +1,12 @@
 //! Frames, Jacobians and their time variation, the centre of mass and the
 //! centroidal map.
 
+use super::check::Input;
+use super::padded::{Padded, Scratch};
 use super::{RuntimeError, RuntimeModel, Workspace};
 use rodyn::algorithm::centroidal::centroidal_map;
 use rodyn::algorithm::energy::center_of_mass;
-use rodyn::algorithm::frame_chain::frame_jacobian_from_q;
+use rodyn::algorithm::frame_chain::chain_jacobian;
 use rodyn::algorithm::frames::{frame_placement, ReferenceFrame};
 use rodyn::algorithm::jacobian::{frame_jacobian_time_variation, joint_jacobians_time_variation};
 use rodyn::algorithm::kinematics::forward_kinematics;
@@ -88,13 +90,21 @@ impl RuntimeModel {
         reference: Reference,
         out: &mut [f64],
     ) -> Result<(), RuntimeError> {
-        let f = self.frame(frame)?;
-        let nv = self.nv;
-        class_call!(self, ws, "frame Jacobian",
-            inputs: [q],
-            checks: [self.check_matrix("out", out, 6)],
-            |m, s| frame_jacobian_from_q(&m.model, &s.q, f, reference.rodyn(), &mut s.columns)
-                .map(|_| linear_first_rows(&s.columns[..], nv, out)))
+        let f = self.frame_index(frame)?;
+        self.check_q(q)?;
+        self.check_matrix("out", out, 6)?;
+        dispatch!(&self.class, &mut ws.class, |m, s| {
+            class_frame_jacobian(m, s, q, f, reference.rodyn(), out).map_err(|e| {
+                self.explain(
+                    "frame Jacobian",
+                    &e,
+                    &[Input {
+                        name: "q",
+                        values: q,
+                    }],
+                )
+            })
+        })
     }
 
     /// The time variation `J̇(q, v)` of `frame`'s Jacobian in `reference`
@@ -172,4 +182,23 @@ impl RuntimeModel {
             }
         }))
     }
+}
+
+/// One class's frame Jacobian: `q` in, the `6 × nv` rows out (`out` holds
+/// `6 nv` entries), along the support path found at load time. A function
+/// of its own per class, as `class_crba`: each class's walk is optimised
+/// as a unit instead of as one arm of the dispatch.
+#[inline(never)]
+fn class_frame_jacobian<const NB: usize, const NQ: usize, const NV: usize>(
+    m: &Padded<NB, NQ, NV>,
+    s: &mut Scratch<NB, NQ, NV>,
+    q: &[f64],
+    frame: usize,
+    reference: ReferenceFrame,
+    out: &mut [f64],
+) -> rodyn::Result<()> {
+    s.set_q(q);
+    chain_jacobian(&m.model, &s.q, &m.chains[frame], reference, &mut s.columns)?;
+    linear_first_rows(&s.columns[..], out.len() / 6, out);
+    Ok(())
 }

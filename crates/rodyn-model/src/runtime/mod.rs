@@ -327,10 +327,14 @@ impl RuntimeModel {
     }
 
     fn frame(&self, name: &str) -> Result<&Frame<f64>, RuntimeError> {
+        self.frame_index(name).map(|k| &self.frames[k].1)
+    }
+
+    /// The index of frame `name` in [`frame_names`](Self::frame_names).
+    fn frame_index(&self, name: &str) -> Result<usize, RuntimeError> {
         self.frames
             .iter()
-            .find(|(n, _)| n == name)
-            .map(|(_, f)| f)
+            .position(|(n, _)| n == name)
             .ok_or_else(|| RuntimeError::invalid_input(format!("unknown frame '{name}'")))
     }
 

@@ -15,6 +15,7 @@ use rodyn::algorithm::centroidal::CentroidalData;
 use rodyn::algorithm::constrained_dynamics::ConstraintData;
 use rodyn::algorithm::crba::CrbaPlan;
 use rodyn::algorithm::derivatives::DerivativeData;
+use rodyn::algorithm::frame_chain::FrameChain;
 use rodyn::algorithm::inverse_kinematics::IkData;
 use rodyn::algorithm::jacobian::JacobianData;
 use rodyn::joint::{Axis, Joint};
@@ -36,6 +37,9 @@ pub(super) struct Padded<const NB: usize, const NQ: usize, const NV: usize> {
     /// CRBA's frames, quarter turns recognised at load time as the
     /// compiled model's `CRBA_PLAN_F64` has them.
     pub plan: CrbaPlan<f64, NB>,
+    /// Each frame with its body's support path, in the model's frame
+    /// order: found once here rather than on every Jacobian call.
+    pub chains: Vec<FrameChain<f64, NB>>,
 }
 
 impl<const NB: usize, const NQ: usize, const NV: usize> Padded<NB, NQ, NV> {
@@ -46,7 +50,8 @@ impl<const NB: usize, const NQ: usize, const NV: usize> Padded<NB, NQ, NV> {
     /// # Errors
     /// The core's checked constructor refuses the tree (a parent after its
     /// child: the model compiler orders bodies, so this names a bug there
-    /// rather than panicking).
+    /// rather than panicking), or a frame on a body the model does not
+    /// have.
     pub fn new(skeleton: &Skeleton) -> rodyn::Result<Box<Self>> {
         let nb = skeleton.nb();
         let mut parents = [None; NB];
@@ -63,7 +68,16 @@ impl<const NB: usize, const NQ: usize, const NV: usize> Padded<NB, NQ, NV> {
         armature[nv_file..].fill(PADDING_ARMATURE);
         model = model.with_armature(armature);
         let plan = CrbaPlan::new(&model);
-        Ok(Box::new(Self { model, plan }))
+        let chains = skeleton
+            .frames
+            .iter()
+            .map(|(_, frame)| FrameChain::try_new(&model, frame))
+            .collect::<rodyn::Result<_>>()?;
+        Ok(Box::new(Self {
+            model,
+            plan,
+            chains,
+        }))
     }
 }
 
