@@ -197,7 +197,8 @@ impl<'m, SPI: SpiDevice, PWM: SetDutyCycle, const N: usize> TaskSpaceImpedance<'
         let tau_posture: [f32; N] = core::array::from_fn(|k| {
             g.posture_stiffness * (self.posture[k] - q[k]) - g.posture_damping * v[k]
         });
-        let j_tau = mul_rates::<f32, N, Spatial>(&self.j, &tau_posture).map_err(ControlError::Dynamics)?;
+        let j_tau =
+            mul_rates::<f32, N, Spatial>(&self.j, &tau_posture).map_err(ControlError::Dynamics)?;
         let mut z = components(&j_tau);
         cholesky_solve(&gram, 6, &mut z).map_err(ControlError::Dynamics)?;
 
