@@ -6,6 +6,7 @@
 //! | `run [example]`          | builds the firmware, runs `example` (default: the arm controller) in QEMU, prints the decoded defmt log |
 //! | `test`                   | host tests (the core's and `rodyn-host-tests`' also in the in-order tuning profile), the no_std core for thumbv7em, every firmware example in QEMU against its expected output, sizes, panic sites, stack bounds, the board images (sizes, fit, panic sites), the viewer's pages in Chromium, the Python bindings against Pinocchio's, the firmware template run from a copy outside the repository, lint |
 //! | `lint`                   | the core's layers (`layers`); rustfmt, clippy and rustdoc, warnings as errors, host, firmware and boards; the core without float features stops at one error; `cargo package` of every crate, the published libraries built from their packages; their public API against `xtask/public-api/`; the core's unit tests under Miri (nightly), which stops at undefined behaviour |
+//! | `host-lints`              | clippy (host, in-order profile) and rustdoc, warnings as errors: the part of `lint` that `test` runs in the background, in `target/lint` |
 //! | `viewer`                 | the viewer's pages in headless Chromium (also a step of `test`): every model's page draws without an error, the Panda against its reference image, the trot moves when scrubbed |
 //! | `docs [--check]`         | regenerates every figure and table of the docs that a command draws the same on every run (`--check`: fails naming each committed file that differs) |
 //! | `costs`                  | runs the cost probe, measures sizes and bounds the stack, rewrites the tables in `docs/sections/firmware.md` and `firmware/expected/sizes.txt`; builds and runs the probes on QEMU's Cortex-M3, M7 (f32 and f64) and M33 for `docs/sections/cortex_m_family.md` |
@@ -28,6 +29,7 @@
 //! command to run). `lint` adds Miri to an installed nightly toolchain
 //! through rustup; without a nightly toolchain it skips Miri and says so.
 
+mod background;
 mod boards;
 mod costs;
 mod defmt_log;
@@ -52,11 +54,11 @@ mod template;
 mod viewer;
 
 use anyhow::{bail, Context, Result};
-use std::process::ExitCode;
+use std::process::{Command, ExitCode};
 use std::time::Instant;
 
 const USAGE: &str =
-    "usage: cargo xtask <run [example] [--html page.html] | test | lint | layers | docs [--check] | costs | family | boards [--bless] | stack [image [words]] | stack --frames <image> | stack --check-frames | panic-sites [image] | viewer | python | python-env | public-api [--bless] | bless | profile [model] [algorithm] | host-profile <algorithm> <model> [--pinocchio]>";
+    "usage: cargo xtask <run [example] [--html page.html] | test | lint | host-lints | layers | docs [--check] | costs | family | boards [--bless] | stack [image [words]] | stack --frames <image> | stack --check-frames | panic-sites [image] | viewer | python | python-env | public-api [--bless] | bless | profile [model] [algorithm] | host-profile <algorithm> <model> [--pinocchio]>";
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -64,6 +66,7 @@ fn main() -> ExitCode {
         Some("run") => run(&args[1..]),
         Some("test") => test(),
         Some("lint") => lint(),
+        Some("host-lints") => host_lints(),
         Some("docs") => docs::run(&args[1..]),
         Some("costs") => costs::regenerate(),
         Some("family") => family::run_probes(),
@@ -154,9 +157,12 @@ fn test() -> Result<()> {
         setup::ensure_ipopt()
     })?;
     // Miri interprets on one core for minutes: beside the other steps it
-    // takes the time the second core would idle.
+    // takes the time the second core would idle (crate::background).
     let miri = miri::start_in_background()?;
     steps.run("host tests", || shell::cargo(&["test", "--workspace"]))?;
+    // So do clippy and rustdoc, in a target folder of their own so that
+    // neither waits for the other's build lock.
+    let host_lints = start_host_lints()?;
     steps.run("host tests, in-order profile", test_in_order_profile)?;
     steps.run("no_std core for thumbv7em", || {
         shell::cargo(&[
@@ -211,7 +217,12 @@ fn test() -> Result<()> {
     steps.run("viewer in Chromium", viewer::check)?;
     steps.run("Python bindings", python::check)?;
     steps.run("firmware template", template::check)?;
-    steps.run("lint", || lint_with(Miri::Started(miri)))?;
+    steps.run("lint", || {
+        lint_with(Started {
+            miri: Some(miri),
+            host_lints: Some(host_lints),
+        })
+    })?;
 
     if !failures.is_empty() {
         bail!("firmware examples failed: {}", failures.join(", "));
@@ -316,21 +327,21 @@ fn test_in_order_profile() -> Result<()> {
     Ok(())
 }
 
-/// How `lint` gets the core's tests under Miri.
-enum Miri {
-    /// Runs them as its last step.
-    Inline,
-    /// Collects the run `test` started in the background (`None`: skipped,
-    /// and said so).
-    Started(Option<miri::Background>),
+/// The steps of `lint` that `test` started in the background; `None` runs
+/// them in turn.
+#[derive(Default)]
+struct Started {
+    /// `Some(None)`: Miri skipped, and said so.
+    miri: Option<Option<background::Background>>,
+    host_lints: Option<background::Background>,
 }
 
 /// Formatting, clippy and rustdoc with warnings as errors; Miri.
 fn lint() -> Result<()> {
-    lint_with(Miri::Inline)
+    lint_with(Started::default())
 }
 
-fn lint_with(miri: Miri) -> Result<()> {
+fn lint_with(started: Started) -> Result<()> {
     let mut steps = Steps::new("lint");
     steps.run("IPOPT", setup::ensure_ipopt)?;
     steps.run("layers", layers::run)?;
@@ -339,53 +350,29 @@ fn lint_with(miri: Miri) -> Result<()> {
         shell::cargo_in(firmware::dir(), &["fmt", "--check"])
     })?;
     steps.run("boards: rustfmt and clippy", boards::lint)?;
-    steps.run("clippy", || {
-        shell::cargo(&[
-            "clippy",
-            "--workspace",
-            "--all-targets",
-            "--",
-            "-D",
-            "warnings",
-        ])?;
-        // The core's host build in the other profile (the firmware's clippy
-        // below covers it without `std`).
-        let in_order_dir = in_order_target_dir();
-        shell::cargo_env(
-            &[
-                "clippy",
-                "-p",
-                "rodyn",
-                "--all-targets",
-                "--",
-                "-D",
-                "warnings",
-            ],
-            &[IN_ORDER, ("CARGO_TARGET_DIR", &in_order_dir)],
-        )?;
+    steps.run("clippy: firmware", || {
         shell::cargo_in(
             firmware::dir(),
             &["clippy", "--release", "--", "-D", "warnings"],
         )
     })?;
-    steps.run("rustdoc", || {
-        shell::cargo_env(
-            &["doc", "--workspace", "--no-deps"],
-            &[("RUSTDOCFLAGS", "-D warnings")],
-        )
-    })?;
+    match started.host_lints {
+        None => steps.run("clippy and rustdoc: host", host_lints)?,
+        Some(run) => steps.run(
+            "clippy and rustdoc: host (collected from the background)",
+            || run.finish(),
+        )?,
+    }
     steps.run(
         "core without float features",
         no_float_features_is_one_error,
     )?;
     steps.run("packages", packages)?;
     steps.run("public API", || public_api::run(false))?;
-    match miri {
-        Miri::Inline => steps.run("Miri", miri::run)?,
-        Miri::Started(Some(run)) => {
-            steps.run("Miri (waiting for its background run)", || run.finish())?
-        }
-        Miri::Started(None) => {}
+    match started.miri {
+        None => steps.run("Miri", miri::run)?,
+        Some(Some(run)) => steps.run("Miri (collected from the background)", || run.finish())?,
+        Some(None) => {}
     }
     steps.print_table();
     println!(
@@ -393,6 +380,47 @@ fn lint_with(miri: Miri) -> Result<()> {
         steps.started.elapsed().as_secs_f64()
     );
     Ok(())
+}
+
+/// Clippy on the host's crates (the workspace, and the core in the
+/// in-order profile; the firmware's clippy covers it without `std`) and
+/// rustdoc, warnings as errors.
+fn host_lints() -> Result<()> {
+    shell::cargo(&[
+        "clippy",
+        "--workspace",
+        "--all-targets",
+        "--",
+        "-D",
+        "warnings",
+    ])?;
+    let in_order_dir = in_order_target_dir();
+    shell::cargo_env(
+        &[
+            "clippy",
+            "-p",
+            "rodyn",
+            "--all-targets",
+            "--",
+            "-D",
+            "warnings",
+        ],
+        &[IN_ORDER, ("CARGO_TARGET_DIR", &in_order_dir)],
+    )?;
+    shell::cargo_env(
+        &["doc", "--workspace", "--no-deps"],
+        &[("RUSTDOCFLAGS", "-D warnings")],
+    )
+}
+
+/// `cargo xtask host-lints` in the background, building in `target/lint`.
+fn start_host_lints() -> Result<background::Background> {
+    let mut command = Command::new(std::env::current_exe()?);
+    command
+        .arg("host-lints")
+        .current_dir(shell::root())
+        .env("CARGO_TARGET_DIR", shell::target_dir().join("lint"));
+    background::Background::start("clippy and rustdoc", command, "host-lints.log")
 }
 
 /// The crates as crates.io would get them. Every member is packaged with

@@ -16,11 +16,9 @@
 //! nothing here downloads a whole toolchain).
 
 use anyhow::{bail, Context, Result};
-use std::fs::File;
-use std::path::PathBuf;
-use std::process::{Child, Command};
-use std::time::Instant;
+use std::process::Command;
 
+use crate::background::Background;
 use crate::shell;
 
 /// Miri's options: sine, cosine and the other float functions give the
@@ -37,68 +35,14 @@ pub fn run() -> Result<()> {
     shell::run(&mut command()).context("the core's tests under Miri")
 }
 
-/// Miri's run started beside the other steps of `cargo xtask test`: it
-/// interprets on one core for minutes, while the steps that run QEMU, the
-/// tests and the browser leave the second one mostly idle. Its output goes
-/// to `target/miri.log`, printed when [`Self::finish`] collects it.
-pub struct Background {
-    child: Child,
-    log: PathBuf,
-    started: Instant,
-}
-
-/// Starts [`run`]'s command in the background, or says why not (no nightly
-/// toolchain) and returns `None`.
+/// Starts [`run`]'s command in the background (`target/miri.log`): it
+/// interprets on one core for minutes. `None` (and a message) without a
+/// nightly toolchain.
 pub fn start_in_background() -> Result<Option<Background>> {
     if !ready()? {
         return Ok(None);
     }
-    let log = shell::target_dir().join("miri.log");
-    std::fs::create_dir_all(shell::target_dir())?;
-    let file = File::create(&log).with_context(|| format!("cannot write {}", log.display()))?;
-    let mut command = command();
-    command.stdout(file.try_clone()?).stderr(file);
-    println!(
-        "$ {} > {} (in the background)",
-        shell::describe(&command),
-        log.display()
-    );
-    let child = command
-        .spawn()
-        .with_context(|| format!("cannot start {}", shell::describe(&command)))?;
-    Ok(Some(Background {
-        child,
-        log,
-        started: Instant::now(),
-    }))
-}
-
-impl Background {
-    /// Waits for Miri, prints its log, and fails when it failed.
-    pub fn finish(mut self) -> Result<()> {
-        let status = self.child.wait().context("waiting for Miri")?;
-        let log = std::fs::read_to_string(&self.log).unwrap_or_default();
-        println!("{log}");
-        println!(
-            "miri: ran in the background for {:.0} s (log: {})",
-            self.started.elapsed().as_secs_f64(),
-            self.log.display()
-        );
-        if !status.success() {
-            bail!("the core's tests under Miri failed with {status} (log above)");
-        }
-        Ok(())
-    }
-}
-
-impl Drop for Background {
-    /// A step that failed before Miri was collected stops it.
-    fn drop(&mut self) {
-        if matches!(self.child.try_wait(), Ok(None)) {
-            let _ = self.child.kill();
-            let _ = self.child.wait();
-        }
-    }
+    Background::start("miri", command(), "miri.log").map(Some)
 }
 
 /// Whether Miri can run here (adding its components to an installed
