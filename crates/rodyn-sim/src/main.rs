@@ -62,7 +62,7 @@ enum Command {
         #[arg(long, requires = "model")]
         floating_base: bool,
         /// With --model: a compliant ground at z = 0 under contact points
-        /// (--contact, else the file's [[contact]]s, else every frame); a
+        /// (--contact, else the file's contact tables, else every frame); a
         /// floating base starts above it (--drop-height).
         #[arg(long, requires = "model")]
         ground: bool,
