@@ -435,13 +435,21 @@ fn start_host_lints() -> Result<background::Background> {
 /// target folder. The internal crates are never published. Each command
 /// packages its crates together, so that a dependency on a crate not yet
 /// on crates.io resolves to the one packaged beside it.
+///
+/// The verifying builds go to a target folder emptied first: cargo takes a
+/// registry crate's source as fixed by its version, so a `rodyn 0.1.0`
+/// compiled from an earlier package would otherwise stand in for today's.
 fn packages() -> Result<()> {
     shell::cargo(&["package", "--workspace", "--no-verify", "--allow-dirty"])?;
+    let dir = shell::target_dir().join("package-verify");
+    if dir.exists() {
+        std::fs::remove_dir_all(&dir).with_context(|| format!("cannot empty {}", dir.display()))?;
+    }
     let mut verified = vec!["package", "--allow-dirty"];
     for name in VERIFIED_FROM_PACKAGE {
         verified.extend(["-p", name]);
     }
-    shell::cargo(&verified)
+    shell::cargo_env(&verified, &[("CARGO_TARGET_DIR", &dir.to_string_lossy())])
 }
 
 /// The published libraries, in dependency order, built from their
